@@ -1,0 +1,56 @@
+# nxtmap: the front door. Every target installs what it needs first (see scripts/deps.sh).
+#   make demo   - one mapping run in the simulator with the live display
+#   make test   - every test (host build with sanitizers + ARM7TDMI cross-build of common/)
+#   make bench  - speed and quality targets, measured against their targets
+SHELL := /bin/bash
+JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
+BUILD ?= build
+HOST_DIR  := $(BUILD)/host
+SAN_DIR   := $(BUILD)/host-san
+ARM_DIR   := $(BUILD)/arm-common
+CMAKE_GEN := -G Ninja
+
+.PHONY: all deps host host-san arm-common test demo bench clean help
+
+all: host
+
+help:
+	@echo "make demo   - run one mapping in the simulator, live"
+	@echo "make test   - build with sanitizers, run all tests, cross-build common/ for the ARM7TDMI"
+	@echo "make bench  - benchmarks, measured against their targets"
+	@echo "make deps   - install missing Debian packages (quick when all is present)"
+
+deps:
+	@bash scripts/deps.sh
+
+$(HOST_DIR)/build.ninja: | deps
+	cmake -S . -B $(HOST_DIR) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Release
+
+$(SAN_DIR)/build.ninja: | deps
+	cmake -S . -B $(SAN_DIR) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Debug -DNXTMAP_SANITIZE=ON
+
+$(ARM_DIR)/build.ninja: | deps
+	cmake -S toolchain/arm-check -B $(ARM_DIR) $(CMAKE_GEN) \
+	  -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/toolchain/arm-none-eabi.cmake
+
+host: deps $(HOST_DIR)/build.ninja
+	cmake --build $(HOST_DIR) -j $(JOBS)
+
+host-san: deps $(SAN_DIR)/build.ninja
+	cmake --build $(SAN_DIR) -j $(JOBS)
+
+arm-common: deps $(ARM_DIR)/build.ninja
+	cmake --build $(ARM_DIR) -j $(JOBS)
+	@echo "common/ cross-compiled for the ARM7TDMI (-mcpu=arm7tdmi -mthumb, freestanding): OK"
+
+test: host-san arm-common
+	cd $(SAN_DIR) && ctest --output-on-failure -j $(JOBS)
+
+demo: host
+	$(HOST_DIR)/host/cli/nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live --delay-ms 40
+
+bench: host
+	$(HOST_DIR)/host/bench/nxtmap-bench
+
+clean:
+	rm -rf $(BUILD)

@@ -1,0 +1,127 @@
+#include "common/explore/Explorer.hpp"
+
+#include "common/sensing/RayMarker.hpp"
+
+namespace nxtmap {
+
+Explorer::Explorer(MapLayers& map, TravelPlanner& planner, const ExplorerConfig& config)
+    : map_(map), planner_(planner), config_(config) {}
+
+Action Explorer::finish(ExplorerEnd why) {
+  end_ = why;
+  route_.clear();
+  return Action::done();
+}
+
+void Explorer::apply(const Event& e) {
+  switch (e.kind) {
+    case Event::Kind::Start:
+      pose_ = Pose{};
+      started_ = true;
+      if (!map_.markVisited(pose_.cell)) end_ = ExplorerEnd::GridFull;
+      break;
+    case Event::Kind::Range: {
+      ++counters_.sensorRequests;
+      counters_.rawSamples += e.reading.samples;
+      const Dir d = sensorDir(pose_.heading, e.sensor);
+      const RayMarkResult r = markRay(map_, config_.geometry, pose_.cell, d, e.reading);
+      if (r.conclusive) map_.setRead(pose_.cell, d);
+      if (r.gridFull) end_ = ExplorerEnd::GridFull;
+      break;
+    }
+    case Event::Kind::Moved: {
+      const int8_t n = e.amount < 0 ? static_cast<int8_t>(-e.amount) : e.amount;
+      const Dir d = e.amount > 0 ? pose_.heading : opposite(pose_.heading);
+      for (int8_t i = 0; i < n; ++i) {
+        pose_.cell = advance(pose_.cell, d);
+        if (!map_.markVisited(pose_.cell)) end_ = ExplorerEnd::GridFull;
+        if (!route_.empty() && route_.front() == d) route_.pop();
+      }
+      counters_.cellsMoved += static_cast<uint32_t>(n);
+      break;
+    }
+    case Event::Kind::Blocked:
+      ++counters_.blockedMoves;
+      if (!map_.markBlocked(advance(pose_.cell, pendingMove_))) end_ = ExplorerEnd::GridFull;
+      route_.clear();
+      break;
+    case Event::Kind::Turned:
+      // Explorers turn in quarters; a 45 degree turn is counted for time but kept on the axis
+      // grid by its pair.
+      pose_.heading = rotate(pose_.heading, e.amount / 2);
+      counters_.turnEighths += static_cast<uint32_t>(e.amount < 0 ? -e.amount : e.amount);
+      break;
+  }
+}
+
+Action Explorer::step(const Event& e) {
+  if (end_ != ExplorerEnd::Running) return Action::done();
+  if (!started_ && e.kind != Event::Kind::Start) apply(Event::start());
+  apply(e);
+  if (end_ != ExplorerEnd::Running) return finish(end_);
+  if (++actions_ > config_.maxActions) return finish(ExplorerEnd::ActionLimit);
+  if (e.kind == Event::Kind::Blocked) onBlocked();
+  Sensor s;
+  if (nextRead(s)) return Action::read(s);
+  const Action a = route_.empty() ? decide() : follow();
+  if (a.kind == Action::Kind::Done) return finish(ExplorerEnd::Complete);
+  return a;
+}
+
+int16_t Explorer::unknownAhead(Cell c, Dir d) const {
+  if (map_.wasRead(c, d)) return 0;
+  int16_t unknown = 0;
+  const int16_t reach = config_.geometry.hitCells();
+  for (int16_t k = 1; k <= reach; ++k) {
+    const Cell n = advance(c, d, k);
+    const CellState st = map_.at(n);
+    if (st == CellState::Occupied) break;
+    if (st == CellState::Unknown) {
+      if (!map_.grid().fits(n)) break;
+      ++unknown;
+    }
+  }
+  return unknown;
+}
+
+bool Explorer::worthReading(Cell c, Dir d) const { return unknownAhead(c, d) > 0; }
+
+bool Explorer::nextRead(Sensor& s) const {
+  for (int i = 0; i < kSensorCount; ++i) {
+    const Sensor cand = static_cast<Sensor>(i);
+    if (worthReading(pose_.cell, sensorDir(pose_.heading, cand))) {
+      s = cand;
+      return true;
+    }
+  }
+  return false;
+}
+
+int16_t Explorer::openCells(Cell c, Dir d) const {
+  int16_t n = 0;
+  while (map_.at(advance(c, d, static_cast<int16_t>(n + 1))) == CellState::Free) ++n;
+  return n;
+}
+
+void Explorer::go(Dir d) {
+  route_.clear();
+  route_.push(d);
+}
+
+bool Explorer::travelTo(Cell target, uint16_t cost) {
+  return planner_.routeTo(map_.grid(), target, cost, route_);
+}
+
+Action Explorer::follow() {
+  const Dir d = route_.front();
+  if (!map_.grid().isFree(advance(pose_.cell, d))) {  // the map changed under the route
+    route_.clear();
+    return decide();
+  }
+  pendingMove_ = d;
+  if (pose_.heading == d) return Action::move(1);
+  if (pose_.heading == opposite(d)) return Action::move(-1);
+  return Action::turn(rotate(pose_.heading, 1) == d ? 2 : -2);
+}
+
+}  // namespace nxtmap

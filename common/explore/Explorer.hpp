@@ -1,0 +1,83 @@
+#pragma once
+#include <cstdint>
+
+#include "common/explore/Action.hpp"
+#include "common/explore/Counters.hpp"
+#include "common/explore/Event.hpp"
+#include "common/explore/ExplorerConfig.hpp"
+#include "common/explore/Pose.hpp"
+#include "common/explore/Route.hpp"
+#include "common/explore/TravelPlanner.hpp"
+#include "common/grid/MapLayers.hpp"
+
+namespace nxtmap {
+
+// Why a run ended.
+enum class ExplorerEnd : uint8_t { Running, Complete, GridFull, ActionLimit };
+
+// The explorer interface: a state machine that consumes events and returns the next action.
+// It never calls a driver and never waits. This base owns what every strategy shares: the pose,
+// the counters, applying the marking rules to readings, reading every sensor that can still
+// teach something at each new cell, and following a route. A strategy only decides where to go
+// when the robot stands still with nothing left to read (decide()).
+class Explorer {
+ public:
+  // The map and the planner are owned by the caller and must outlive the explorer.
+  Explorer(MapLayers& map, TravelPlanner& planner, const ExplorerConfig& config);
+  Explorer(const Explorer&) = delete;
+  Explorer& operator=(const Explorer&) = delete;
+
+  // Feeds one event (Event::start() first) and returns what to do next.
+  Action step(const Event& e);
+
+  bool finished() const { return end_ != ExplorerEnd::Running; }
+  ExplorerEnd end() const { return end_; }
+  const Pose& pose() const { return pose_; }
+  const Counters& counters() const { return counters_; }
+  const MapLayers& map() const { return map_; }
+  const ExplorerConfig& config() const { return config_; }
+  virtual const char* name() const = 0;
+
+  // Whether reading along `d` from `c` could still teach something: not read from there yet,
+  // and an unknown cell within reach before any occupied one.
+  bool worthReading(Cell c, Dir d) const;
+  // Unknown cells a reading along d from c could reveal (0 when not worth reading).
+  int16_t unknownAhead(Cell c, Dir d) const;
+
+ protected:
+  ~Explorer() = default;
+
+  // Called when the robot stands still with nothing worth reading and no route to follow.
+  // Returns the next action: usually set a route with travelTo()/go() and return follow().
+  virtual Action decide() = 0;
+  // A move was blocked (only with noise or a real robot): the route is already dropped.
+  virtual void onBlocked() {}
+
+  // Route helpers.
+  void go(Dir d);  // one-cell route
+  bool travelTo(Cell target, uint16_t cost);  // route from the last planner search
+  Action follow();
+  bool routeEmpty() const { return route_.empty(); }
+  void dropRoute() { route_.clear(); }
+  // Number of known-free cells from c along d before the first non-free one.
+  int16_t openCells(Cell c, Dir d) const;
+
+  MapLayers& map_;
+  TravelPlanner& planner_;
+  ExplorerConfig config_;
+  Pose pose_;
+  Counters counters_;
+
+ private:
+  void apply(const Event& e);
+  bool nextRead(Sensor& s) const;
+  Action finish(ExplorerEnd why);
+
+  Route route_;
+  Dir pendingMove_ = Dir::North;  // direction of the last Move issued
+  uint32_t actions_ = 0;
+  ExplorerEnd end_ = ExplorerEnd::Running;
+  bool started_ = false;
+};
+
+}  // namespace nxtmap

@@ -1,0 +1,17 @@
+#pragma once
+#include <cstdint>
+
+#include "common/sensing/RangeGeometry.hpp"
+
+namespace nxtmap {
+
+// Tuning of the explorers. Defaults are the published experiments' (10 cm cells, 5 cm - 1 m).
+struct ExplorerConfig {
+  RangeGeometry geometry{};
+  int16_t minWallCells = 4;     // more consecutive occupied cells beside a deviation = a wall
+  int16_t bigAreaCells = 12;    // unknown cells seen from a spot that make it a "large area"
+  int16_t gainPerCostUnit = 2;  // frontier: unknown cells worth one unit of travel time
+  uint32_t maxActions = 20000;  // safety stop: a run never takes more actions than this
+};
+
+}  // namespace nxtmap

@@ -1,0 +1,28 @@
+#pragma once
+#include <cstdint>
+
+#include "common/explore/Explorer.hpp"
+
+namespace nxtmap {
+
+// Frontier exploration (Yamauchi 1997) for a robot whose sensors see along four rays: a
+// frontier is an unknown cell a reading from a known-free cell could reveal; the robot goes to
+// the reachable spot that sees frontier cells at the lowest travel time (moves and turns),
+// reads, and repeats until no frontier is reachable. With gainPerCostUnit > 0 the choice trades
+// travel time against the number of unknown cells in view (explore_lite's cost - gain ranking).
+class FrontierExplorer final : public Explorer {
+ public:
+  FrontierExplorer(MapLayers& map, TravelPlanner& planner, const ExplorerConfig& config)
+      : Explorer(map, planner, config) {}
+  const char* name() const override { return "frontier"; }
+  uint16_t goals() const { return goals_; }
+
+ protected:
+  Action decide() override;
+
+ private:
+  int16_t gainAt(Cell c) const;
+  uint16_t goals_ = 0;
+};
+
+}  // namespace nxtmap

@@ -1,0 +1,144 @@
+#include "common/explore/PropagationExplorer.hpp"
+
+namespace nxtmap {
+namespace {
+constexpr uint8_t kMaxIdleTransitions = 8;  // all four propagations tried twice without a step
+}
+
+Action PropagationExplorer::decide() {
+  switch (phase_) {
+    case Phase::Startup: return startup();
+    case Phase::AtStart: return atStart();
+    case Phase::Mid: return mid();
+    case Phase::Deviate: return deviate();
+    case Phase::Return: return begin(prop_);  // arrived on the start line
+    case Phase::Sweep: return sweep();
+    case Phase::SweepTravel:
+      if (bigArea_) return startup();  // map the large area with a propagation of its own
+      return sweep();
+  }
+  return Action::done();
+}
+
+void PropagationExplorer::onBlocked() {
+  // Only with noise or a real robot: re-evaluate from where the robot is.
+  if (phase_ == Phase::Mid || phase_ == Phase::Deviate) phase_ = Phase::AtStart;
+}
+
+// Start-up heuristic (3.5.1): of the four sides as seen from here, go towards the larger
+// vertical one and the larger horizontal one; this fixes the frame's quadrant.
+Action PropagationExplorer::startup() {
+  const Cell c = pose_.cell;
+  const int sy = openCells(c, Dir::North) >= openCells(c, Dir::South) ? 1 : -1;
+  const int sx = openCells(c, Dir::East) >= openCells(c, Dir::West) ? 1 : -1;
+  idleTransitions_ = 0;
+  return begin(propagationOf(sx, sy));
+}
+
+Action PropagationExplorer::begin(Propagation p) {
+  prop_ = p;
+  origin_ = pose_.cell;
+  phase_ = Phase::AtStart;
+  return atStart();
+}
+
+// Step 1 of every propagation: one diagonal step, as two straight moves (4.7.1).
+Action PropagationExplorer::atStart() {
+  const Cell c = pose_.cell;
+  const int sx = propagationDx(prop_), sy = propagationDy(prop_);
+  if (map_.diagonalUsed(c, sx, sy)) return ended(PropagationOutcome::Reused);
+  const Dir v = verticalDir(prop_), h = horizontalDir(prop_);
+  const bool freeV = passable(advance(c, v)), freeH = passable(advance(c, h));
+  if (!freeV && !freeH) return ended(PropagationOutcome::Corner);
+  first_ = freeV ? v : h;  // forward (or backward) first, sideways when that is blocked
+  second_ = freeV ? h : v;
+  stepFrom_ = c;
+  phase_ = Phase::Mid;
+  go(first_);
+  return follow();
+}
+
+Action PropagationExplorer::mid() {
+  const int sx = propagationDx(prop_), sy = propagationDy(prop_);
+  const Cell target = offset(stepFrom_, sx, sy);
+  if (passable(target)) {
+    map_.setDiagonalUsed(stepFrom_, sx, sy);
+    idleTransitions_ = 0;
+    phase_ = Phase::AtStart;
+    go(second_);
+    return follow();
+  }
+  // The diagonal cell is blocked: go straight on along the obstacle (steps 2 and 3).
+  wallCount_ = 1;
+  phase_ = Phase::Deviate;
+  return deviate();
+}
+
+// Deviation: moving straight along `first_` while the side `second_` is blocked, counting
+// the blocked cells beside (wall detection, 3.5.4 and 4.7.3).
+Action PropagationExplorer::deviate() {
+  const Cell p = pose_.cell;
+  if (passable(advance(p, second_))) return atStart();  // obstacle passed: back to step 1
+  const bool sideIsVertical = isVertical(second_);
+  if (wallCount_ > config_.minWallCells) {
+    return ended(sideIsVertical ? PropagationOutcome::HitVertical : PropagationOutcome::HitHorizontal);
+  }
+  if (!passable(advance(p, first_))) return ended(PropagationOutcome::Corner);
+  ++wallCount_;
+  go(first_);
+  return follow();
+}
+
+Action PropagationExplorer::ended(PropagationOutcome o) {
+  log_[records_ % kLogCapacity] = Record{prop_, o, pose_.cell};
+  ++records_;
+  if (o == PropagationOutcome::Reused || ++idleTransitions_ >= kMaxIdleTransitions) {
+    phase_ = Phase::Sweep;  // stop heuristic (3.5.3)
+    return sweep();
+  }
+  const Propagation next = nextPropagation(prop_, o);
+  if (o != PropagationOutcome::Corner) return begin(next);
+  // Corner: success. Back to the propagation's vertical or horizontal start line, whichever is
+  // nearer, then the opposite propagation.
+  const Cell onRow{pose_.cell.x, origin_.y}, onColumn{origin_.x, pose_.cell.y};
+  Cell best{};
+  uint16_t bestCost = 0xFFFF;
+  uint8_t found = 0;
+  planner_.search(map_.grid(), pose_, [&](Cell c, uint16_t cost) {
+    if (c == onRow || c == onColumn) {
+      if (cost < bestCost) {
+        best = c;
+        bestCost = cost;
+      }
+      ++found;
+    }
+    return found == 2 || (onRow == onColumn && found == 1);
+  });
+  prop_ = next;
+  if (bestCost == 0 || bestCost == 0xFFFF || !travelTo(best, bestCost)) return begin(next);
+  phase_ = Phase::Return;
+  return follow();
+}
+
+// After the stop heuristic: go to the nearest spot from which unknown cells can still be read.
+Action PropagationExplorer::sweep() {
+  ++sweeps_;
+  Cell target{};
+  uint16_t targetCost = 0;
+  int16_t gain = 0;
+  planner_.search(map_.grid(), pose_, [&](Cell c, uint16_t cost) {
+    int16_t g = 0;
+    for (int d = 0; d < 4; ++d) g = static_cast<int16_t>(g + unknownAhead(c, static_cast<Dir>(d)));
+    if (g == 0) return false;
+    target = c;
+    targetCost = cost;
+    gain = g;
+    return true;
+  });
+  if (gain == 0 || !travelTo(target, targetCost)) return Action::done();
+  bigArea_ = gain >= config_.bigAreaCells;
+  phase_ = Phase::SweepTravel;
+  return follow();
+}
+
+}  // namespace nxtmap

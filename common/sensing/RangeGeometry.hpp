@@ -1,0 +1,29 @@
+#pragma once
+#include <cstdint>
+
+namespace nxtmap {
+
+// How a range in centimetres relates to cells. All distances in whole centimetres.
+// The sensor sits `mountCm` ahead of the robot's cell centre; readings are measured from it.
+struct RangeGeometry {
+  int16_t cellCm = 10;   // cell edge: 10 cm in the published experiments, 20 cm on the NXT
+  int16_t minCm = 5;     // readings at or below are "too near" (published: 5 cm)
+  int16_t maxCm = 100;   // readings above are "too far" (published: 1 m)
+  int16_t mountCm = 0;   // sensor face ahead of the cell centre
+
+  // Cells a "nothing within range" reading proves free: those wholly inside the range.
+  constexpr int16_t freeCells() const {
+    return static_cast<int16_t>((2 * (maxCm + mountCm) - cellCm) / (2 * cellCm));
+  }
+  // Farthest cell whose near face lies inside the range, so a hit there is seen.
+  constexpr int16_t hitCells() const {
+    return static_cast<int16_t>((2 * (maxCm + mountCm) + cellCm) / (2 * cellCm));
+  }
+  // The cell (1 = adjacent) holding the obstacle whose near face is `cm` from the sensor.
+  // Robust to errors under half a cell: the near face of cell k is (k - 1/2) cells from the centre.
+  constexpr int16_t hitCell(int16_t cm) const {
+    return static_cast<int16_t>((cm + mountCm + cellCm) / cellCm);
+  }
+};
+
+}  // namespace nxtmap

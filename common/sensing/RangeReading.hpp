@@ -1,0 +1,22 @@
+#pragma once
+#include <cstdint>
+
+namespace nxtmap {
+
+// Status of one filtered reading of one sensor.
+enum class RangeStatus : uint8_t {
+  Good = 0,          // an echo inside (minCm, maxCm]: an obstacle at `cm`
+  NoEcho = 1,        // the sensor answered 255: nothing within its reach
+  TooNear = 2,       // at or below minCm: an obstacle closer than the trusted minimum
+  TooFar = 3,        // above maxCm: nothing within the trusted range
+  Inconsistent = 4,  // the samples disagree: nothing can be concluded
+};
+
+// One filtered reading: the explorer's unit of sensing ("one sensor request").
+struct RangeReading {
+  RangeStatus status = RangeStatus::NoEcho;
+  int16_t cm = 0;       // averaged distance of the accepted samples (Good only)
+  uint8_t samples = 0;  // raw samples the filter consumed, 1..RangeFilter::kMaxSamples
+};
+
+}  // namespace nxtmap

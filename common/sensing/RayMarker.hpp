@@ -1,0 +1,27 @@
+#pragma once
+#include <cstdint>
+
+#include "common/grid/Cell.hpp"
+#include "common/grid/MapLayers.hpp"
+#include "common/sensing/RangeGeometry.hpp"
+#include "common/sensing/RangeReading.hpp"
+
+namespace nxtmap {
+
+// The method's marking rules for one filtered reading taken from `from` looking along `d`:
+//  - an echo: the cells before the obstacle become free, the obstacle's cell occupied;
+//  - nothing within range (no echo, too far): every cell wholly inside the range becomes free;
+//  - too near: the adjacent cell is occupied (an obstacle closer than the trusted minimum);
+//  - inconsistent: nothing is marked.
+// A ray never passes a cell the map already holds as occupied (the robot cannot read through
+// a wall): that cell gets one observation as free and marking stops there.
+struct RayMarkResult {
+  int16_t cellsMarked = 0;  // observations written
+  bool gridFull = false;    // a cell did not fit in the grid's capacity
+  bool conclusive = false;  // the reading said something (not Inconsistent)
+};
+
+RayMarkResult markRay(MapLayers& map, const RangeGeometry& geometry, Cell from, Dir d,
+                      const RangeReading& reading);
+
+}  // namespace nxtmap

@@ -1,0 +1,10 @@
+# Fails when the cross-built common/ library needs the heap, exceptions, RTTI or soft-float routines.
+execute_process(COMMAND arm-none-eabi-nm -u ${LIB} OUTPUT_VARIABLE UNDEF RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "arm-none-eabi-nm failed on ${LIB}")
+endif()
+string(REGEX MATCHALL "U (malloc|calloc|realloc|free|_Zn[wa][A-Za-z0-9_]*|_Zd[la][A-Za-z0-9_]*|__cxa_[a-z_]*|__gxx_personality[a-z0-9_]*|_ZTI[A-Za-z0-9_]*|__aeabi_[fd][a-z0-9]*|__aeabi_u?[il]2[fd])\n" BAD "${UNDEF}")
+if(BAD)
+  message(FATAL_ERROR "common/ for the brick needs forbidden symbols:\n${BAD}")
+endif()
+message(STATUS "common/ ARM symbols: no heap, no exceptions, no RTTI, no floating point")

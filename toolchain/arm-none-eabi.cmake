@@ -1,0 +1,20 @@
+# Cross-compiling for the NXT's AT91SAM7S256 (ARM7TDMI, ARMv4T, no FPU) with Debian's gcc-arm-none-eabi.
+set(CMAKE_SYSTEM_NAME Generic)
+set(CMAKE_SYSTEM_PROCESSOR arm)
+set(CMAKE_C_COMPILER arm-none-eabi-gcc)
+set(CMAKE_CXX_COMPILER arm-none-eabi-g++)
+set(CMAKE_ASM_COMPILER arm-none-eabi-gcc)
+set(CMAKE_OBJCOPY arm-none-eabi-objcopy)
+set(CMAKE_SIZE arm-none-eabi-size)
+set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
+
+set(NXT_CPU_FLAGS "-mcpu=arm7tdmi -mthumb -mthumb-interwork -mfloat-abi=soft")
+set(NXT_FREESTANDING "-ffreestanding -fno-exceptions -fno-rtti -fno-unwind-tables -fno-threadsafe-statics -fno-use-cxa-atexit -ffunction-sections -fdata-sections")
+set(CMAKE_C_FLAGS_INIT "${NXT_CPU_FLAGS} -ffreestanding -ffunction-sections -fdata-sections")
+set(CMAKE_CXX_FLAGS_INIT "${NXT_CPU_FLAGS} ${NXT_FREESTANDING}")
+set(CMAKE_ASM_FLAGS_INIT "${NXT_CPU_FLAGS}")
+set(CMAKE_EXE_LINKER_FLAGS_INIT "${NXT_CPU_FLAGS} -nostartfiles -Wl,--gc-sections")
+
+set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
+set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
+set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
