@@ -10,7 +10,7 @@ struct ExplorerConfig {
   RangeGeometry geometry{};
   int16_t minWallCells = 4;     // more consecutive occupied cells beside a deviation = a wall
   int16_t bigAreaCells = 12;    // unknown cells seen from a spot that make it a "large area"
-  int16_t gainPerCostUnit = 2;  // frontier: unknown cells worth one unit of travel time
+  int16_t gainPerCostUnit = 0;  // frontier: unknown cells worth one unit of travel time
   uint32_t maxActions = 20000;  // safety stop: a run never takes more actions than this
 };
 

@@ -12,6 +12,8 @@ template <int W, int H, int QUEUE = (W * H) / 2>
 struct ExplorerStorage {
   MapStorage<W, H> map;
   TravelStorage<W, H, QUEUE> travel;
+  static constexpr int16_t kWidth() { return W; }
+  static constexpr int16_t kHeight() { return H; }
   static constexpr size_t kBytes = sizeof(MapStorage<W, H>) + sizeof(TravelStorage<W, H, QUEUE>);
 };
 

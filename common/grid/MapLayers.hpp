@@ -74,8 +74,8 @@ struct MapStorage {
   uint8_t reads[packedBytes(W, H, 4)];
   uint8_t diagonals[packedBytes(W, H, 2)];
   MapLayers::Storage view() { return MapLayers::Storage{grid, evidence, reads, diagonals}; }
-  static constexpr int16_t kWidth = W;
-  static constexpr int16_t kHeight = H;
+  static constexpr int16_t kWidth() { return W; }
+  static constexpr int16_t kHeight() { return H; }
 };
 
 }  // namespace nxtmap

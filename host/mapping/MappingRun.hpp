@@ -1,0 +1,79 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "common/explore/ExplorerStorage.hpp"
+#include "common/explore/FrontierExplorer.hpp"
+#include "common/explore/PropagationExplorer.hpp"
+#include "common/sensing/RangeFilter.hpp"
+#include "host/mapping/FrameTransform.hpp"
+#include "host/mapping/Strategy.hpp"
+#include "host/sim/NoiseProfile.hpp"
+#include "host/sim/SimRobot.hpp"
+#include "host/sim/World.hpp"
+
+namespace nxtmap::mapping {
+
+struct RunConfig {
+  int startCol = 0, startRow = 0;         // start cell in the world
+  sim::Heading heading = sim::Heading::N; // initial heading in the world
+  double rangeM = 1.0;                    // trusted maximum range (published: 1 m)
+  double minRangeM = 0.05;                // trusted minimum range (published: 5 cm)
+  double sensorReachCm = 255.0;           // the sonar's own reach (NXT: 255 = no echo)
+  sim::NoiseProfile noise;                // see sim::noiseProfileByName
+  uint64_t seed = 1;
+  Strategy strategy = Strategy::Propagation;
+};
+
+// One mapping run: the common core's explorer driven by the simulated robot, exactly as the
+// firmware drives it with the real drivers (read -> filter samples -> event, move, turn).
+class MappingRun {
+ public:
+  // Host capacity: rooms up to 128 x 128 cells.
+  using Storage = ExplorerStorage<128, 128, 8192>;
+
+  MappingRun(const sim::World& world, const RunConfig& config);
+  ~MappingRun();
+
+  // Carries out one action and feeds the result back. False once the run is over.
+  bool step();
+  // Runs until the explorer is done; returns the number of actions carried out.
+  uint64_t runToEnd();
+
+  const Explorer& explorer() const { return *explorer_; }
+  const PropagationExplorer* propagation() const;
+  const Counters& counters() const { return explorer_->counters(); }
+  bool finished() const { return explorer_->finished(); }
+  const Action& lastAction() const { return last_; }
+  const sim::SimRobot& robot() const { return robot_; }
+  const sim::World& world() const { return world_; }
+  const RunConfig& config() const { return config_; }
+  const FrameTransform& frame() const { return frame_; }
+  const ExplorerConfig& explorerConfig() const { return explorerConfig_; }
+
+  // The explorer's belief about a world cell (Unknown outside what it mapped).
+  CellState belief(int col, int row) const;
+  // The believed robot cell in world coordinates.
+  void believedCell(int& col, int& row) const;
+  sim::Heading believedHeading() const;
+
+ private:
+  Event carryOut(const Action& a);
+
+  const sim::World& world_;
+  RunConfig config_;
+  ExplorerConfig explorerConfig_;
+  FrameTransform frame_;
+  sim::SimRobot robot_;
+  std::unique_ptr<Storage> storage_;
+  std::unique_ptr<MapLayers> map_;
+  std::unique_ptr<TravelPlanner> planner_;
+  std::unique_ptr<PropagationExplorer> propagation_;
+  std::unique_ptr<FrontierExplorer> frontier_;
+  Explorer* explorer_ = nullptr;
+  RangeFilter filter_;
+  Action last_;
+};
+
+}  // namespace nxtmap::mapping

@@ -1,0 +1,15 @@
+#include "host/mapping/Strategy.hpp"
+
+namespace nxtmap::mapping {
+
+std::optional<Strategy> strategyByName(const std::string& name) {
+  if (name == "propagation") return Strategy::Propagation;
+  if (name == "frontier") return Strategy::Frontier;
+  return std::nullopt;
+}
+
+std::string strategyName(Strategy s) { return s == Strategy::Propagation ? "propagation" : "frontier"; }
+
+std::vector<std::string> strategyNames() { return {"propagation", "frontier"}; }
+
+}  // namespace nxtmap::mapping

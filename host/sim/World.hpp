@@ -1,0 +1,57 @@
+// World: the true occupancy of the simulated environment, one flag per square cell.
+// Coordinates follow Moving AI: col grows to the right, row grows DOWN (row 0 = top line of the file).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace nxtmap::sim {
+
+class World;
+
+// Result of loading a world file: world set on success, otherwise error names the file (and line) and problem.
+struct WorldLoad;
+
+class World {
+public:
+    static constexpr int kMaxSide = 4096;  // largest accepted width or height, cells
+
+    int width() const { return width_; }            // cells, 1..kMaxSide
+    int height() const { return height_; }          // cells, 1..kMaxSide
+    double resolutionM() const { return resolutionM_; }  // metres per cell side, > 0
+    std::string name() const { return name_; }      // file stem, or "rows" for fromRows
+    bool inside(int col, int row) const { return col >= 0 && row >= 0 && col < width_ && row < height_; }
+    // True for obstacles and for every cell outside the map.
+    bool blocked(int col, int row) const {
+        return !inside(col, row) || cells_[static_cast<size_t>(row) * static_cast<size_t>(width_) +
+                                           static_cast<size_t>(col)] != 0;
+    }
+
+    // Moving AI ".map": "type octile", "height H", "width W", "map", then H rows of W chars.
+    // '.'/'G' free; '@','O','T','S','W' blocked. CRLF tolerated.
+    static WorldLoad loadMovingAi(const std::string& path, double resolutionM = 0.10);
+    // ROS map_server YAML (trinary mode) and the P5/P2 PGM it names; unknown cells become blocked.
+    static WorldLoad loadRosYaml(const std::string& yamlPath);
+    // By extension: .map -> Moving AI, .yaml/.yml -> ROS; otherwise "unknown world format".
+    static WorldLoad load(const std::string& path);
+    // For tests: '#' or '@' blocked, '.' or ' ' free (anything else blocked); short rows padded free.
+    static World fromRows(const std::vector<std::string>& rows, double resolutionM = 0.10);
+
+private:
+    World(int width, int height, double resolutionM, std::string name, std::vector<uint8_t> cells);
+
+    int width_;
+    int height_;
+    double resolutionM_;
+    std::string name_;
+    std::vector<uint8_t> cells_;  // row-major, 1 = blocked
+};
+
+struct WorldLoad {
+    std::optional<World> world;
+    std::string error;
+};
+
+}  // namespace nxtmap::sim
