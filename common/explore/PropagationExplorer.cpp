@@ -2,7 +2,9 @@
 
 namespace nxtmap {
 namespace {
-constexpr uint8_t kMaxIdleTransitions = 8;  // all four propagations tried twice without a step
+// Four transitions without a diagonal step: the robot went round the room along its walls and
+// is about to repeat that lap, which the stop heuristic counts as a reused path.
+constexpr uint8_t kMaxIdleTransitions = 4;
 }
 
 Action PropagationExplorer::decide() {
@@ -89,14 +91,19 @@ Action PropagationExplorer::deviate() {
   return follow();
 }
 
-Action PropagationExplorer::ended(PropagationOutcome o) {
+Action PropagationExplorer::ended(PropagationOutcome o) {  // o may be rewritten to Reused
   log_[records_ % kLogCapacity] = Record{prop_, o, pose_.cell};
   ++records_;
-  if (o == PropagationOutcome::Reused || ++idleTransitions_ >= kMaxIdleTransitions) {
+  const Propagation next = nextPropagation(prop_, o);
+  if (o != PropagationOutcome::Reused && ++idleTransitions_ >= kMaxIdleTransitions) {
+    log_[records_ % kLogCapacity] = Record{next, PropagationOutcome::Reused, pose_.cell};
+    ++records_;
+    o = PropagationOutcome::Reused;
+  }
+  if (o == PropagationOutcome::Reused) {
     phase_ = Phase::Sweep;  // stop heuristic (3.5.3)
     return sweep();
   }
-  const Propagation next = nextPropagation(prop_, o);
   if (o != PropagationOutcome::Corner) return begin(next);
   // Corner: success. Back to the propagation's vertical or horizontal start line, whichever is
   // nearer, then the opposite propagation.

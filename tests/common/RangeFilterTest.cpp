@@ -1,0 +1,68 @@
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "common/sensing/RangeFilter.hpp"
+
+namespace nxtmap {
+namespace {
+
+struct FilterCase {
+  const char* name;
+  std::vector<uint8_t> raw;
+  RangeStatus status;
+  int16_t cm;       // checked for Good only
+  uint8_t samples;  // raw samples consumed
+};
+
+TEST(RangeFilter, SensorRulesFromTable) {
+  const RangeGeometry g{10, 5, 100, 0};
+  const std::vector<FilterCase> cases = {
+      {"three agreeing echoes stop early", {42, 43, 42, 99, 99}, RangeStatus::Good, 42, 3},
+      {"averages accepted samples", {40, 44, 60, 41, 43, 42, 40, 44, 41, 43}, RangeStatus::Good, 42, 10},
+      {"no echo", {255, 255, 255}, RangeStatus::NoEcho, 0, 3},
+      {"at the minimum is too near", {5, 5, 5}, RangeStatus::TooNear, 0, 3},
+      {"below the minimum is too near", {3, 2, 4}, RangeStatus::TooNear, 0, 3},
+      {"just above the minimum is good", {6, 6, 6}, RangeStatus::Good, 6, 3},
+      {"at the maximum is good", {100, 100, 100}, RangeStatus::Good, 100, 3},
+      {"above the maximum is too far", {101, 150, 120}, RangeStatus::TooFar, 0, 3},
+      {"no echo and too far mix into too far", {255, 150, 255, 130, 255, 255, 140, 200, 180, 255},
+       RangeStatus::TooFar, 0, 10},
+      {"one dropout among echoes", {50, 255, 50, 51, 50, 49, 50, 50, 51, 50}, RangeStatus::Good, 50, 10},
+      {"scattered echoes are inconsistent", {20, 80, 50, 35, 95, 10, 65, 255, 3, 150},
+       RangeStatus::Inconsistent, 0, 10},
+      {"half rejected is inconsistent", {50, 255, 50, 255, 50, 255, 50, 255, 50, 255},
+       RangeStatus::Inconsistent, 0, 10},
+  };
+  for (const FilterCase& c : cases) {
+    const RangeReading r = RangeFilter::filter(g, c.raw.data(), static_cast<uint8_t>(c.raw.size()));
+    EXPECT_EQ(r.status, c.status) << c.name;
+    EXPECT_EQ(r.samples, c.samples) << c.name;
+    if (c.status == RangeStatus::Good) {
+      EXPECT_EQ(r.cm, c.cm) << c.name;
+    }
+  }
+}
+
+TEST(RangeFilter, NeverTakesMoreThanTenSamples) {
+  RangeFilter f(RangeGeometry{});
+  for (int i = 0; i < 30; ++i) f.add(static_cast<uint8_t>(i % 2 ? 255 : 40));
+  EXPECT_TRUE(f.done());
+  EXPECT_EQ(f.samples(), RangeFilter::kMaxSamples);
+}
+
+TEST(RangeGeometry, CellsFromCentimetres) {
+  const RangeGeometry g{10, 5, 100, 0};
+  EXPECT_EQ(g.freeCells(), 9);
+  EXPECT_EQ(g.hitCells(), 10);
+  // The near face of cell k is (k - 1/2) cells away; errors under half a cell keep the cell.
+  const struct { int16_t cm; int16_t cell; } table[] = {{5, 1}, {9, 1}, {14, 2}, {15, 2}, {19, 2},
+                                                        {25, 3}, {95, 10}, {99, 10}};
+  for (const auto& t : table) EXPECT_EQ(g.hitCell(t.cm), t.cell) << t.cm << " cm";
+  const RangeGeometry nxt{20, 5, 100, 5};  // NXT: 20 cm cells, sensor 5 cm ahead of the centre
+  EXPECT_EQ(nxt.hitCell(25), 2);
+  EXPECT_EQ(nxt.hitCell(5), 1);
+}
+
+}  // namespace
+}  // namespace nxtmap

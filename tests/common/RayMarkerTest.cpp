@@ -1,0 +1,73 @@
+#include <gtest/gtest.h>
+
+#include "common/sensing/RayMarker.hpp"
+#include "tests/common/GridFixture.hpp"
+
+namespace nxtmap {
+namespace {
+
+// Marks one reading from (0,0) looking East and returns the row y = 0 from x = 0 to 11.
+std::string markEast(RangeStatus status, int16_t cm, const std::vector<std::string>& before = {}) {
+  test::GridFixture f;
+  if (!before.empty()) f.draw(before);
+  (void)f.map.markVisited(Cell{0, 0});
+  RangeReading r;
+  r.status = status;
+  r.cm = cm;
+  (void)markRay(f.map, RangeGeometry{10, 5, 100, 0}, Cell{0, 0}, Dir::East, r);
+  std::string row;
+  for (int16_t x = 0; x <= 11; ++x) {
+    const CellState s = f.map.at(Cell{x, 0});
+    row += s == CellState::Free ? '.' : s == CellState::Occupied ? '#' : '?';
+  }
+  return row;
+}
+
+TEST(RayMarker, MarkingRulesFromTable) {
+  const struct {
+    const char* name;
+    RangeStatus status;
+    int16_t cm;
+    const char* expected;
+  } table[] = {
+      {"echo: free before, occupied at the hit", RangeStatus::Good, 35, "....#???????"},
+      {"echo two cells away", RangeStatus::Good, 15, "..#?????????"},
+      {"echo at the far end", RangeStatus::Good, 95, "..........#?"},
+      {"no echo: free up to the range", RangeStatus::NoEcho, 0, "..........??"},
+      {"too far: free up to the range", RangeStatus::TooFar, 0, "..........??"},
+      {"too near: the adjacent cell", RangeStatus::TooNear, 0, ".#??????????"},
+      {"inconsistent: nothing", RangeStatus::Inconsistent, 0, ".???????????"},
+  };
+  for (const auto& t : table) EXPECT_EQ(markEast(t.status, t.cm), t.expected) << t.name;
+}
+
+TEST(RayMarker, DoesNotReadThroughAKnownWall) {
+  // A wall already known 3 cells away: a no-echo reading stops there (and weakens it once).
+  const std::string row = markEast(RangeStatus::NoEcho, 0, {"...#"});
+  EXPECT_EQ(row.substr(4), "????????");
+}
+
+TEST(RayMarker, ReadMemoryIsPerDirection) {
+  test::GridFixture f;
+  EXPECT_FALSE(f.map.wasRead(Cell{2, 3}, Dir::East));
+  f.map.setRead(Cell{2, 3}, Dir::East);
+  EXPECT_TRUE(f.map.wasRead(Cell{2, 3}, Dir::East));
+  EXPECT_FALSE(f.map.wasRead(Cell{2, 3}, Dir::West));
+  EXPECT_FALSE(f.map.wasRead(Cell{3, 3}, Dir::East));
+}
+
+TEST(MapLayers, EvidenceCorrectsAnIsolatedWrongHit) {
+  test::GridFixture f;
+  const Cell c{4, 0};
+  ASSERT_TRUE(f.map.observeOccupied(c));
+  EXPECT_EQ(f.map.at(c), CellState::Occupied);
+  ASSERT_TRUE(f.map.observeFree(c));
+  ASSERT_TRUE(f.map.observeFree(c));
+  EXPECT_EQ(f.map.at(c), CellState::Free);
+  ASSERT_TRUE(f.map.markVisited(Cell{5, 0}));
+  ASSERT_TRUE(f.map.observeOccupied(Cell{5, 0}));
+  EXPECT_EQ(f.map.at(Cell{5, 0}), CellState::Free) << "a cell the robot stood in stays free";
+}
+
+}  // namespace
+}  // namespace nxtmap
