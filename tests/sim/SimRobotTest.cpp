@@ -73,8 +73,20 @@ TEST(SimRobot, ConeSeesObstacleBesideTheAxis) {
     SimRobot narrow(w, 3, 4, Heading::N, wide, 1);
     EXPECT_EQ(narrow.ping(0), 35);
     wide.coneHalfAngleDeg = 12.0;
+    wide.specularAngleDeg = 60.0;
     SimRobot coned(w, 3, 4, Heading::N, wide, 1);
     EXPECT_EQ(coned.ping(0), 26);  // block at (4,1): bottom face 25 cm ahead, reached by the 12 degree ray
+}
+
+TEST(SimRobot, ConeGetsNoEchoFromAWallParallelToTheBeam) {
+    // Beside a long wall, the cone's outer rays meet the wall at a grazing angle: no echo from it,
+    // so the reading is the far wall ahead, not the side wall.
+    const World w = World::fromRows({"#########", "#.......#", "#.......#", "#########"});
+    NoiseProfile p = quiet();
+    p.coneHalfAngleDeg = 12.0;
+    p.specularAngleDeg = 60.0;
+    SimRobot r(w, 1, 1, Heading::E, p, 1);
+    EXPECT_EQ(r.ping(0), 65);
 }
 
 TEST(SimRobot, DropoutSpecularAndCrosstalk) {
