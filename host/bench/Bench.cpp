@@ -1,0 +1,208 @@
+// nxtmap-bench (`make bench`): speed and quality of both strategies on the 18 Appendix-A runs,
+// measured against their targets.
+//   nxtmap-bench [SCENARIO_DIR]   (default: ./worlds/seed-appendix-a, else the source tree's)
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "host/cli/Args.hpp"
+#include "host/cli/Errors.hpp"
+#include "host/cli/ExperimentRunner.hpp"
+#include "host/report/ExperimentTable.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+using nxtmap::report::formatNumber;
+
+constexpr double kWallTargetS = 2.0;
+constexpr double kRatioTarget = 0.5;
+constexpr double kNoisyDetectTargetPct = 98.0;
+constexpr double kNoisyWrongTargetPct = 1.0;
+constexpr int kNoisySeeds = 10;
+
+std::string scenarioDir(int argc, char** argv) {
+  if (argc > 1) return argv[1];
+  const fs::path local = fs::path("worlds") / "seed-appendix-a";
+  std::error_code ec;
+  if (fs::exists(local / "scenarios.tsv", ec)) return local.string();
+  // The source tree this file was compiled from.
+  const fs::path source = fs::path(__FILE__).parent_path().parent_path().parent_path() / "worlds" / "seed-appendix-a";
+  if (fs::exists(source / "scenarios.tsv", ec)) return source.string();
+  return local.string();
+}
+
+struct Clean {
+  std::string strategy;
+  nxtmap::report::ExperimentTable table;
+  double wallS = 0;
+  double timeRatio = 0, sensorRatio = 0;
+  double minDetected = 100, maxWrong = 0;
+  bool allComplete = true;
+};
+
+struct Noisy {
+  double meanDetected = 0, minDetected = 100, meanWrongPct = 0, maxWrongPct = 0;
+};
+
+class Table {
+ public:
+  void row(const std::string& measure, const std::string& strategy, const std::string& measured,
+           const std::string& target, const std::string& result) {
+    rows_.push_back({measure, strategy, measured, target, result});
+    if (result == "PASS") ++pass_;
+    if (result == "PASS" || result == "MISS") ++targets_;
+  }
+  void rule() { rows_.push_back({}); }
+  void print() const {
+    const std::vector<std::string> head = {"measure", "strategy", "measured", "target", "result"};
+    std::vector<size_t> w(head.size());
+    for (size_t i = 0; i < head.size(); ++i) w[i] = head[i].size();
+    for (const auto& r : rows_)
+      for (size_t i = 0; i < r.size(); ++i) w[i] = std::max(w[i], r[i].size());
+    auto line = [&](const std::vector<std::string>& r) {
+      std::string s;
+      for (size_t i = 0; i < head.size(); ++i) {
+        const std::string& c = r[i];
+        s += c + std::string(w[i] - c.size() + 2, ' ');
+      }
+      while (!s.empty() && s.back() == ' ') s.pop_back();
+      std::cout << s << '\n';
+    };
+    line(head);
+    size_t total = 0;
+    for (size_t x : w) total += x + 2;
+    const std::string dashes(total - 2, '-');
+    std::cout << dashes << '\n';
+    for (const auto& r : rows_) {
+      if (r.empty())
+        std::cout << dashes << '\n';
+      else
+        line(r);
+    }
+    std::cout << dashes << '\n' << "targets met: " << pass_ << " of " << targets_ << '\n';
+  }
+
+ private:
+  std::vector<std::vector<std::string>> rows_;
+  int pass_ = 0, targets_ = 0;
+};
+
+const char* verdict(bool ok) { return ok ? "PASS" : "MISS"; }
+
+int run(int argc, char** argv) {
+  using namespace nxtmap;
+  const std::string dir = scenarioDir(argc, argv);
+  const cli::Suite suite = cli::loadSuite(dir);
+  const size_t n = suite.scenarios.size();
+  std::cout << "nxtmap-bench: " << suite.tsvPath << ", " << n << " runs, 1 m range, initial heading N\n"
+            << "published medians (thesis, Chapter 5): " << formatNumber(report::kPublishedMedianTimeUnits)
+            << " time units, " << formatNumber(report::kPublishedMedianSensorReads) << " sensor reads\n\n"
+            << std::flush;
+
+  std::vector<Clean> clean;
+  std::vector<Noisy> noisy;
+  for (const std::string& name : mapping::strategyNames()) {
+    const mapping::Strategy s = cli::parseStrategy(name);
+    Clean c;
+    c.strategy = name;
+    const auto t0 = std::chrono::steady_clock::now();
+    c.table = cli::runSuite(suite, s, "none", 1);
+    const auto t1 = std::chrono::steady_clock::now();
+    c.wallS = std::chrono::duration<double>(t1 - t0).count();
+    c.timeRatio = c.table.medianTimeUnits() / report::kPublishedMedianTimeUnits;
+    c.sensorRatio = c.table.medianSensorReads() / report::kPublishedMedianSensorReads;
+    for (const auto& r : c.table.rows) {
+      c.minDetected = std::min(c.minDetected, r.mean.detectedPct);
+      c.maxWrong = std::max(c.maxWrong, r.mean.wrongCells);
+      c.allComplete = c.allComplete && r.mean.complete;
+    }
+    clean.push_back(std::move(c));
+
+    std::cerr << "[" << name << "] typical noise, " << kNoisySeeds << " seeds x " << n << " runs...\n";
+    const report::ExperimentTable t = cli::runSuite(suite, s, "typical", kNoisySeeds);
+    Noisy z;
+    double runs = 0;
+    for (const auto& r : t.rows) {
+      for (const auto& one : r.perSeed) {
+        const double wrongPct = one.roomCells > 0 ? 100.0 * one.wrongCells / one.roomCells : 0.0;
+        z.meanDetected += one.detectedPct;
+        z.minDetected = std::min(z.minDetected, one.detectedPct);
+        z.meanWrongPct += wrongPct;
+        z.maxWrongPct = std::max(z.maxWrongPct, wrongPct);
+        runs += 1;
+      }
+    }
+    if (runs > 0) {
+      z.meanDetected /= runs;
+      z.meanWrongPct /= runs;
+    }
+    noisy.push_back(z);
+  }
+
+  Table table;
+  auto pct = [](double v) { return formatNumber(v, 2) + " %"; };
+  for (const Clean& c : clean) {
+    table.row("median time units (no noise)", c.strategy,
+              formatNumber(c.table.medianTimeUnits(), 1) + " = " + formatNumber(c.timeRatio, 2) + "x",
+              "published " + formatNumber(report::kPublishedMedianTimeUnits), "");
+  }
+  for (const Clean& c : clean) {
+    table.row("median sensor requests (no noise)", c.strategy,
+              formatNumber(c.table.medianSensorReads(), 1) + " = " + formatNumber(c.sensorRatio, 2) + "x",
+              "published " + formatNumber(report::kPublishedMedianSensorReads), "");
+  }
+  for (const Clean& c : clean) {
+    table.row("detected % of observable, every run", c.strategy, "min " + pct(c.minDetected), "100 %",
+              verdict(c.minDetected >= 100.0 - 1e-9));
+  }
+  for (const Clean& c : clean) {
+    table.row("wrong cells, every run", c.strategy, "max " + formatNumber(c.maxWrong), "0",
+              verdict(c.maxWrong == 0.0));
+  }
+  // The better strategy: the smaller of the two ratios' maximum, among those detecting 100 %.
+  const Clean* best = nullptr;
+  for (const Clean& c : clean) {
+    const bool full = c.minDetected >= 100.0 - 1e-9 && c.maxWrong == 0.0;
+    if (!full) continue;
+    if (!best || std::max(c.timeRatio, c.sensorRatio) < std::max(best->timeRatio, best->sensorRatio)) best = &c;
+  }
+  table.row("better strategy: time and sensors vs published", best ? best->strategy : "none",
+            best ? formatNumber(best->timeRatio, 2) + "x, " + formatNumber(best->sensorRatio, 2) + "x" : "-",
+            "both <= " + formatNumber(kRatioTarget) + "x, 100 %",
+            verdict(best && best->timeRatio <= kRatioTarget && best->sensorRatio <= kRatioTarget));
+  table.rule();
+  for (const Clean& c : clean) {
+    table.row("wall time, " + std::to_string(n) + "-run suite, 1 core", c.strategy, formatNumber(c.wallS, 3) + " s",
+              "< " + formatNumber(kWallTargetS) + " s", verdict(c.wallS < kWallTargetS));
+  }
+  table.rule();
+  const std::string noisyLabel = "typical noise, " + std::to_string(kNoisySeeds) + " seeds: ";
+  for (size_t i = 0; i < clean.size(); ++i) {
+    table.row(noisyLabel + "mean detected %", clean[i].strategy, pct(noisy[i].meanDetected),
+              ">= " + formatNumber(kNoisyDetectTargetPct) + " %",
+              verdict(noisy[i].meanDetected >= kNoisyDetectTargetPct));
+    table.row(noisyLabel + "min detected %", clean[i].strategy, pct(noisy[i].minDetected), "(info)", "");
+  }
+  for (size_t i = 0; i < clean.size(); ++i) {
+    table.row(noisyLabel + "mean wrong cells", clean[i].strategy, pct(noisy[i].meanWrongPct) + " of room",
+              "<= " + formatNumber(kNoisyWrongTargetPct) + " %", verdict(noisy[i].meanWrongPct <= kNoisyWrongTargetPct));
+    table.row(noisyLabel + "max wrong cells", clean[i].strategy, pct(noisy[i].maxWrongPct) + " of room", "(info)",
+              "");
+  }
+  table.print();
+  return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const nxtmap::cli::CliError& e) {
+    nxtmap::cli::printError(std::string("bench: ") + e.what());
+    return nxtmap::cli::kExitUsage;
+  }
+}

@@ -1,0 +1,54 @@
+#include "host/cli/App.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstring>
+#include <iostream>
+
+#include "host/cli/Args.hpp"
+#include "host/cli/Errors.hpp"
+#include "host/cli/ExperimentsCommand.hpp"
+#include "host/cli/SimCommand.hpp"
+
+namespace nxtmap::cli {
+
+int runCli(int argc, char** argv) {
+  CLI::App app{"nxtmap: room mapping with a LEGO NXT robot, in the simulator", "nxtmap"};
+  app.require_subcommand(0, 1);
+  SimOptions simOptions;
+  ExperimentsOptions experimentsOptions;
+  CLI::App* sim = addSimCommand(app, simOptions);
+  CLI::App* experiments = addExperimentsCommand(app, experimentsOptions);
+  app.footer("Examples:\n  nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live\n"
+             "  nxtmap experiments worlds/seed-appendix-a --strategy both --csv results.csv --plots plots");
+
+  try {
+    if (argc > 1 && argv[1][0] != '-') {
+      const std::string command = argv[1];
+      if (command != sim->get_name() && command != experiments->get_name()) {
+        throw CliError("unknown command '" + command + "' (commands: sim, experiments; see nxtmap --help)");
+      }
+    }
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+      if (e.get_exit_code() == 0) return app.exit(e);  // --help
+      std::string where;
+      if (sim->parsed()) where = "sim: ";
+      if (experiments->parsed()) where = "experiments: ";
+      throw CliError(where + e.what());
+    }
+    if (sim->parsed()) return runSim(simOptions);
+    if (experiments->parsed()) return runExperiments(experimentsOptions);
+    std::cout << app.help();
+    throw CliError("no command given: use 'sim' or 'experiments' (see nxtmap --help)");
+  } catch (const CliError& e) {
+    printError(e.what());
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    printError(std::string("internal error: ") + e.what());
+    return 1;
+  }
+}
+
+}  // namespace nxtmap::cli

@@ -1,0 +1,140 @@
+#include "host/cli/Args.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <limits>
+
+#include "host/cli/Errors.hpp"
+
+namespace nxtmap::cli {
+namespace {
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t");
+  if (a == std::string::npos) return "";
+  const auto b = s.find_last_not_of(" \t");
+  return s.substr(a, b - a + 1);
+}
+
+bool parseInt(const std::string& text, int& value) {
+  const std::string t = trim(text);
+  if (t.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  const long v = std::strtol(t.c_str(), &end, 10);
+  if (errno != 0 || *end != '\0' || v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+    return false;
+  value = static_cast<int>(v);
+  return true;
+}
+}  // namespace
+
+void printError(const std::string& message) {
+  std::string line = message;
+  for (char& c : line) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  while (!line.empty() && line.back() == ' ') line.pop_back();
+  std::cout.flush();
+  std::cerr << "nxtmap: " << line << std::endl;
+}
+
+CellArg parseCell(const std::string& text, const std::string& option) {
+  const auto comma = text.find(',');
+  CellArg c;
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos ||
+      !parseInt(text.substr(0, comma), c.col) || !parseInt(text.substr(comma + 1), c.row)) {
+    throw CliError(option + " must be COL,ROW with two integers (e.g. 1,20), not '" + text + "'");
+  }
+  return c;
+}
+
+uint64_t parseSeed(const std::string& text) {
+  const std::string t = trim(text);
+  if (t.empty() || t.find_first_not_of("0123456789") != std::string::npos || t.size() > 19) {
+    throw CliError("--seed must be a whole number 0..9999999999999999999, not '" + text + "'");
+  }
+  return std::strtoull(t.c_str(), nullptr, 10);
+}
+
+sim::Heading parseHeading(const std::string& text) {
+  if (text.size() == 1) {
+    if (const auto h = sim::headingFromChar(text[0])) return *h;
+  }
+  throw CliError("--heading must be one of N, E, S, W, not '" + text + "'");
+}
+
+sim::NoiseProfile parseNoise(const std::string& text) {
+  if (const auto p = sim::noiseProfileByName(text)) return *p;
+  throw CliError("--noise must be one of " + joinNames(sim::noiseProfileNames()) + ", not '" + text + "'");
+}
+
+mapping::Strategy parseStrategy(const std::string& text) {
+  if (const auto s = mapping::strategyByName(text)) return *s;
+  throw CliError("--strategy must be one of " + joinNames(mapping::strategyNames()) + ", not '" + text + "'");
+}
+
+std::vector<mapping::Strategy> parseStrategies(const std::string& text) {
+  if (text == "both" || text == "all") {
+    std::vector<mapping::Strategy> all;
+    for (const std::string& n : mapping::strategyNames()) all.push_back(*mapping::strategyByName(n));
+    return all;
+  }
+  if (const auto s = mapping::strategyByName(text)) return {*s};
+  throw CliError("--strategy must be one of " + joinNames(mapping::strategyNames()) + ", both, not '" + text +
+                 "'");
+}
+
+double checkRangeM(double rangeM) {
+  char buf[160];
+  if (!(rangeM > 0.0)) {
+    std::snprintf(buf, sizeof buf, "--range-m must be a positive number of metres, not %g", rangeM);
+    throw CliError(buf);
+  }
+  if (rangeM <= 0.05 || rangeM > 2.54) {
+    std::snprintf(buf, sizeof buf, "--range-m must lie above 0.05 (the minimum range) and at most 2.54 m, not %g",
+                  rangeM);
+    throw CliError(buf);
+  }
+  return rangeM;
+}
+
+sim::World loadWorld(const std::string& path) {
+  sim::WorldLoad load = sim::World::load(path);
+  if (!load.world) throw CliError(load.error.empty() ? path + ": cannot load the world" : load.error);
+  return std::move(*load.world);
+}
+
+void checkStart(const sim::World& world, int col, int row, const std::string& where) {
+  const std::string cell = std::to_string(col) + "," + std::to_string(row);
+  if (!world.inside(col, row)) {
+    throw CliError(where + "start " + cell + " lies outside the " + std::to_string(world.width()) + "x" +
+                   std::to_string(world.height()) + " world (cols 0.." + std::to_string(world.width() - 1) +
+                   ", rows 0.." + std::to_string(world.height() - 1) + ")");
+  }
+  if (world.blocked(col, row)) throw CliError(where + "start " + cell + " is an obstacle cell of the world");
+}
+
+std::string joinNames(const std::vector<std::string>& names, const std::string& separator) {
+  std::string out;
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (i) out += separator;
+    out += names[i];
+  }
+  return out;
+}
+
+bool stdoutIsTerminal() { return ::isatty(STDOUT_FILENO) == 1; }
+bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) == 1; }
+
+bool colorWanted() {
+  if (!stdoutIsTerminal()) return false;
+  if (const char* nc = std::getenv("NO_COLOR"); nc && *nc) return false;
+  const char* term = std::getenv("TERM");
+  return !(term && std::string(term) == "dumb");
+}
+
+}  // namespace nxtmap::cli

@@ -1,0 +1,101 @@
+#include "host/cli/ExperimentRunner.hpp"
+
+#include <filesystem>
+
+#include "host/cli/Args.hpp"
+#include "host/cli/Errors.hpp"
+#include "host/mapping/MapScore.hpp"
+
+namespace nxtmap::cli {
+
+Suite loadSuite(const std::string& dirOrTsv) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  Suite suite;
+  if (fs::is_directory(dirOrTsv, ec)) {
+    suite.tsvPath = (fs::path(dirOrTsv) / "scenarios.tsv").string();
+    if (!fs::exists(suite.tsvPath, ec)) throw CliError(dirOrTsv + ": no scenarios.tsv in this directory");
+  } else if (fs::is_regular_file(dirOrTsv, ec)) {
+    suite.tsvPath = dirOrTsv;
+  } else {
+    throw CliError(dirOrTsv + ": no such directory");
+  }
+  report::ScenarioLoad load = report::loadScenarios(suite.tsvPath);
+  if (!load.error.empty()) throw CliError(load.error);
+  suite.scenarios = std::move(load.scenarios);
+  for (const report::Scenario& s : suite.scenarios) {
+    const std::string where = suite.tsvPath + " line " + std::to_string(s.line) + ": ";
+    auto it = suite.worlds.find(s.mapPath);
+    if (it == suite.worlds.end()) {
+      sim::WorldLoad w = sim::World::load(s.mapPath);
+      if (!w.world) throw CliError(where + w.error);
+      it = suite.worlds.emplace(s.mapPath, std::move(*w.world)).first;
+    }
+    checkStart(it->second, s.startCol, s.startRow, where);
+  }
+  return suite;
+}
+
+mapping::RunConfig scenarioConfig(const report::Scenario& s, mapping::Strategy strategy,
+                                  const sim::NoiseProfile& noise, uint64_t seed) {
+  mapping::RunConfig c;
+  c.startCol = s.startCol;
+  c.startRow = s.startRow;
+  c.heading = sim::Heading::N;
+  c.rangeM = 1.0;
+  c.noise = noise;
+  c.seed = seed;
+  c.strategy = strategy;
+  return c;
+}
+
+report::RunResult resultOf(const mapping::MappingRun& run) {
+  const mapping::MapScore s = mapping::scoreRun(run);
+  const Counters& c = run.counters();
+  report::RunResult r;
+  r.actualFree = s.actualFree;
+  r.foundFree = s.foundFree;
+  r.actualOccupied = s.actualOccupied;
+  r.foundOccupied = s.foundOccupied;
+  r.unknown = s.unknown;
+  r.unknownObservable = s.unknownObservable;
+  r.wrongCells = s.wrongCells;
+  r.detectedPct = s.detectedPct();
+  r.performancePct = s.seedPerformancePct();
+  r.timeUnits = c.timeHalfUnits() / 2.0;
+  r.sensorReads = c.sensorRequests;
+  r.roomCells = static_cast<double>(run.world().width()) * run.world().height();
+  r.complete = run.explorer().end() == ExplorerEnd::Complete;
+  return r;
+}
+
+report::RunResult runOnce(const sim::World& world, const mapping::RunConfig& config) {
+  mapping::MappingRun run(world, config);
+  run.runToEnd();
+  return resultOf(run);
+}
+
+report::ExperimentTable runSuite(const Suite& suite, mapping::Strategy strategy, const std::string& noiseName,
+                                 int seeds, const Progress& progress, size_t doneBefore, size_t total) {
+  const sim::NoiseProfile noise = parseNoise(noiseName);
+  report::ExperimentTable table;
+  table.strategy = mapping::strategyName(strategy);
+  table.noise = noiseName;
+  table.seeds = seeds;
+  if (total == 0) total = suite.scenarios.size() * static_cast<size_t>(seeds);
+  size_t done = doneBefore;
+  for (const report::Scenario& s : suite.scenarios) {
+    report::ExperimentRow row;
+    row.scenario = s;
+    for (int seed = 1; seed <= seeds; ++seed) {
+      if (progress) progress(done, total, s.id);
+      row.perSeed.push_back(runOnce(suite.world(s), scenarioConfig(s, strategy, noise, static_cast<uint64_t>(seed))));
+      ++done;
+    }
+    row.summarize();
+    table.rows.push_back(std::move(row));
+  }
+  return table;
+}
+
+}  // namespace nxtmap::cli

@@ -1,0 +1,130 @@
+#include "host/cli/ExperimentsCommand.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "host/cli/Args.hpp"
+#include "host/cli/Errors.hpp"
+#include "host/cli/ExperimentRunner.hpp"
+#include "host/report/ExperimentTable.hpp"
+#include "host/report/Plots.hpp"
+
+namespace nxtmap::cli {
+namespace {
+namespace fs = std::filesystem;
+
+// path with `suffix` before its extension: out.csv + "-frontier" -> out-frontier.csv
+std::string withSuffix(const std::string& path, const std::string& suffix) {
+  const fs::path p(path);
+  return (p.parent_path() / (p.stem().string() + suffix + p.extension().string())).string();
+}
+
+std::unique_ptr<std::ofstream> openOutput(const std::string& path) {
+  auto out = std::make_unique<std::ofstream>(path);
+  if (!*out) throw CliError("cannot write " + path);
+  return out;
+}
+}  // namespace
+
+CLI::App* addExperimentsCommand(CLI::App& app, ExperimentsOptions& o) {
+  CLI::App* ex = app.add_subcommand("experiments", "every run of DIR/scenarios.tsv beside the published figures");
+  ex->add_option("dir", o.dir, "scenario directory holding scenarios.tsv (e.g. worlds/seed-appendix-a)")
+      ->required();
+  ex->add_option("--csv", o.csv,
+                 "write the results as CSV (with --strategy both: FILE-<strategy>.csv; with --seeds N>1 also "
+                 "FILE-seeds.csv per run)");
+  ex->add_option("--markdown", o.markdown, "write a Markdown report");
+  ex->add_option("--plots", o.plots, "write gnuplot figures fig5_3/fig5_4/fig5_6 (.png) into this directory");
+  ex->add_option("--noise", o.noise, "noise profile: none, typical, harsh (default none)");
+  ex->add_option("--seeds", o.seeds, "runs per scenario with seeds 1..N, reported as means (default 1)");
+  ex->add_option("--strategy", o.strategy, "propagation, frontier or both (default propagation)");
+  return ex;
+}
+
+int runExperiments(const ExperimentsOptions& o) {
+  const std::vector<mapping::Strategy> strategies = parseStrategies(o.strategy);
+  parseNoise(o.noise);
+  if (o.seeds < 1 || o.seeds > 1000) throw CliError("--seeds must lie in 1..1000, not " + std::to_string(o.seeds));
+  if (!o.plots.empty() && report::findGnuplot().empty()) {
+    throw CliError("--plots needs gnuplot, which is not on PATH; install gnuplot or leave out --plots");
+  }
+  const Suite suite = loadSuite(o.dir);
+
+  // Open every output first so a bad path fails before the runs.
+  std::vector<std::pair<std::string, std::unique_ptr<std::ofstream>>> csvs;
+  if (!o.csv.empty()) {
+    for (mapping::Strategy s : strategies) {
+      const std::string path = strategies.size() > 1 ? withSuffix(o.csv, "-" + mapping::strategyName(s)) : o.csv;
+      csvs.emplace_back(path, openOutput(path));
+    }
+  }
+  std::unique_ptr<std::ofstream> seedCsv, markdown;
+  const std::string seedCsvPath = o.csv.empty() ? "" : withSuffix(o.csv, "-seeds");
+  if (!o.csv.empty() && o.seeds > 1) seedCsv = openOutput(seedCsvPath);
+  if (!o.markdown.empty()) markdown = openOutput(o.markdown);
+
+  const size_t total = suite.scenarios.size() * static_cast<size_t>(o.seeds) * strategies.size();
+  const bool tty = stderrIsTerminal();
+  const bool lines = !tty && total > 36;
+  Progress progress;
+  if (tty || lines) {
+    progress = [&](size_t done, size_t all, const std::string& id) {
+      std::cerr << (tty ? "\r\x1b[K" : "") << "[" << done + 1 << "/" << all << "] " << id << (tty ? "" : "\n")
+                << std::flush;
+    };
+  }
+  std::vector<report::ExperimentTable> tables;
+  size_t done = 0;
+  for (mapping::Strategy s : strategies) {
+    tables.push_back(runSuite(suite, s, o.noise, o.seeds, progress, done, total));
+    done += suite.scenarios.size() * static_cast<size_t>(o.seeds);
+  }
+  if (tty) std::cerr << "\r\x1b[K" << std::flush;
+
+  std::cout << "experiments " << suite.tsvPath << ": " << suite.scenarios.size() << " runs";
+  if (o.seeds > 1) std::cout << " x " << o.seeds << " seeds";
+  std::cout << ", published medians " << report::formatNumber(report::kPublishedMedianTimeUnits)
+            << " time units, " << report::formatNumber(report::kPublishedMedianSensorReads) << " sensor reads\n";
+  for (const report::ExperimentTable& t : tables) {
+    std::cout << '\n';
+    t.writeConsole(std::cout);
+  }
+
+  for (size_t i = 0; i < csvs.size(); ++i) {
+    tables[i].writeCsv(*csvs[i].second);
+    csvs[i].second->close();
+    if (!*csvs[i].second) throw CliError("cannot write " + csvs[i].first);
+    std::cout << "wrote " << csvs[i].first << '\n';
+  }
+  if (seedCsv) {
+    for (size_t i = 0; i < tables.size(); ++i) tables[i].writeSeedCsv(*seedCsv, i == 0);
+    seedCsv->close();
+    std::cout << "wrote " << seedCsvPath << '\n';
+  }
+  if (markdown) {
+    *markdown << "# nxtmap experiments: " << suite.tsvPath << "\n\n"
+              << "Ours beside the thesis's published figures (Appendix A). Time in cell units (one per cell "
+                 "moved and per 90 degree turn); detected % = occupied cells mapped of those observable from "
+                 "the reachable free space.\n\n";
+    for (const report::ExperimentTable& t : tables) {
+      t.writeMarkdown(*markdown);
+      *markdown << '\n';
+    }
+    markdown->close();
+    if (!*markdown) throw CliError("cannot write " + o.markdown);
+    std::cout << "wrote " << o.markdown << '\n';
+  }
+  if (!o.plots.empty()) {
+    std::vector<std::string> written;
+    std::string error;
+    if (!report::writePlots(o.plots, tables, written, error)) throw CliError(error);
+    for (const std::string& w : written) std::cout << "wrote " << w << '\n';
+  }
+  return kExitOk;
+}
+
+}  // namespace nxtmap::cli

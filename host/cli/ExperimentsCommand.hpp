@@ -1,0 +1,27 @@
+// `nxtmap experiments DIR ...`: every run of DIR/scenarios.tsv, side by side with the published
+// figures; optional CSV, Markdown and gnuplot figures.
+#pragma once
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace nxtmap::cli {
+
+struct ExperimentsOptions {
+  std::string dir;
+  std::string csv;       // --strategy both: FILE-<strategy>.csv per strategy
+  std::string markdown;
+  std::string plots;     // directory
+  std::string noise = "none";
+  int seeds = 1;
+  std::string strategy = "propagation";  // or frontier, both
+};
+
+CLI::App* addExperimentsCommand(CLI::App& app, ExperimentsOptions& options);
+
+// Runs it; throws CliError on bad input. Returns the exit code.
+int runExperiments(const ExperimentsOptions& options);
+
+}  // namespace nxtmap::cli

@@ -1,0 +1,158 @@
+#include "host/cli/SimCommand.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+#include "host/cli/Args.hpp"
+#include "host/cli/Errors.hpp"
+#include "host/mapping/MapScore.hpp"
+#include "host/mapping/MappingRun.hpp"
+#include "host/report/ExperimentTable.hpp"
+#include "host/report/MapImage.hpp"
+#include "host/report/MapText.hpp"
+
+namespace nxtmap::cli {
+namespace {
+enum class Show { Live, Final, None };
+
+Show parseShow(const std::string& text) {
+  if (text == "live") return Show::Live;
+  if (text == "final") return Show::Final;
+  if (text == "none") return Show::None;
+  throw CliError("--show must be one of live, final, none, not '" + text + "'");
+}
+
+const char* endName(ExplorerEnd e) {
+  switch (e) {
+    case ExplorerEnd::Running: return "running";
+    case ExplorerEnd::Complete: return "complete";
+    case ExplorerEnd::GridFull: return "grid full";
+    case ExplorerEnd::ActionLimit: return "action limit reached";
+  }
+  return "?";
+}
+
+std::string statusLine(const mapping::MappingRun& run) {
+  std::ostringstream o;
+  const Counters& c = run.counters();
+  o << mapping::strategyName(run.config().strategy);
+  if (const PropagationExplorer* p = run.propagation()) {
+    o << " | ";
+    if (run.finished())
+      o << "done";
+    else if (p->sweeping())
+      o << "sweep";
+    else
+      o << propagationName(p->current());
+    o << ", " << p->recordCount() << " propagations";
+    if (p->recordCount() > 0) {
+      o << " (last: " << outcomeName(p->record(static_cast<uint16_t>(p->recordCount() - 1)).outcome) << ")";
+    }
+  } else if (run.finished()) {
+    o << " | done";
+  }
+  o << " | time " << report::formatNumber(c.timeHalfUnits() / 2.0, 1) << " | sensor reads " << c.sensorRequests
+    << " | cells " << c.cellsMoved;
+  return o.str();
+}
+
+void drawFrame(const mapping::MappingRun& run, const report::MapTextOptions& textOptions, bool first) {
+  std::string frame = first ? "\x1b[2J\x1b[H" : "\x1b[H";
+  frame += report::renderMapText(run, textOptions);
+  frame += statusLine(run);
+  frame += "\x1b[K\n\x1b[J";
+  std::cout << frame << std::flush;
+}
+}  // namespace
+
+CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
+  CLI::App* sim = app.add_subcommand("sim", "one mapping run in the simulator");
+  sim->add_option("world", o.world, "world file: Moving AI .map or ROS map_server .yaml")->required();
+  sim->add_option("--start", o.start, "start cell COL,ROW (col right, row down from the top-left)")->required();
+  sim->add_option("--heading", o.heading, "initial heading N, E, S or W (default N)");
+  sim->add_option("--range-m", o.rangeM, "trusted maximum sensor range in metres (default 1)");
+  sim->add_option("--noise", o.noise, "noise profile: none, typical, harsh (default none)");
+  sim->add_option("--seed", o.seed, "random seed of the noise (default 1)");
+  sim->add_option("--strategy", o.strategy, "exploration strategy: propagation, frontier (default propagation)");
+  sim->add_option("--show", o.show, "display: live, final, none (default final)");
+  sim->add_option("--delay-ms", o.delayMs, "live mode: delay per frame in ms (default 30)");
+  sim->add_option("--png", o.png, "write a PNG of the final map (missed obstacles light red, wrong cells orange)");
+  return sim;
+}
+
+int runSim(const SimOptions& o) {
+  mapping::RunConfig config;
+  const CellArg start = parseCell(o.start, "--start");
+  config.startCol = start.col;
+  config.startRow = start.row;
+  config.heading = parseHeading(o.heading);
+  config.rangeM = checkRangeM(o.rangeM);
+  config.noise = parseNoise(o.noise);
+  config.seed = parseSeed(o.seed);
+  config.strategy = parseStrategy(o.strategy);
+  const Show show = parseShow(o.show);
+  if (o.delayMs < 0 || o.delayMs > 10000) {
+    throw CliError("--delay-ms must lie in 0..10000, not " + std::to_string(o.delayMs));
+  }
+  const sim::World world = loadWorld(o.world);
+  checkStart(world, config.startCol, config.startRow, "");
+
+  report::MapTextOptions textOptions;
+  textOptions.color = colorWanted();
+  mapping::MappingRun run(world, config);
+  if (show == Show::Live) {
+    drawFrame(run, textOptions, true);
+    while (!run.finished()) {
+      const Action::Kind kind = run.lastAction().kind;
+      run.step();
+      // Redraw when the robot moved or turned (reads alone would make the display crawl).
+      if (kind == Action::Kind::Move || kind == Action::Kind::Turn || run.finished()) {
+        drawFrame(run, textOptions, false);
+        if (o.delayMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(o.delayMs));
+      }
+    }
+  } else {
+    run.runToEnd();
+    if (show == Show::Final) {
+      std::cout << report::renderMapText(run, textOptions) << statusLine(run) << '\n';
+    }
+  }
+
+  const Counters& c = run.counters();
+  const mapping::MapScore s = mapping::scoreRun(run);
+  auto num = [](double v) { return report::formatNumber(v, 1); };
+  std::ostringstream out;
+  out << "\nrun              " << world.name() << " " << world.width() << "x" << world.height() << ", start "
+      << config.startCol << "," << config.startRow << " heading " << o.heading << ", strategy "
+      << mapping::strategyName(config.strategy) << ", noise " << config.noise.name << ", seed " << config.seed
+      << ", range " << report::formatNumber(config.rangeM) << " m\n"
+      << "end              " << endName(run.explorer().end()) << "\n"
+      << "time units       " << report::formatNumber(c.timeHalfUnits() / 2.0, 1) << "\n"
+      << "sensor requests  " << c.sensorRequests << "\n"
+      << "raw samples      " << c.rawSamples << "\n"
+      << "cells moved      " << c.cellsMoved << "\n"
+      << "turns            " << report::formatNumber(c.turnEighths / 2.0, 1) << " x 90 deg\n"
+      << "blocked moves    " << c.blockedMoves << "\n"
+      << "detected         " << num(s.detectedPct()) << " % of the observable occupied cells ("
+      << s.detectedOccupied << " of " << s.observableOccupied << ")\n"
+      << "found/actual occ " << num(s.seedPerformancePct()) << " % (" << s.foundOccupied << " of "
+      << s.actualOccupied << ", the thesis's performance)\n"
+      << "wrong cells      " << s.wrongCells << "\n"
+      << "unknown cells    " << s.unknown << " (" << s.unknownObservable << " of them observable)\n"
+      << "free cells       " << s.foundFree << " found of " << s.actualFree << "\n";
+  std::cout << out.str() << std::flush;
+
+  if (!o.png.empty()) {
+    std::string error;
+    if (!report::writeMapPng(o.png, run, report::MapImageOptions{}, error)) throw CliError(error);
+    std::cout << "wrote " << o.png << "\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace nxtmap::cli

@@ -1,0 +1,32 @@
+// `nxtmap sim WORLD --start C,R ...`: one mapping run in the simulator, shown live or at the end,
+// then its counters and its score against the world.
+#pragma once
+#include <cstdint>
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace nxtmap::cli {
+
+struct SimOptions {
+  std::string world;
+  std::string start;
+  std::string heading = "N";
+  double rangeM = 1.0;
+  std::string noise = "none";
+  std::string seed = "1";
+  std::string strategy = "propagation";
+  std::string show = "final";  // live | final | none
+  int delayMs = 30;            // live frame delay
+  std::string png;             // optional PNG of the final map
+};
+
+// Registers the subcommand; the options are filled in by CLI11.
+CLI::App* addSimCommand(CLI::App& app, SimOptions& options);
+
+// Runs it; throws CliError on bad input. Returns the exit code.
+int runSim(const SimOptions& options);
+
+}  // namespace nxtmap::cli

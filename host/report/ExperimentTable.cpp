@@ -1,0 +1,293 @@
+#include "host/report/ExperimentTable.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace nxtmap::report {
+namespace {
+constexpr int kColumns = 11;
+const char* const kColumnNames[kColumns] = {"id",           "map",           "start_col",      "start_row",
+                                            "seed_x_m",     "seed_z_m",      "occupied_cells", "seed_unknowns",
+                                            "seed_time_units", "seed_sensor_count", "seed_detected_pct"};
+
+std::vector<std::string> splitTabs(const std::string& line) {
+  std::vector<std::string> out;
+  std::string::size_type from = 0;
+  while (true) {
+    const auto tab = line.find('\t', from);
+    out.push_back(line.substr(from, tab == std::string::npos ? std::string::npos : tab - from));
+    if (tab == std::string::npos) break;
+    from = tab + 1;
+  }
+  return out;
+}
+
+bool parseInt(const std::string& s, int& v) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  const long x = std::strtol(s.c_str(), &end, 10);
+  if (errno != 0 || *end != '\0' || x < std::numeric_limits<int>::min() || x > std::numeric_limits<int>::max())
+    return false;
+  v = static_cast<int>(x);
+  return true;
+}
+
+bool parseDouble(const std::string& s, double& v) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  v = std::strtod(s.c_str(), &end);
+  return errno == 0 && *end == '\0' && std::isfinite(v);
+}
+
+std::string pad(const std::string& s, size_t width, bool right) {
+  if (s.size() >= width) return s;
+  return right ? std::string(width - s.size(), ' ') + s : s + std::string(width - s.size(), ' ');
+}
+
+std::string ratio(double ours, double published) {
+  if (published == 0) return "-";
+  return formatNumber(ours / published, 2) + "x";
+}
+}  // namespace
+
+ScenarioLoad loadScenarios(const std::string& tsvPath) {
+  ScenarioLoad load;
+  std::ifstream in(tsvPath);
+  if (!in) {
+    load.error = tsvPath + ": cannot open the scenario table";
+    return load;
+  }
+  const std::filesystem::path dir = std::filesystem::path(tsvPath).parent_path();
+  std::string line;
+  int lineNo = 0;
+  auto fail = [&](const std::string& what) {
+    load.scenarios.clear();
+    load.error = tsvPath + " line " + std::to_string(lineNo) + ": " + what;
+    return load;
+  };
+  while (std::getline(in, line)) {
+    ++lineNo;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos || line[0] == '#') continue;
+    const std::vector<std::string> f = splitTabs(line);
+    if (f.size() != kColumns) {
+      return fail("expected " + std::to_string(kColumns) + " tab-separated columns, found " +
+                  std::to_string(f.size()));
+    }
+    Scenario s;
+    s.line = lineNo;
+    s.id = f[0];
+    s.map = f[1];
+    if (s.id.empty()) return fail("empty id");
+    if (s.map.empty()) return fail("empty map");
+    bool ok = parseInt(f[2], s.startCol) && parseInt(f[3], s.startRow);
+    if (!ok) return fail("start_col/start_row must be integers, found '" + f[2] + "', '" + f[3] + "'");
+    const struct {
+      int index;
+      double* target;
+    } doubles[] = {{4, &s.seedXM}, {5, &s.seedZM}, {8, &s.seedTimeUnits}, {10, &s.seedDetectedPct}};
+    for (const auto& d : doubles) {
+      if (!parseDouble(f[static_cast<size_t>(d.index)], *d.target))
+        return fail(std::string(kColumnNames[d.index]) + " must be a number, found '" +
+                    f[static_cast<size_t>(d.index)] + "'");
+    }
+    const struct {
+      int index;
+      int* target;
+    } ints[] = {{6, &s.occupiedCells}, {7, &s.seedUnknowns}, {9, &s.seedSensorCount}};
+    for (const auto& d : ints) {
+      if (!parseInt(f[static_cast<size_t>(d.index)], *d.target))
+        return fail(std::string(kColumnNames[d.index]) + " must be an integer, found '" +
+                    f[static_cast<size_t>(d.index)] + "'");
+    }
+    for (const Scenario& other : load.scenarios) {
+      if (other.id == s.id) return fail("duplicate id '" + s.id + "' (first on line " + std::to_string(other.line) + ")");
+    }
+    const std::filesystem::path mp(s.map);
+    s.mapPath = (mp.is_absolute() || dir.empty()) ? mp.string() : (dir / mp).string();
+    load.scenarios.push_back(std::move(s));
+  }
+  if (load.scenarios.empty()) {
+    load.error = tsvPath + ": no scenarios in the table";
+  }
+  return load;
+}
+
+void ExperimentRow::summarize() {
+  mean = RunResult{};
+  if (perSeed.empty()) return;
+  const double n = static_cast<double>(perSeed.size());
+  minDetectedPct = perSeed.front().detectedPct;
+  maxWrongCells = perSeed.front().wrongCells;
+  mean.complete = true;
+  for (const RunResult& r : perSeed) {
+    mean.actualFree += r.actualFree / n;
+    mean.foundFree += r.foundFree / n;
+    mean.actualOccupied += r.actualOccupied / n;
+    mean.foundOccupied += r.foundOccupied / n;
+    mean.unknown += r.unknown / n;
+    mean.unknownObservable += r.unknownObservable / n;
+    mean.wrongCells += r.wrongCells / n;
+    mean.detectedPct += r.detectedPct / n;
+    mean.performancePct += r.performancePct / n;
+    mean.timeUnits += r.timeUnits / n;
+    mean.sensorReads += r.sensorReads / n;
+    mean.roomCells = r.roomCells;
+    mean.complete = mean.complete && r.complete;
+    minDetectedPct = std::min(minDetectedPct, r.detectedPct);
+    maxWrongCells = std::max(maxWrongCells, r.wrongCells);
+  }
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2.0;
+}
+
+std::string formatNumber(double value, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
+  std::string s = buf;
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  if (s == "-0") s = "0";
+  return s;
+}
+
+namespace {
+template <typename F>
+double medianOf(const std::vector<ExperimentRow>& rows, F field) {
+  std::vector<double> v;
+  v.reserve(rows.size());
+  for (const ExperimentRow& r : rows) v.push_back(field(r));
+  return median(v);
+}
+}  // namespace
+
+double ExperimentTable::medianTimeUnits() const {
+  return medianOf(rows, [](const ExperimentRow& r) { return r.mean.timeUnits; });
+}
+double ExperimentTable::medianSensorReads() const {
+  return medianOf(rows, [](const ExperimentRow& r) { return r.mean.sensorReads; });
+}
+double ExperimentTable::medianUnknown() const {
+  return medianOf(rows, [](const ExperimentRow& r) { return r.mean.unknown; });
+}
+double ExperimentTable::publishedMedianTimeUnits() const {
+  return medianOf(rows, [](const ExperimentRow& r) { return r.scenario.seedTimeUnits; });
+}
+double ExperimentTable::publishedMedianSensorReads() const {
+  return medianOf(rows, [](const ExperimentRow& r) { return static_cast<double>(r.scenario.seedSensorCount); });
+}
+double ExperimentTable::publishedMedianUnknowns() const {
+  return medianOf(rows, [](const ExperimentRow& r) { return static_cast<double>(r.scenario.seedUnknowns); });
+}
+
+const char* ExperimentTable::csvHeader() {
+  return "id,actual_free,found_free,actual_occupied,found_occupied,unknown,wrong_cells,detected_pct,time_units,"
+         "sensor_reads,seed_time_units,seed_sensor_count,seed_detected_pct";
+}
+
+void ExperimentTable::writeCsv(std::ostream& out) const {
+  out << csvHeader() << '\n';
+  for (const ExperimentRow& r : rows) {
+    const RunResult& m = r.mean;
+    const Scenario& s = r.scenario;
+    out << s.id << ',' << formatNumber(m.actualFree) << ',' << formatNumber(m.foundFree) << ','
+        << formatNumber(m.actualOccupied) << ',' << formatNumber(m.foundOccupied) << ',' << formatNumber(m.unknown)
+        << ',' << formatNumber(m.wrongCells) << ',' << formatNumber(m.detectedPct) << ','
+        << formatNumber(m.timeUnits) << ',' << formatNumber(m.sensorReads) << ',' << formatNumber(s.seedTimeUnits)
+        << ',' << s.seedSensorCount << ',' << formatNumber(s.seedDetectedPct) << '\n';
+  }
+}
+
+void ExperimentTable::writeSeedCsv(std::ostream& out, bool header) const {
+  if (header) {
+    out << "id,strategy,noise,seed,actual_free,found_free,actual_occupied,found_occupied,unknown,"
+           "unknown_observable,wrong_cells,detected_pct,performance_pct,time_units,sensor_reads,complete\n";
+  }
+  for (const ExperimentRow& r : rows) {
+    for (size_t i = 0; i < r.perSeed.size(); ++i) {
+      const RunResult& m = r.perSeed[i];
+      out << r.scenario.id << ',' << strategy << ',' << noise << ',' << (i + 1) << ',' << formatNumber(m.actualFree)
+          << ',' << formatNumber(m.foundFree) << ',' << formatNumber(m.actualOccupied) << ','
+          << formatNumber(m.foundOccupied) << ',' << formatNumber(m.unknown) << ','
+          << formatNumber(m.unknownObservable) << ',' << formatNumber(m.wrongCells) << ','
+          << formatNumber(m.detectedPct) << ',' << formatNumber(m.performancePct) << ','
+          << formatNumber(m.timeUnits) << ',' << formatNumber(m.sensorReads) << ',' << (m.complete ? 1 : 0)
+          << '\n';
+    }
+  }
+}
+
+void ExperimentTable::writeMarkdown(std::ostream& out) const {
+  out << "### Strategy `" << strategy << "`, noise `" << noise << "`";
+  if (seeds > 1) out << ", mean of " << seeds << " seeds";
+  out << "\n\n";
+  out << "| run | occupied | time units | published | sensor reads | published | unknown | published "
+         "| detected % | published | wrong cells |\n";
+  out << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+  for (const ExperimentRow& r : rows) {
+    const RunResult& m = r.mean;
+    const Scenario& s = r.scenario;
+    out << "| " << s.id << " | " << s.occupiedCells << " | " << formatNumber(m.timeUnits) << " | "
+        << formatNumber(s.seedTimeUnits) << " | " << formatNumber(m.sensorReads) << " | " << s.seedSensorCount
+        << " | " << formatNumber(m.unknown) << " | " << s.seedUnknowns << " | " << formatNumber(m.detectedPct, 1)
+        << " | " << formatNumber(s.seedDetectedPct, 1) << " | " << formatNumber(m.wrongCells) << " |\n";
+  }
+  out << "| **median** | | **" << formatNumber(medianTimeUnits()) << "** | **"
+      << formatNumber(publishedMedianTimeUnits()) << "** | **" << formatNumber(medianSensorReads()) << "** | **"
+      << formatNumber(publishedMedianSensorReads()) << "** | **" << formatNumber(medianUnknown()) << "** | **"
+      << formatNumber(publishedMedianUnknowns()) << "** | | | |\n\n";
+  out << "Ours / published medians: time " << ratio(medianTimeUnits(), publishedMedianTimeUnits())
+      << ", sensor reads " << ratio(medianSensorReads(), publishedMedianSensorReads()) << ".\n";
+}
+
+void ExperimentTable::writeConsole(std::ostream& out) const {
+  out << "strategy " << strategy << ", noise " << noise;
+  if (seeds > 1) out << ", mean of " << seeds << " seeds";
+  out << "   (ours | published)\n";
+  const std::vector<std::pair<std::string, size_t>> cols = {
+      {"run", 16}, {"occ", 4}, {"time", 7}, {"pub", 6}, {"sensors", 8}, {"pub", 6},
+      {"unknown", 8}, {"pub", 4}, {"detect%", 8}, {"pub", 4}, {"wrong", 6}};
+  auto emit = [&](const std::vector<std::string>& cells) {
+    std::string line;
+    for (size_t i = 0; i < cols.size(); ++i) {
+      if (i > 0) line += (i == 2 || i == 4 || i == 6 || i == 8 || i == 10) ? " | " : " ";
+      line += pad(cells[i], cols[i].second, i != 0);
+    }
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    out << line << '\n';
+  };
+  std::vector<std::string> head;
+  for (const auto& c : cols) head.push_back(c.first);
+  emit(head);
+  for (const ExperimentRow& r : rows) {
+    const RunResult& m = r.mean;
+    const Scenario& s = r.scenario;
+    emit({s.id, std::to_string(s.occupiedCells), formatNumber(m.timeUnits, 1), formatNumber(s.seedTimeUnits, 1),
+          formatNumber(m.sensorReads, 1), std::to_string(s.seedSensorCount), formatNumber(m.unknown, 1),
+          std::to_string(s.seedUnknowns), formatNumber(m.detectedPct, 1), formatNumber(s.seedDetectedPct, 1),
+          formatNumber(m.wrongCells, 1)});
+  }
+  emit({"median", "", formatNumber(medianTimeUnits(), 1), formatNumber(publishedMedianTimeUnits(), 1),
+        formatNumber(medianSensorReads(), 1), formatNumber(publishedMedianSensorReads(), 1),
+        formatNumber(medianUnknown(), 1), formatNumber(publishedMedianUnknowns(), 1), "", "", ""});
+  out << "ours/published medians: time " << ratio(medianTimeUnits(), publishedMedianTimeUnits()) << ", sensor reads "
+      << ratio(medianSensorReads(), publishedMedianSensorReads()) << '\n';
+}
+
+}  // namespace nxtmap::report

@@ -1,0 +1,91 @@
+// ExperimentTable: the Appendix-A scenario list and the results of running it, side by side with
+// the published figures; writers for CSV, Markdown and the console.
+#pragma once
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace nxtmap::report {
+
+// The thesis's medians over the 18 runs (Chapter 5).
+constexpr double kPublishedMedianTimeUnits = 350.5;
+constexpr double kPublishedMedianSensorReads = 1143.5;
+
+// One line of scenarios.tsv.
+struct Scenario {
+  std::string id;
+  std::string map;      // as written in the table
+  std::string mapPath;  // resolved against the table's directory
+  int line = 0;         // line number in the table (1 = first line)
+  int startCol = 0, startRow = 0;
+  double seedXM = 0, seedZM = 0;
+  int occupiedCells = 0;
+  int seedUnknowns = 0;
+  double seedTimeUnits = 0;
+  int seedSensorCount = 0;
+  double seedDetectedPct = 0;
+  bool isOccupancyRun() const { return id.rfind("occ", 0) == 0; }
+  bool isStartRun() const { return id.rfind("start", 0) == 0; }
+};
+
+struct ScenarioLoad {
+  std::vector<Scenario> scenarios;
+  std::string error;  // empty on success; names the file and line otherwise
+};
+
+// Reads a tab-separated scenario table ('#' lines are comments, blank lines skipped).
+ScenarioLoad loadScenarios(const std::string& tsvPath);
+
+// The figures of one mapping run.
+struct RunResult {
+  double actualFree = 0, foundFree = 0, actualOccupied = 0, foundOccupied = 0;
+  double unknown = 0, unknownObservable = 0, wrongCells = 0;
+  double detectedPct = 0;     // detected / observable occupied cells
+  double performancePct = 0;  // the thesis's found occupied / actual occupied
+  double timeUnits = 0, sensorReads = 0;
+  double roomCells = 0;       // world width * height
+  bool complete = true;       // the explorer finished normally
+};
+
+// One scenario's results: the mean over the seeds plus the spread.
+struct ExperimentRow {
+  Scenario scenario;
+  std::vector<RunResult> perSeed;  // seeds 1..N in order
+  RunResult mean;
+  double minDetectedPct = 0;
+  double maxWrongCells = 0;
+  // Fills mean/min/max from perSeed.
+  void summarize();
+};
+
+double median(std::vector<double> values);
+// Shortest decimal form with at most `decimals` places: 294, 294.5, 97.87.
+std::string formatNumber(double value, int decimals = 2);
+
+// The results of one strategy over the scenario table.
+struct ExperimentTable {
+  std::string strategy;
+  std::string noise = "none";
+  int seeds = 1;
+  std::vector<ExperimentRow> rows;
+
+  double medianTimeUnits() const;
+  double medianSensorReads() const;
+  double medianUnknown() const;
+  double publishedMedianTimeUnits() const;
+  double publishedMedianSensorReads() const;
+  double publishedMedianUnknowns() const;
+
+  // CSV header, exactly the published comparison columns.
+  static const char* csvHeader();
+  // One row per scenario (means over the seeds).
+  void writeCsv(std::ostream& out) const;
+  // Per-seed detail: id,strategy,seed,<figures>.
+  void writeSeedCsv(std::ostream& out, bool header = true) const;
+  // A Markdown table: ours beside the published figures, a medians row at the bottom.
+  void writeMarkdown(std::ostream& out) const;
+  // An aligned plain-text table for the console.
+  void writeConsole(std::ostream& out) const;
+};
+
+}  // namespace nxtmap::report

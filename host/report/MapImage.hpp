@@ -1,0 +1,38 @@
+// MapImage: a PNG picture of a run's belief (free white, unknown grey, occupied black, robot red),
+// optionally with the true world overlaid: missed obstacles light red, wrong cells orange.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace nxtmap::mapping {
+class MappingRun;
+}
+
+namespace nxtmap::report {
+
+struct MapImageOptions {
+  int cellPx = 8;            // pixels per cell side (1..64)
+  bool overlayTruth = true;  // mark missed obstacles and wrong cells against the world
+  bool gridLines = true;     // thin lines between cells (when cellPx >= 6)
+};
+
+// An 8-bit RGB picture, row-major, 3 bytes per pixel.
+struct RgbImage {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;
+  void fill(int x0, int y0, int w, int h, uint8_t r, uint8_t g, uint8_t b);
+  void pixel(int x, int y, uint8_t& r, uint8_t& g, uint8_t& b) const;
+};
+
+// The picture of the run's belief over its world's extent.
+RgbImage renderMapImage(const mapping::MappingRun& run, const MapImageOptions& options = {});
+
+// Writes an RGB PNG; false with `error` set when the file cannot be written.
+bool writePng(const std::string& path, const RgbImage& image, std::string& error);
+
+// renderMapImage + writePng.
+bool writeMapPng(const std::string& path, const mapping::MappingRun& run, const MapImageOptions& options,
+                 std::string& error);
+
+}  // namespace nxtmap::report

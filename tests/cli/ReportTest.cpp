@@ -1,0 +1,207 @@
+// Unit tests of the report library: the console map, the PNG map and the experiment table.
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "CliTestSupport.hpp"
+#include "host/mapping/MappingRun.hpp"
+#include "host/report/ExperimentTable.hpp"
+#include "host/report/MapImage.hpp"
+#include "host/report/MapText.hpp"
+
+namespace nxtmap::report {
+namespace {
+
+// A belief grid spelled with the display's own glyphs: ' ' free, '~' unknown, 'X' occupied.
+std::function<CellState(int, int)> grid(const std::vector<std::string>& rows) {
+  return [rows](int col, int row) {
+    const char c = rows[static_cast<size_t>(row)][static_cast<size_t>(col)];
+    return c == ' ' ? CellState::Free : c == 'X' ? CellState::Occupied : CellState::Unknown;
+  };
+}
+
+struct TextCase {
+  const char* name;
+  std::vector<std::string> cells;
+  std::optional<RobotMark> robot;
+  bool rulers;
+  std::string expected;
+};
+
+TEST(MapText, ExpectedStrings) {
+  const std::vector<TextCase> cases = {
+      {"tiny with robot facing east",
+       {"X~ ", "X  "},
+       RobotMark{1, 1, sim::Heading::E},
+       true,
+       "    012\n"
+       "   +---+\n"
+       " 0 |X~ |\n"
+       " 1 |X> |\n"
+       "   +---+\n"},
+      {"robot headings and no rulers",
+       {"  ", "  "},
+       RobotMark{0, 0, sim::Heading::W},
+       false,
+       "+--+\n"
+       "|< |\n"
+       "|  |\n"
+       "+--+\n"},
+      {"robot outside is not drawn",
+       {"~~"},
+       RobotMark{5, 5, sim::Heading::N},
+       false,
+       "+--+\n"
+       "|~~|\n"
+       "+--+\n"},
+      {"tens ruler from column 10",
+       {"XXXXXXXXXXXX"},
+       std::nullopt,
+       true,
+       "              11\n"
+       "    012345678901\n"
+       "   +------------+\n"
+       " 0 |XXXXXXXXXXXX|\n"
+       "   +------------+\n"},
+  };
+  for (const TextCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    MapTextOptions o;
+    o.rulers = c.rulers;
+    const int w = static_cast<int>(c.cells[0].size()), h = static_cast<int>(c.cells.size());
+    EXPECT_EQ(renderMapText(w, h, grid(c.cells), c.robot, o), c.expected);
+  }
+}
+
+TEST(MapText, RowLabelsWidenForTallMaps) {
+  std::vector<std::string> cells(101, " ");
+  const std::string text = renderMapText(1, 101, grid(cells), std::nullopt);
+  EXPECT_NE(text.find("\n100 | |\n"), std::string::npos);
+  EXPECT_NE(text.find("\n  7 | |\n"), std::string::npos);
+}
+
+TEST(MapText, Glyphs) {
+  EXPECT_EQ(headingGlyph(sim::Heading::N), '^');
+  EXPECT_EQ(headingGlyph(sim::Heading::E), '>');
+  EXPECT_EQ(headingGlyph(sim::Heading::S), 'v');
+  EXPECT_EQ(headingGlyph(sim::Heading::W), '<');
+  EXPECT_EQ(cellGlyph(CellState::Free), ' ');
+  EXPECT_EQ(cellGlyph(CellState::Unknown), '~');
+  EXPECT_EQ(cellGlyph(CellState::Occupied), 'X');
+}
+
+TEST(MapText, ColourWrapsCellsAndResets) {
+  MapTextOptions o;
+  o.color = true;
+  o.rulers = false;
+  const std::string text = renderMapText(3, 1, grid({"X~ "}), RobotMark{2, 0, sim::Heading::S}, o);
+  EXPECT_NE(text.find("\x1b[1;97mX"), std::string::npos) << text;
+  EXPECT_NE(text.find("\x1b[2m~"), std::string::npos) << text;
+  EXPECT_NE(text.find("\x1b[1;91mv"), std::string::npos) << text;
+  EXPECT_NE(text.find("\x1b[0m|"), std::string::npos) << text;
+}
+
+TEST(MapText, RenderedRunShowsRobotAndFrame) {
+  const sim::World world = sim::World::fromRows({"#######", "#.....#", "#..#..#", "#.....#", "#######"});
+  mapping::RunConfig config;
+  config.startCol = 1;
+  config.startRow = 3;
+  mapping::MappingRun run(world, config);
+  const std::string before = renderMapText(run, MapTextOptions{false, false});
+  EXPECT_NE(before.find('^'), std::string::npos) << before;
+  run.runToEnd();
+  const std::string after = renderMapText(run, MapTextOptions{false, false});
+  const std::vector<std::string> rows = cli::test::lines(after);
+  ASSERT_EQ(rows.size(), 7u) << after;
+  EXPECT_EQ(rows[0], "+-------+");
+  EXPECT_EQ(rows[3].substr(0, 4), "|X  ") << after;  // the middle obstacle is found
+  EXPECT_EQ(rows[3].substr(4, 1), "X") << after;
+
+  const RgbImage img = renderMapImage(run, MapImageOptions{4, true, false});
+  EXPECT_EQ(img.width, 28);
+  EXPECT_EQ(img.height, 20);
+  uint8_t r = 0, g = 0, b = 0;
+  img.pixel(3 * 4 + 2, 2 * 4 + 2, r, g, b);  // the obstacle in the middle: black
+  EXPECT_EQ(r + g + b, 0);
+  cli::test::TempDir tmp("img");
+  std::string error;
+  ASSERT_TRUE(writePng(tmp.path("m.png"), img, error)) << error;
+  EXPECT_EQ(cli::test::readFile(tmp.path("m.png")).substr(1, 3), "PNG");
+  EXPECT_FALSE(writePng(tmp.path("no/dir/m.png"), img, error));
+  EXPECT_FALSE(error.empty());
+}
+
+TEST(ExperimentTable, NumbersAndMedians) {
+  EXPECT_EQ(formatNumber(294), "294");
+  EXPECT_EQ(formatNumber(294.5), "294.5");
+  EXPECT_EQ(formatNumber(97.8666), "97.87");
+  EXPECT_EQ(formatNumber(-0.0001), "0");
+  EXPECT_DOUBLE_EQ(median({3, 1, 2}), 2);
+  EXPECT_DOUBLE_EQ(median({4, 1, 2, 3}), 2.5);
+  EXPECT_DOUBLE_EQ(median({}), 0);
+}
+
+TEST(ExperimentTable, PublishedMediansOfTheTable) {
+  const ScenarioLoad load = loadScenarios(cli::test::sourcePath("worlds/seed-appendix-a/scenarios.tsv"));
+  ASSERT_TRUE(load.error.empty()) << load.error;
+  ASSERT_EQ(load.scenarios.size(), 18u);
+  ExperimentTable t;
+  for (const Scenario& s : load.scenarios) {
+    ExperimentRow row;
+    row.scenario = s;
+    t.rows.push_back(row);
+  }
+  EXPECT_DOUBLE_EQ(t.publishedMedianTimeUnits(), kPublishedMedianTimeUnits);
+  EXPECT_DOUBLE_EQ(t.publishedMedianSensorReads(), kPublishedMedianSensorReads);
+  EXPECT_EQ(load.scenarios[9].id, "start-0.95+0.95");
+  EXPECT_TRUE(load.scenarios[9].isStartRun());
+  EXPECT_TRUE(load.scenarios[0].isOccupancyRun());
+}
+
+TEST(ExperimentTable, CsvColumnsAndMeans) {
+  ExperimentTable t;
+  ExperimentRow row;
+  row.scenario.id = "occ1";
+  row.scenario.seedTimeUnits = 294;
+  row.scenario.seedSensorCount = 1189;
+  row.scenario.seedDetectedPct = 100;
+  RunResult a, b;
+  a.timeUnits = 100;
+  b.timeUnits = 101;
+  a.detectedPct = 100;
+  b.detectedPct = 90;
+  a.wrongCells = 0;
+  b.wrongCells = 3;
+  row.perSeed = {a, b};
+  row.summarize();
+  EXPECT_DOUBLE_EQ(row.mean.timeUnits, 100.5);
+  EXPECT_DOUBLE_EQ(row.minDetectedPct, 90);
+  EXPECT_DOUBLE_EQ(row.maxWrongCells, 3);
+  t.rows.push_back(row);
+  std::ostringstream csv;
+  t.writeCsv(csv);
+  const std::vector<std::string> rows = cli::test::lines(csv.str());
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0], ExperimentTable::csvHeader());
+  EXPECT_EQ(rows[1], "occ1,0,0,0,0,0,1.5,95,100.5,0,294,1189,100");
+}
+
+TEST(ExperimentTable, MalformedLinesAreNamed) {
+  cli::test::TempDir tmp("tsv");
+  const std::string path = tmp.write("s.tsv", "# header\n\nocc1\tm.map\t1\t2\t0\t0\t1\t1\t1\t1\t1\nocc2\tm.map\t1\n");
+  const ScenarioLoad load = loadScenarios(path);
+  EXPECT_TRUE(load.scenarios.empty());
+  EXPECT_NE(load.error.find("line 4"), std::string::npos) << load.error;
+  const ScenarioLoad dup = loadScenarios(
+      tmp.write("d.tsv", "a\tm.map\t1\t2\t0\t0\t1\t1\t1\t1\t1\na\tm.map\t1\t2\t0\t0\t1\t1\t1\t1\t1\n"));
+  EXPECT_NE(dup.error.find("duplicate"), std::string::npos) << dup.error;
+  const ScenarioLoad ok = loadScenarios(tmp.write("ok.tsv", "a\tm.map\t1\t2\t0\t0\t1\t1\t1.5\t1\t1\r\n"));
+  ASSERT_TRUE(ok.error.empty()) << ok.error;
+  EXPECT_EQ(ok.scenarios[0].mapPath, tmp.path("m.map"));
+  EXPECT_DOUBLE_EQ(ok.scenarios[0].seedTimeUnits, 1.5);
+}
+
+}  // namespace
+}  // namespace nxtmap::report
