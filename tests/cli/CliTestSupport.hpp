@@ -1,5 +1,6 @@
 // Helpers for the console tests: running the built nxtmap binary and a private temp directory.
 #pragma once
+#include "tests/support/TempDir.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -36,33 +37,7 @@ inline std::string shellQuote(const std::string& s) {
   return q + "'";
 }
 
-// A private temporary directory, removed with everything in it when the object goes away.
-class TempDir {
- public:
-  explicit TempDir(const std::string& tag = "t")
-      : dir_(std::filesystem::temp_directory_path() /
-             ("nxtmap_cli_" + std::to_string(::getpid()) + "_" + tag)) {
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(dir_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  std::string path(const std::string& name = "") const { return name.empty() ? dir_.string() : (dir_ / name).string(); }
-  std::string write(const std::string& name, const std::string& content) const {
-    const auto p = dir_ / name;
-    std::filesystem::create_directories(p.parent_path());
-    std::ofstream(p, std::ios::binary) << content;
-    return p.string();
-  }
-
- private:
-  std::filesystem::path dir_;
-};
+using ::nxtmap::test::TempDir;
 
 struct RunOutput {
   int exitCode = -1;
