@@ -1,4 +1,4 @@
-// astar and jps reproduce the published Moving AI optima (within 1e-3) on a sample of every scenario
+// astar, jps and jps+ reproduce the published Moving AI optima (within 1e-3) on a sample of every scenario
 // file in worlds/movingai (the first problem of each sampled bucket; `make bench` runs them all).
 #include <gtest/gtest.h>
 
@@ -27,6 +27,7 @@ TEST(MovingAi, SampleOfEveryScenarioFileMatchesThePublishedOptimum) {
                                 {"worlds/movingai/street/Berlin_0_512.map", 8}};
   auto astar = makePlanner(Algorithm::AStar);
   auto jps = makePlanner(Algorithm::Jps);
+  auto jpsPlus = makePlanner(Algorithm::JpsPlus);
   for (const ScenarioFile& f : files) {
     const mapio::MapLoad map = mapio::loadMap(source(f.map));
     ASSERT_TRUE(map.map) << map.error;
@@ -41,7 +42,7 @@ TEST(MovingAi, SampleOfEveryScenarioFileMatchesThePublishedOptimum) {
     }
     ASSERT_GE(sample.size(), 15u) << f.map;
     const Traversability grid(*map.map);
-    for (Planner* planner : {astar.get(), jps.get()}) {
+    for (Planner* planner : {astar.get(), jps.get(), jpsPlus.get()}) {
       const std::vector<ProblemOutcome> out = runProblems(*planner, grid, sample);
       for (size_t i = 0; i < sample.size(); ++i) {
         EXPECT_TRUE(out[i].matches) << f.map << " " << algorithmName(planner->algorithm()) << " bucket "
