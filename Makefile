@@ -50,7 +50,7 @@ demo: host
 	$(HOST_DIR)/host/cli/nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live --delay-ms 40
 
 bench: host
-	$(HOST_DIR)/host/bench/nxtmap-bench
+	NXTMAP_PEER_DIR=$(BUILD)/peer $(HOST_DIR)/host/bench/nxtmap-bench
 
 clean:
 	rm -rf $(BUILD)
