@@ -27,6 +27,7 @@ class SoftI2c {
     readCount_ = 0;
     outPos_ = 0;
     reading_ = false;
+    nacked_ = false;
     address7_ = address7;
     phase_ = Phase::Start;
     sub_ = 0;
@@ -70,7 +71,7 @@ class SoftI2c {
         else {
           const bool nack = p.sda();
           p.scl(false);
-          if (nack) { result_ = Result::Nack; next(Phase::Stop); return; }
+          if (nack) { nacked_ = true; next(Phase::Stop); return; }
           afterByteWritten();
           return;
         }
@@ -124,7 +125,7 @@ class SoftI2c {
         else if (sub_ == 1) p.scl(true);
         else {
           p.sdaDrive(true);
-          if (result_ == Result::Busy) result_ = Result::Done;
+          result_ = nacked_ ? Result::Nack : Result::Done;  // the bus is free again
           return;
         }
         ++sub_;
@@ -154,6 +155,7 @@ class SoftI2c {
   uint8_t outLen_ = 0, outPos_ = 0, readLen_ = 0, readCount_ = 0, address7_ = 0;
   uint8_t byte_ = 0, bit_ = 0, sub_ = 0;
   bool reading_ = false;
+  bool nacked_ = false;  // a NACK ends the transaction with a STOP
   Phase phase_ = Phase::Start;
   volatile Result result_ = Result::Idle;
 };
