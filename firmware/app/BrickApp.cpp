@@ -9,7 +9,8 @@ namespace nxtmap::fw {
 namespace {
 constexpr TachoDecoder::Pins kTachoPins[TachoDecoder::kMotors] = {
     {reg::kPinTachoA, reg::kPinDirA}, {reg::kPinTachoB, reg::kPinDirB}, {reg::kPinTachoC, reg::kPinDirC}};
-constexpr uint32_t kDrawPeriodMs = 250;
+constexpr uint32_t kBlinkMs = 500;      // robot pixel blink and status refresh
+constexpr uint32_t kMapRedrawMs = 500;   // the map is redrawn at most this often, and only when it changed
 constexpr uint32_t kButtonStableMs = 50;
 constexpr uint16_t kAvrSilentTripMs = 100;
 constexpr uint32_t kSoftI2cTickRc = reg::kMck / 2 / 28800;  // 3 ticks per bit at 9600 bit/s
@@ -118,6 +119,7 @@ void BrickApp::startExploring(Strategy s) {
   tacho_.clearFault();
   if (explorer_ == nullptr || explorer_->finished()) {
     map_.clear();
+    mapDirty_ = true;
     if (s == Strategy::Frontier) explorer_ = new (explorerBuf_) FrontierExplorer(map_, planner_, explorerConfig_);
     else explorer_ = new (explorerBuf_) PropagationExplorer(map_, planner_, explorerConfig_);
     runner_.begin(explorer_->step(Event::start()), wheels(), ms_);
@@ -138,10 +140,12 @@ void BrickApp::newRoom() {
   stop();
   explorer_ = nullptr;
   map_.clear();
+  mapDirty_ = true;
   mode_ = Mode::Idle;
 }
 
 Action BrickApp::feed(const Event& e) {
+  mapDirty_ = true;
   if (e.kind == Event::Kind::Range) return nxtmapSensorUpdate(explorer_, &e);
   return explorer_->step(e);
 }
@@ -186,11 +190,17 @@ void BrickApp::readButtons(uint32_t now) {
 }
 
 void BrickApp::draw(uint32_t now) {
-  if (now - lastDrawMs_ < kDrawPeriodMs) return;
+  if (now - lastDrawMs_ < kBlinkMs) return;
   lastDrawMs_ = now;
   blink_ = !blink_;
   const Pose pose = explorer_ != nullptr ? explorer_->pose() : Pose{};
-  screen_.drawMap(map_.grid(), pose.cell, pose.heading, blink_);
+  if (mapDirty_ && now - lastMapDrawMs_ >= kMapRedrawMs) {
+    screen_.drawMap(map_.grid(), pose.cell, pose.heading, blink_);
+    mapDirty_ = false;
+    lastMapDrawMs_ = now;
+  } else {
+    screen_.drawRobot(map_.grid(), pose.cell, blink_);
+  }
   const int x = Screen::kTextX;
   static const char* const kModes[] = {"IDLE", "RUN", "DONE", "STOP"};
   screen_.clearLine(0);
@@ -247,11 +257,17 @@ void BrickApp::loopOnce() {
 
 void BrickApp::run() {
   nxtmapIrqEnable();
+  uint32_t last = ms_ - 1;
   for (;;) {
-    const uint32_t before = ms_;
-    loopOnce();
-    // Nothing new happened during the pass: stop the processor clock until the next interrupt.
-    if (ms_ == before) bus_.write(reg::kPmcScdr, 1u);
+    // One pass per millisecond tick, or sooner when radio bytes wait; the byte-by-byte TWI and
+    // soft-I2C interrupts in between need no pass.
+    const uint32_t now = ms_;
+    if (now != last || bt_.rxPending()) {
+      last = now;
+      loopOnce();
+    }
+    // Nothing new: stop the processor clock until the next interrupt.
+    if (ms_ == last && !bt_.rxPending()) bus_.write(reg::kPmcScdr, 1u);
   }
 }
 

@@ -96,7 +96,8 @@ class BrickApp {
   Button lastButton_ = Button::None;
   Button candidate_ = Button::None;
   uint32_t candidateSince_ = 0;
-  uint32_t lastDrawMs_ = 0;
+  uint32_t lastDrawMs_ = 0, lastMapDrawMs_ = 0;
+  bool mapDirty_ = true;
   bool blink_ = false;
 };
 

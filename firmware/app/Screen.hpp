@@ -60,8 +60,7 @@ class Screen {
   // The room map: the grid's window (or the robot's neighbourhood while empty), north up.
   void drawMap(const RoomGrid& grid, Cell robot, Dir heading, bool blinkOn) {
     const Bounds w = grid.window();
-    const int16_t minX = w.empty() ? static_cast<int16_t>(robot.x - kMapSize / 2) : w.minX;
-    const int16_t minY = w.empty() ? static_cast<int16_t>(robot.y - kMapSize / 2) : w.minY;
+    const int16_t minX = originX(w, robot), minY = originY(w, robot);
     for (int py = 0; py < kMapSize; ++py) {
       for (int px = 0; px < kMapSize; ++px) {
         const Cell c{static_cast<int16_t>(minX + px), static_cast<int16_t>(minY + (kMapSize - 1 - py))};
@@ -76,12 +75,26 @@ class Screen {
     const int rx = robot.x - minX, ry = kMapSize - 1 - (robot.y - minY);
     if (rx >= 0 && rx < kMapSize && ry >= 0 && ry < kMapSize) {
       pixel(rx, ry, blinkOn);
-      pixel(rx + dx(heading), ry - dy(heading), true);
+      const int hx = rx + dx(heading), hy = ry - dy(heading);
+      if (hx >= 0 && hx < kMapSize && hy >= 0) pixel(hx, hy, true);
     }
     for (int y = 0; y < kHeight; ++y) pixel(kMapSize, y, true);  // separator
   }
+  // Only the robot's blinking pixel (cheap; between map redraws).
+  void drawRobot(const RoomGrid& grid, Cell robot, bool blinkOn) {
+    const Bounds w = grid.window();
+    const int rx = robot.x - originX(w, robot), ry = kMapSize - 1 - (robot.y - originY(w, robot));
+    if (rx >= 0 && rx < kMapSize && ry >= 0 && ry < kMapSize) pixel(rx, ry, blinkOn);
+  }
 
  private:
+  static int16_t originX(const Bounds& w, Cell robot) {
+    return w.empty() ? static_cast<int16_t>(robot.x - kMapSize / 2) : w.minX;
+  }
+  static int16_t originY(const Bounds& w, Cell robot) {
+    return w.empty() ? static_cast<int16_t>(robot.y - kMapSize / 2) : w.minY;
+  }
+
   Frame& f_;
 };
 

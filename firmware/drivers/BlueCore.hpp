@@ -99,6 +99,8 @@ class BlueCore {
     return true;
   }
   uint16_t txSpace() const { return tx_.space(); }
+  // Received bytes wait in the ring.
+  bool rxPending() const { return rx_.size() != 0; }
   // Counts stream sessions that ended (the PC must be treated as gone).
   uint32_t linkEpoch() const { return linkEpoch_; }
 
