@@ -4,6 +4,7 @@
 
 #include "common/check/Check.hpp"
 #include "firmware/app/Isr.hpp"
+#include "firmware/app/MapExport.hpp"
 
 namespace nxtmap::fw {
 namespace {
@@ -17,6 +18,15 @@ constexpr uint32_t kSoftI2cTickRc = reg::kMck / 2 / 28800;  // 3 ticks per bit a
 }  // namespace
 
 // Counts filtered readings fed to the explorer; the emulator times nxtmapSensorUpdate.
+// Run-end markers for the emulator: g_explorerDone turns 1 when the explorer reports Done, after
+// (in the NXTMAP_SIM_GEOMETRY image) the final map was copied to g_mapExport.
+extern "C" {
+volatile uint8_t g_explorerDone = 0;
+#if defined(NXTMAP_SIM_GEOMETRY)
+MapExport g_mapExport;
+#endif
+}
+
 // One sensor update: a filtered reading through the pilot into the explorer (marking rules and
 // the explorer's next decision).
 extern "C" {
@@ -221,11 +231,16 @@ void BrickApp::carryOut(const protocol::Command& c, uint32_t now) {
 void BrickApp::driveRobot(uint32_t now) {
   DriveEvent e;
   if (!runner_.poll(wheels(), now, e)) return;
+  driveMotors();  // the action is over: motors to rest before a possibly long explorer decision
   if (mode_ == Mode::Exploring) {
     pending_ = e.kind == DriveEvent::Kind::Range ? nxtmapSensorUpdate(pilot_, &e) : pilot_->step(e);
     mapDirty_ = true;
     if (pending_.kind == DriveAction::Kind::Done || pilot_->finished()) {
       mode_ = Mode::Done;
+#if defined(NXTMAP_SIM_GEOMETRY)
+      g_mapExport.fill(map_.grid());
+#endif
+      g_explorerDone = 1;
       return;
     }
     runner_.begin(pending_, wheels(), now);
