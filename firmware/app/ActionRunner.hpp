@@ -35,6 +35,7 @@ class ActionRunner {
   void begin(const DriveAction& a, Wheels now, uint32_t nowMs) {
     action_ = a;
     start_ = now;
+    target_ = now;
     switch (a.kind) {
       case DriveAction::Kind::Read:
         filter_.reset();
@@ -42,12 +43,14 @@ class ActionRunner {
         break;
       case DriveAction::Kind::Drive: {
         const int32_t c = drive_.countsForMm(a.value);
+        target_ = Wheels{now.left + c, now.right + c};
         motion_.start(now.left, now.right, c, c, nowMs);
         phase_ = Phase::Driving;
         break;
       }
       case DriveAction::Kind::Rotate: {
         const int32_t c = drive_.countsForMrad(a.value);
+        target_ = Wheels{now.left + c, now.right - c};
         motion_.start(now.left, now.right, c, -c, nowMs);
         phase_ = Phase::Rotating;
         break;
@@ -91,10 +94,34 @@ class ActionRunner {
     return false;
   }
 
-  // Stops whatever runs (motors to 0); no event.
+  // Stops whatever runs (motors to 0); no event. resume() can carry the same action on.
   void abort() {
     motion_.stop();
+    if (phase_ != Phase::Idle) interrupted_ = phase_;
     phase_ = Phase::Idle;
+  }
+  // Carries on an aborted action: a drive or rotation to the wheel counts it was aiming at (not
+  // its whole distance again), a reading from scratch; a drive that was already returning from
+  // an obstacle returns to its start. False when nothing was interrupted.
+  bool resume(Wheels now, uint32_t nowMs) {
+    const Phase p = interrupted_;
+    interrupted_ = Phase::Idle;
+    switch (p) {
+      case Phase::Idle:
+        return false;
+      case Phase::Reading:
+        filter_.reset();
+        break;
+      case Phase::Driving:
+      case Phase::Rotating:
+        motion_.start(now.left, now.right, target_.left - now.left, target_.right - now.right, nowMs);
+        break;
+      case Phase::Backing:
+        motion_.start(now.left, now.right, start_.left - now.left, start_.right - now.right, nowMs);
+        break;
+    }
+    phase_ = p;
+    return true;
   }
   int8_t power(int wheel) const { return motion_.power(wheel); }
 
@@ -111,6 +138,7 @@ class ActionRunner {
   bool finish(const DriveEvent& e, DriveEvent& out) {
     motion_.stop();
     phase_ = Phase::Idle;
+    interrupted_ = Phase::Idle;
     out = e;
     return true;
   }
@@ -122,8 +150,10 @@ class ActionRunner {
   uint8_t ports_[4] = {0, 1, 2, 3};
   DriveAction action_{};
   Wheels start_{0, 0};
+  Wheels target_{0, 0};
   uint32_t failedRotations_ = 0;
   Phase phase_ = Phase::Idle;
+  Phase interrupted_ = Phase::Idle;
 };
 
 }  // namespace nxtmap::fw

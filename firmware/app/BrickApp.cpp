@@ -150,8 +150,8 @@ void BrickApp::startExploring(Strategy s, uint32_t now) {
   tacho_.clearFault();
   follower_.abort();
   if (pilot_ != nullptr && !pilot_->finished() && !poseFromPath_) {
-    // Resume a stopped run: the action that was cut short is carried out again from its start.
-    runner_.begin(pending_, wheels(), now);
+    // Resume a stopped run: the action that was cut short carries on to where it was going.
+    if (!runner_.resume(wheels(), now)) runner_.begin(pending_, wheels(), now);
   } else {
     // A new run maps from where the robot stands: that spot is the new map's origin.
     map_.clear();

@@ -98,7 +98,7 @@ class BrickApp {
   Pilot* pilot_ = nullptr;
   ActionRunner runner_;
   PathFollower follower_{};
-  DriveAction pending_{};  // the action being carried out (re-issued when a stopped run resumes)
+  DriveAction pending_{};  // the action being carried out
   Pose restPose_{};  // where the robot stands when neither the explorer nor a path moved it last
   bool poseFromPath_ = false;
 

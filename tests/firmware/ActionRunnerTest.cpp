@@ -80,6 +80,42 @@ TEST(ActionRunner, ABlockedDriveReturnsToItsStartAndSaysSo) {
   EXPECT_NEAR(r.count[1], 0, 3);
 }
 
+TEST(ActionRunner, AStoppedDriveResumesToItsOriginalTarget) {
+  Robot r;
+  r.runner.begin(DriveAction::drive(200), r.wheels(), r.now);
+  DriveEvent e;
+  // Drive part of the way, then stop.
+  for (int i = 0; i < 2000 && r.count[0] < 150; ++i, ++r.now) {
+    ASSERT_FALSE(r.runner.poll(r.wheels(), r.now, e));
+    for (int w = 0; w < 2; ++w) {
+      r.acc[w] += r.runner.power(w) * 8;
+      r.count[w] += r.acc[w] / 1000;
+      r.acc[w] %= 1000;
+    }
+  }
+  r.runner.abort();
+  EXPECT_EQ(r.runner.power(0), 0);
+  EXPECT_FALSE(r.runner.busy());
+  const int32_t stoppedAt = r.count[0];
+  EXPECT_GE(stoppedAt, 150);
+  ASSERT_TRUE(r.runner.resume(r.wheels(), r.now));
+  bool done = false;
+  for (int i = 0; i < 20000 && !done; ++i, ++r.now) {
+    done = r.runner.poll(r.wheels(), r.now, e);
+    for (int w = 0; w < 2; ++w) {
+      r.acc[w] += r.runner.power(w) * 8;
+      r.count[w] += r.acc[w] / 1000;
+      r.acc[w] %= 1000;
+    }
+  }
+  ASSERT_TRUE(done);
+  EXPECT_EQ(e.kind, DriveEvent::Kind::Driven);
+  EXPECT_FALSE(e.blocked);
+  EXPECT_NEAR(r.count[0], 409, 3);  // one cell in all, not 150 + one cell
+  EXPECT_NEAR(r.count[1], 409, 3);
+  EXPECT_FALSE(r.runner.resume(r.wheels(), r.now));  // nothing left to resume
+}
+
 TEST(ActionRunner, AReadFiltersSamplesOfTheSensorsPort) {
   Robot r;
   r.sensors[3].regs[0x42] = 55;  // Left = port 4
