@@ -26,7 +26,7 @@ stacks=$(( $(hex "$(sym "$ELF" __stack_end__)") - $(hex "$(sym "$ELF" __stack_st
 ramrun=$(( $(hex "$(sym "$RAMELF" _ebss)") - 0x202000 + $(hex "$(sym "$RAMELF" __stack_end__)") - $(hex "$(sym "$RAMELF" __stack_start__)") ))
 echo "nxtmap firmware (ARM7TDMI, $(arm-none-eabi-gcc -dumpversion)):"
 check "flash: code + rodata + .data image" "$flash" "$FLASH_LIMIT"
-check "static RAM: vectors + data/bss ($bss) + stacks ($stacks)" "$ram" "$RAM_LIMIT"
+check "static RAM (64x64 grid): data/bss ($bss) + stacks ($stacks)" "$ram" "$RAM_LIMIT"
 check "RAM-run image at 0x202000 incl. bss + stacks" "$ramrun" "$RAMRUN_LIMIT"
 
 binsize=$(stat -c %s "$BIN")

@@ -299,11 +299,11 @@ void BrickApp::draw(uint32_t now) {
   lastDrawMs_ = now;
   blink_ = !blink_;
   const Pose p = pose();
-  if (mapDirty_ && now - lastMapDrawMs_ >= kMapRedrawMs) {
-    screen_.drawMap(map_.grid(), p.cell, p.heading, blink_);
+  if (mapDirty_ && mapPage_ < 0 && now - lastMapDrawMs_ >= kMapRedrawMs) {
     mapDirty_ = false;
     lastMapDrawMs_ = now;
-  } else {
+    mapPage_ = 0;  // drawMapPages() draws one band per loop pass
+  } else if (mapPage_ < 0) {
     screen_.drawRobot(map_.grid(), p.cell, blink_);
   }
   const int x = Screen::kTextX;
@@ -339,6 +339,16 @@ void BrickApp::draw(uint32_t now) {
   lcd_.refresh();
 }
 
+void BrickApp::drawMapPages() {
+  if (mapPage_ < 0) return;
+  const Pose p = pose();
+  screen_.drawMapPage(map_.grid(), p.cell, p.heading, blink_, mapPage_);
+  if (++mapPage_ == Screen::kMapSize / 8) {
+    mapPage_ = -1;
+    lcd_.refresh();
+  }
+}
+
 void BrickApp::loopOnce() {
   const uint32_t now = ms_;
   safety_.feed(now);
@@ -356,6 +366,7 @@ void BrickApp::loopOnce() {
   startSonarClock();
   driveMotors();
   draw(now);
+  drawMapPages();
   lcd_.pump(now);
 }
 

@@ -21,6 +21,9 @@
 
 namespace nxtmap::fw {
 
+static_assert(BrickExplorerStorage::kWidth() == 64 && BrickExplorerStorage::kHeight() == 64,
+              "the brick's RAM budget (make size) is measured with a 64 x 64-cell room grid");
+
 // The brick application: owns every driver, the explorer with its pilot, and the radio link;
 // runs the main loop and serves the interrupts (each ISR in main.cpp calls one on*() member).
 // Commands come from the buttons (Enter: explore with the published method, Right: explore with
@@ -63,6 +66,7 @@ class BrickApp {
   void readButtons(uint32_t now);
   void startSonarClock();
   void draw(uint32_t now);
+  void drawMapPages();
   Pose pose() const;
   protocol::BrickReport report() const;
   ActionRunner::Wheels wheels() const;
@@ -110,6 +114,7 @@ class BrickApp {
   uint32_t candidateSince_ = 0;
   uint32_t lastDrawMs_ = 0, lastMapDrawMs_ = 0;
   bool mapDirty_ = true;
+  int8_t mapPage_ = -1;  // next map band to draw, -1 = none pending
   bool blink_ = false;
 };
 
