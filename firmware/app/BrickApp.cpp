@@ -14,6 +14,7 @@ constexpr uint32_t kBlinkMs = 500;      // robot pixel blink and status refresh
 constexpr uint32_t kMapRedrawMs = 500;   // the map is redrawn at most this often, and only when it changed
 constexpr uint32_t kButtonStableMs = 50;
 constexpr uint16_t kAvrSilentTripMs = 100;
+constexpr uint32_t kRadioPeriodMs = 50;
 constexpr uint32_t kSoftI2cTickRc = reg::kMck / 2 / 28800;  // 3 ticks per bit at 9600 bit/s
 }  // namespace
 
@@ -288,10 +289,16 @@ void BrickApp::serveRadio(uint32_t now) {
   while (bt_.readByte(b)) link_.receive(b);
   protocol::Command c;
   while (link_.nextCommand(c)) carryOut(c, now);
-  if (!bt_.streaming()) return;
-  const protocol::BrickReport r = report();
+  // Outgoing frames: one per pass while the link has some, then a pause of kRadioPeriodMs. Building
+  // a frame scans the map (MapSync: ~0.45 M instructions, ~10 ms), too much work to repeat in every
+  // 1 ms pass, and none while the wheels are driven so the motion control keeps its 1 ms rhythm.
+  if (!bt_.streaming() || bt_.txSpace() < protocol::kMaxFrame) return;
+  if (runner_.power(0) != 0 || runner_.power(1) != 0) return;
+  if (!radioBurst_ && now - lastRadioMs_ < kRadioPeriodMs) return;
+  lastRadioMs_ = now;
   protocol::Frame f;
-  while (bt_.txSpace() >= protocol::kMaxFrame && link_.transmit(now, r, f)) (void)bt_.write(f.bytes, f.size);
+  radioBurst_ = link_.transmit(now, report(), f);
+  if (radioBurst_) (void)bt_.write(f.bytes, f.size);
 }
 
 void BrickApp::draw(uint32_t now) {
