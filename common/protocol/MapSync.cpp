@@ -80,7 +80,7 @@ bool MapSync::buildDelta(uint16_t seq, uint32_t nowMs, Payload& out) {
   header.heightLog2 = log2Of(cells.height());
   header.window = grid_.window();
   if (header.window.empty()) header.window = Bounds{};
-  MapDeltaWriter writer(out, header);
+  MapDeltaWriter writer(out, header, payloadLimit_);
   slot->runCount = 0;
 
   const uint32_t w = static_cast<uint32_t>(cells.width());
@@ -124,7 +124,10 @@ bool MapSync::buildDelta(uint16_t seq, uint32_t nowMs, Payload& out) {
 
 void MapSync::acknowledge(uint16_t ack, uint16_t ackMask) {
   for (Slot& s : slots_) {
-    if (s.used && acknowledges(ack, ackMask, s.seq)) s.used = false;
+    if (s.used && acknowledges(ack, ackMask, s.seq)) {
+      s.used = false;
+      payloadLimit_ = payloadLimit_ + kGrowBytes > kMaxPayload ? kMaxPayload : payloadLimit_ + kGrowBytes;
+    }
   }
 }
 
@@ -133,6 +136,7 @@ int MapSync::expire(uint32_t nowMs) {
   for (Slot& s : slots_) {
     if (s.used && nowMs - s.sentMs >= retransmitMs_) {
       forget(s);
+      payloadLimit_ = payloadLimit_ / 2 < kMinDeltaPayload ? kMinDeltaPayload : payloadLimit_ / 2;
       ++n;
     }
   }
