@@ -48,7 +48,7 @@ void BrickLink::handlePacket(const Telegram& t) {
   // until now: from here on a Hello of this session is a reconnect.
   freshSession_ = false;
   const int inFlight = sync_.inFlight();
-  sync_.acknowledge(v.header.ack, v.header.ackMask);
+  sync_.acknowledge(v.header.ack, v.header.ackMask, nowMs_);
   if (sync_.inFlight() < inFlight) scanNow_ = true;  // room for the next delta
   switch (v.header.op) {
     case Op::Explore:
@@ -174,6 +174,7 @@ bool BrickLink::send(Op op, bool reliable, const Payload& payload, Frame& out) {
 }
 
 bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out) {
+  nowMs_ = nowMs;
   if (legoReplyReady_) {
     legoReplyReady_ = false;
     out = legoReply_;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "host/bench/LinkBench.hpp"
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
 #include "host/cli/ExperimentRunner.hpp"
@@ -194,6 +195,7 @@ int run(int argc, char** argv) {
               "");
   }
   table.print();
+  bench::printLinkBench(dir + "/occupancy-120.map", 1, 20);
   return 0;
 }
 }  // namespace

@@ -198,10 +198,13 @@ TEST_F(BrickLinkTest, UnacknowledgedDeltasComeAgainAndAcknowledgedOnesDoNot) {
   ASSERT_TRUE(o.grid.set(Cell{3, 3}, CellState::Occupied));
   Received r = collect(1000);
   ASSERT_EQ(r.count(Op::MapDelta), 1u);
-  // No ack: after the retransmission time the cell goes again.
-  r = collect(1249);
+  // No ack: after the retransmission timeout the cell goes again (the Ack of the first delta
+  // came at once, so the timeout is down at its floor).
+  const uint32_t rto = link.mapSync().retransmitTimeoutMs();
+  EXPECT_EQ(rto, MapSync::kMinRtoMs);
+  r = collect(1000 + rto - 1);
   EXPECT_EQ(r.count(Op::MapDelta), 0u);
-  r = collect(1250);
+  r = collect(1000 + rto);
   EXPECT_EQ(r.count(Op::MapDelta), 1u);
   EXPECT_EQ(link.counters().retransmits, 1u);
   feed(test::pcPacket(Op::Ack, 0, received));
