@@ -120,6 +120,7 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
   switch (v.header.op) {
     case Op::MapDelta: {
       if (!v.header.reliable()) return;
+      counters_.deltaBytes += kLengthPrefix + t.size;
       const uint64_t before = map_.changes();
       if (map_.applyDelta(v.payload, v.payloadSize)) {
         ++counters_.deltasApplied;

@@ -29,6 +29,7 @@ struct SessionCounters {
   uint64_t bytesIn = 0, bytesOut = 0;
   uint64_t packetsIn = 0;
   uint64_t deltasApplied = 0;
+  uint64_t deltaBytes = 0;         // wire bytes of the map deltas received (frames whole)
   uint64_t commandsSent = 0;       // first transmissions
   uint64_t commandRetries = 0;     // repeated transmissions
   uint64_t commandsAcknowledged = 0;
