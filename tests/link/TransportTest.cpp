@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <functional>
 #include <mutex>
@@ -39,7 +40,14 @@ void pumpBrick(int fd, SimBrick& brick, const std::atomic<bool>& stop, std::atom
       brick.step(now);
       out = brick.transmit(now, 512);
     }
-    if (!out.empty() && ::write(fd, out.data(), out.size()) < 0) break;
+    if (!out.empty()) {
+      ssize_t n = ::send(fd, out.data(), out.size(), MSG_NOSIGNAL);
+      if (n < 0 && errno == ENOTSOCK) n = ::write(fd, out.data(), out.size());
+      if (n < 0) {
+        ++closedCount;  // the PC closed its end
+        break;
+      }
+    }
     pollfd p{fd, POLLIN, 0};
     if (::poll(&p, 1, 2) > 0) {
       const ssize_t n = ::read(fd, buf, sizeof(buf));
@@ -86,7 +94,17 @@ TEST(Transport, TcpLinkMapsTheRoomAndSurvivesADroppedConnection) {
 
   std::atomic<bool> stop{false};
   std::atomic<int> closed{0};
-  std::thread brickSide([&] {
+  struct Joiner {
+    std::atomic<bool>& stop;
+    std::thread& t;
+    ~Joiner() {
+      stop = true;
+      if (t.joinable()) t.join();
+    }
+  };
+  std::thread brickSide;
+  const Joiner joiner{stop, brickSide};
+  brickSide = std::thread([&] {
     // One connection after another, as a brick accepting the PC again after a drop.
     while (!stop) {
       pollfd p{server, POLLIN, 0};
@@ -102,7 +120,7 @@ TEST(Transport, TcpLinkMapsTheRoomAndSurvivesADroppedConnection) {
 
   const LinkSpec spec = parseLinkSpec("tcp:127.0.0.1:" + std::to_string(port));
   LinkRunner runner([&] { return openTransport(spec); }, SessionConfig{}, 100);
-  runner.start();
+  runner.start();  // stopped by its destructor, before the joiner ends the brick side
   ASSERT_TRUE(waitUntil([&] { return runner.with([](Session& s) { return s.connected(); }); }, 10));
   runner.with([](Session& s) { return s.explore(); });
   ASSERT_TRUE(waitUntil([&] { return brick.run().counters().cellsMoved >= 5; }, 20));
