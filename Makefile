@@ -12,7 +12,7 @@ ARM_DIR   := $(BUILD)/arm-common
 FW_DIR    := $(BUILD)/firmware
 CMAKE_GEN := -G Ninja
 
-.PHONY: all deps host host-san arm-common firmware size test demo bench clean help
+.PHONY: all deps host host-san arm-common firmware size test demo bench clean help fuzz
 
 all: host
 
@@ -23,6 +23,7 @@ help:
 	@echo "make firmware - the brick images: build/firmware/nxtmap.{elf,bin} (flash), nxtmap-ram.{elf,bin} (fwexec), nxtmap-sim.elf"
 	@echo "make size   - the brick image's flash/RAM budgets, enforced"
 	@echo "make deps   - install missing Debian packages (quick when all is present)"
+	@echo "make fuzz   - fuzz the radio protocol decoder with libFuzzer (FUZZ_SECONDS=600)"
 
 deps:
 	@bash scripts/deps.sh
@@ -64,6 +65,24 @@ demo: host
 
 bench: host
 	NXTMAP_PEER_DIR=$(BUILD)/peer $(HOST_DIR)/host/bench/nxtmap-bench
+
+# libFuzzer on the protocol decoder (clang). New finds are merged into fuzz/corpus (kept in git,
+# replayed by make test); a crash leaves its input in $(FUZZ_DIR)/crash-*.
+FUZZ_DIR     := $(BUILD)/fuzz
+FUZZ_SECONDS ?= 600
+FUZZ_SOURCES := fuzz/ProtocolFuzz.cpp $(wildcard common/protocol/*.cpp common/grid/*.cpp) common/check/Check.cpp \
+                host/link/Session.cpp host/link/MirrorMap.cpp
+$(FUZZ_DIR)/protocol-fuzz: $(FUZZ_SOURCES) $(wildcard fuzz/*.hpp common/protocol/*.hpp host/link/*.hpp) | deps
+	@mkdir -p $(FUZZ_DIR)
+	clang++ -std=c++17 -g -O1 -I. -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
+	  $(FUZZ_SOURCES) -o $@
+
+fuzz: $(FUZZ_DIR)/protocol-fuzz
+	@mkdir -p $(FUZZ_DIR)/found
+	cd $(FUZZ_DIR) && ./protocol-fuzz -max_total_time=$(FUZZ_SECONDS) -max_len=512 -print_final_stats=1 \
+	  found $(CURDIR)/fuzz/corpus 2>&1 | tail -n 25
+	$(FUZZ_DIR)/protocol-fuzz -merge=1 fuzz/corpus $(FUZZ_DIR)/found 2>&1 | tail -n 2
+	@echo "fuzz: $(FUZZ_SECONDS) s without a crash; corpus: $$(ls fuzz/corpus | wc -l) inputs in fuzz/corpus"
 
 clean:
 	rm -rf $(BUILD)

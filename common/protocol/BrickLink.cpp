@@ -44,7 +44,12 @@ void BrickLink::handlePacket(const Telegram& t) {
     return;
   }
   if (v.header.version != kProtocolVersion || !connected_) return;
-  sync_.acknowledge(v.header.ack, v.header.ackMask);
+  // The PC sends other packets only after a HelloReply reached it, and every reply said "fresh"
+  // until now: from here on a Hello of this session is a reconnect.
+  freshSession_ = false;
+  const int inFlight = sync_.inFlight();
+  sync_.acknowledge(v.header.ack, v.header.ackMask, nowMs_);
+  if (sync_.inFlight() < inFlight) scanNow_ = true;  // room for the next delta
   switch (v.header.op) {
     case Op::Explore:
     case Op::Stop:
@@ -73,6 +78,7 @@ void BrickLink::handleHello(const uint8_t* p, size_t n) {
     // A PC we have not talked to since power-on: fresh duplicate tracking, the whole map.
     hasSession_ = true;
     session_ = hello.session;
+    freshSession_ = true;
     commands_.reset();
     sync_.restart();
   } else if (hello.wantMap) {
@@ -81,6 +87,7 @@ void BrickLink::handleHello(const uint8_t* p, size_t n) {
     sync_.linkLost();  // whatever was in flight before the reconnect goes again
   }
   connected_ = true;
+  scanNow_ = true;
   stateDue_ = true;
   statusSent_ = false;
 }
@@ -103,7 +110,10 @@ void BrickLink::handleCommand(const PacketHeader& h, const uint8_t* p, size_t n)
       c.kind = CommandKind::Stop;
       break;
     case Op::RequestMap:
-      if (valid) sync_.restart();
+      if (valid) {
+        sync_.restart();
+        scanNow_ = true;
+      }
       commands_.record(h.seq);
       ackDue_ = true;
       return;
@@ -164,6 +174,7 @@ bool BrickLink::send(Op op, bool reliable, const Payload& payload, Frame& out) {
 }
 
 bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out) {
+  nowMs_ = nowMs;
   if (legoReplyReady_) {
     legoReplyReady_ = false;
     out = legoReply_;
@@ -184,13 +195,18 @@ bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out) 
     HelloReplyMsg m;
     m.session = session_;
     m.mapEpoch = sync_.epoch();
+    m.freshSession = freshSession_;
     m.gridWidthLog2 = sync_.widthLog2();
     m.gridHeightLog2 = sync_.heightLog2();
     encodeHelloReply(m, p);
     return send(Op::HelloReply, false, p, out);
   }
   if (!connected_) return false;
-  counters_.retransmits += static_cast<uint32_t>(sync_.expire(nowMs));
+  const int expired = sync_.expire(nowMs);
+  if (expired > 0) {
+    counters_.retransmits += static_cast<uint32_t>(expired);
+    scanNow_ = true;
+  }
 
   if (stateDue_) {  // after a Hello: pose, path and room once, whatever they are
     stateDue_ = false;
@@ -220,24 +236,36 @@ bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out) 
     return send(Op::Battery, false, p, out);
   }
   if (!statusSent_ || nowMs - lastStatusMs_ >= config_.statusPeriodMs) {
+    // Every period: Status; every other period: Counters. Pose and path repeat with it, so a
+    // lost report (e.g. "blocked") is made good within one period even on a bad link.
     statusSent_ = true;
     lastStatusMs_ = nowMs;
+    posePending_ = pathPending_ = true;
+    countersPhase_ = !countersPhase_;
+    countersDue_ = countersPhase_;
     StatusMsg s;
     s.mode = report.mode;
     s.pose = report.pose;
-    s.counters = report.counters;
     s.batteryMillivolts = report.batteryMillivolts;
     s.mapEpoch = sync_.epoch();
     s.roomId = report.roomId;
     s.path = report.path;
-    s.link = counters_;
     encodeStatus(s, p);
     return send(Op::Status, false, p, out);
   }
-  const uint16_t seq = nextSeq(txSeq_);
-  if (sync_.buildDelta(seq, nowMs, p)) {
-    txSeq_ = seq;
-    return send(Op::MapDelta, true, p, out);
+  if (countersDue_) {
+    countersDue_ = false;
+    encodeCounters(CountersMsg{report.counters, counters_}, p);
+    return send(Op::Counters, false, p, out);
+  }
+  if (scanNow_ || nowMs - lastScanMs_ >= config_.deltaPeriodMs) {
+    lastScanMs_ = nowMs;
+    const uint16_t seq = nextSeq(txSeq_);
+    scanNow_ = sync_.buildDelta(seq, nowMs, p);
+    if (scanNow_) {
+      txSeq_ = seq;
+      return send(Op::MapDelta, true, p, out);
+    }
   }
   if (ackDue_) {
     p.size = 0;

@@ -26,9 +26,10 @@ struct BrickReport {
 };
 
 struct BrickLinkConfig {
-  uint32_t retransmitMs = 400;   // a map delta not acknowledged within this is sent again
+  uint32_t retransmitMs = 250;   // longest wait for a map delta's ack before it is sent again (adapts down to the round trip)
   uint32_t statusPeriodMs = 500; // Status every this often while a PC is connected
   uint32_t sleepLimitMs = 0;     // KEEP_ALIVE answer (0 = the brick never sleeps)
+  uint32_t deltaPeriodMs = 20;   // look for changed cells this often (a scan of the grid; batches changes)
 };
 
 // The brick's end of the radio link: the one object the firmware (and the emulator's stand-ins)
@@ -60,7 +61,10 @@ class BrickLink {
   // The radio connection dropped: the PC must say Hello again; deltas in flight are resent.
   void linkLost();
   // The grid was cleared or restructured (new room, end of mapping): the PC gets it all again.
-  void mapRestarted() { sync_.restart(); }
+  void mapRestarted() {
+    sync_.restart();
+    scanNow_ = true;
+  }
 
   bool connected() const { return connected_; }
   uint16_t mapEpoch() const { return sync_.epoch(); }
@@ -87,6 +91,7 @@ class BrickLink {
 
   bool hasSession_ = false;
   uint32_t session_ = 0;
+  bool freshSession_ = false;  // no packet but Hello from this session yet
   bool connected_ = false;
   bool helloReplyDue_ = false;
   bool batteryDue_ = false;
@@ -95,7 +100,11 @@ class BrickLink {
   bool legoReplyReady_ = false;  // legoReply_ holds a mailbox reply to send
   Frame legoReply_;
   uint16_t txSeq_ = 0;
+  uint32_t nowMs_ = 0;  // the clock at the last transmit() (receive() has none)
+  bool scanNow_ = true;       // the last scan filled a delta: look again at once
+  uint32_t lastScanMs_ = 0;
   bool statusSent_ = false;
+  bool countersDue_ = false, countersPhase_ = false;
   uint32_t lastStatusMs_ = 0;
   bool stateDue_ = false;
   bool posePending_ = false, pathPending_ = false, roomPending_ = false;

@@ -20,7 +20,10 @@ bool containsBox(const Bounds& outer, const Bounds& inner) {
 }  // namespace
 
 MapSync::MapSync(const RoomGrid& grid, uint8_t* shadow, uint32_t retransmitMs)
-    : grid_(grid), shadow_(shadow, grid.capacityWidth(), grid.capacityHeight()), retransmitMs_(retransmitMs) {
+    : grid_(grid),
+      shadow_(shadow, grid.capacityWidth(), grid.capacityHeight()),
+      retransmitMs_(retransmitMs),
+      rtoMs_(retransmitMs) {
   restart();  // epoch 1
 }
 
@@ -80,7 +83,7 @@ bool MapSync::buildDelta(uint16_t seq, uint32_t nowMs, Payload& out) {
   header.heightLog2 = log2Of(cells.height());
   header.window = grid_.window();
   if (header.window.empty()) header.window = Bounds{};
-  MapDeltaWriter writer(out, header);
+  MapDeltaWriter writer(out, header, payloadLimit_);
   slot->runCount = 0;
 
   const uint32_t w = static_cast<uint32_t>(cells.width());
@@ -122,17 +125,26 @@ bool MapSync::buildDelta(uint16_t seq, uint32_t nowMs, Payload& out) {
   return true;
 }
 
-void MapSync::acknowledge(uint16_t ack, uint16_t ackMask) {
+void MapSync::acknowledge(uint16_t ack, uint16_t ackMask, uint32_t nowMs) {
   for (Slot& s : slots_) {
-    if (s.used && acknowledges(ack, ackMask, s.seq)) s.used = false;
+    if (s.used && acknowledges(ack, ackMask, s.seq)) {
+      s.used = false;
+      const uint32_t sample = nowMs - s.sentMs;
+      srttMs_ = measured_ ? (7 * srttMs_ + sample) / 8 : sample;
+      measured_ = true;
+      const uint32_t rto = 2 * srttMs_ + kRtoMarginMs;
+      rtoMs_ = rto < kMinRtoMs ? kMinRtoMs : (rto > retransmitMs_ ? retransmitMs_ : rto);
+      payloadLimit_ = payloadLimit_ + kGrowBytes > kMaxPayload ? kMaxPayload : payloadLimit_ + kGrowBytes;
+    }
   }
 }
 
 int MapSync::expire(uint32_t nowMs) {
   int n = 0;
   for (Slot& s : slots_) {
-    if (s.used && nowMs - s.sentMs >= retransmitMs_) {
+    if (s.used && nowMs - s.sentMs >= rtoMs_) {
       forget(s);
+      payloadLimit_ = payloadLimit_ / 2 < kMinDeltaPayload ? kMinDeltaPayload : payloadLimit_ / 2;
       ++n;
     }
   }

@@ -215,6 +215,7 @@ size_t encodeHelloReply(const HelloReplyMsg& m, Payload& out) {
   w.u8(static_cast<uint8_t>((m.gridWidthLog2 & 0xFu) | (m.gridHeightLog2 << 4)));
   w.u16(m.mapEpoch);
   w.u16(m.maxPathCells);
+  w.u8(m.freshSession ? 1 : 0);
   return finish(w, out);
 }
 bool decodeHelloReply(const uint8_t* p, size_t n, HelloReplyMsg& out) {
@@ -226,7 +227,9 @@ bool decodeHelloReply(const uint8_t* p, size_t n, HelloReplyMsg& out) {
   out.gridHeightLog2 = static_cast<uint8_t>(logs >> 4);
   out.mapEpoch = r.u16();
   out.maxPathCells = r.u16();
-  return r.ok() && r.atEnd() && out.gridWidthLog2 >= 1 && out.gridWidthLog2 <= 7 && out.gridHeightLog2 >= 1 &&
+  const uint8_t fresh = r.u8();
+  out.freshSession = fresh == 1;
+  return r.ok() && r.atEnd() && fresh <= 1 && out.gridWidthLog2 >= 1 && out.gridWidthLog2 <= 7 && out.gridHeightLog2 >= 1 &&
          out.gridHeightLog2 <= 7 && out.maxPathCells >= 2;
 }
 
@@ -272,25 +275,15 @@ bool decodeBattery(const uint8_t* p, size_t n, BatteryMsg& out) {
   return r.ok() && r.atEnd();
 }
 
-// ---- Status ----
+// ---- Status, Counters ----
 size_t encodeStatus(const StatusMsg& m, Payload& out) {
   ByteWriter w(out.bytes, sizeof(out.bytes));
   w.u8(static_cast<uint8_t>(m.mode));
   writePose(w, m.pose);
-  w.u32(m.counters.sensorRequests);
-  w.u32(m.counters.rawSamples);
-  w.u32(m.counters.cellsMoved);
-  w.u32(m.counters.turnEighths);
-  w.u32(m.counters.blockedMoves);
   w.u16(m.batteryMillivolts);
   w.u16(m.mapEpoch);
   w.u16(m.roomId);
   writePathProgress(w, m.path);
-  w.u32(m.link.telegramsIn);
-  w.u32(m.link.bytesSkipped);
-  w.u32(m.link.commandsRun);
-  w.u32(m.link.duplicates);
-  w.u32(m.link.retransmits);
   return finish(w, out);
 }
 bool decodeStatus(const uint8_t* p, size_t n, StatusMsg& out) {
@@ -298,25 +291,44 @@ bool decodeStatus(const uint8_t* p, size_t n, StatusMsg& out) {
   const uint8_t mode = r.u8();
   out.mode = static_cast<BrickMode>(mode);
   const bool poseOk = readPose(r, out.pose);
-  out.counters.sensorRequests = r.u32();
-  out.counters.rawSamples = r.u32();
-  out.counters.cellsMoved = r.u32();
-  out.counters.turnEighths = r.u32();
-  out.counters.blockedMoves = r.u32();
   out.batteryMillivolts = r.u16();
   out.mapEpoch = r.u16();
   out.roomId = r.u16();
   const bool pathOk = readPathProgress(r, out.path);
+  return r.ok() && r.atEnd() && poseOk && pathOk && mode <= static_cast<uint8_t>(BrickMode::Fault);
+}
+size_t encodeCounters(const CountersMsg& m, Payload& out) {
+  ByteWriter w(out.bytes, sizeof(out.bytes));
+  w.u32(m.explorer.sensorRequests);
+  w.u32(m.explorer.rawSamples);
+  w.u32(m.explorer.cellsMoved);
+  w.u32(m.explorer.turnEighths);
+  w.u32(m.explorer.blockedMoves);
+  w.u32(m.link.telegramsIn);
+  w.u32(m.link.bytesSkipped);
+  w.u32(m.link.commandsRun);
+  w.u32(m.link.duplicates);
+  w.u32(m.link.retransmits);
+  return finish(w, out);
+}
+bool decodeCounters(const uint8_t* p, size_t n, CountersMsg& out) {
+  ByteReader r(p, n);
+  out.explorer.sensorRequests = r.u32();
+  out.explorer.rawSamples = r.u32();
+  out.explorer.cellsMoved = r.u32();
+  out.explorer.turnEighths = r.u32();
+  out.explorer.blockedMoves = r.u32();
   out.link.telegramsIn = r.u32();
   out.link.bytesSkipped = r.u32();
   out.link.commandsRun = r.u32();
   out.link.duplicates = r.u32();
   out.link.retransmits = r.u32();
-  return r.ok() && r.atEnd() && poseOk && pathOk && mode <= static_cast<uint8_t>(BrickMode::Fault);
+  return r.ok() && r.atEnd();
 }
 
 // ---- MapDelta ----
-MapDeltaWriter::MapDeltaWriter(Payload& out, const MapDeltaHeader& h) : out_(out) {
+MapDeltaWriter::MapDeltaWriter(Payload& out, const MapDeltaHeader& h, size_t limit)
+    : out_(out), limit_(limit < kMinDeltaPayload ? kMinDeltaPayload : (limit > kMaxPayload ? kMaxPayload : limit)) {
   ByteWriter w(out.bytes, sizeof(out.bytes));
   w.u16(h.epoch);
   w.u8(static_cast<uint8_t>((h.widthLog2 & 0xFu) | (h.heightLog2 << 4)));

@@ -76,6 +76,7 @@ struct HelloReplyMsg {
   uint8_t gridHeightLog2 = 6;
   uint16_t mapEpoch = 0;
   uint16_t maxPathCells = kMaxPathCells;
+  bool freshSession = false;   // the session is new to the brick (e.g. it restarted): the PC clears its copy
 };
 size_t encodeHelloReply(const HelloReplyMsg& m, Payload& out);
 bool decodeHelloReply(const uint8_t* p, size_t n, HelloReplyMsg& out);
@@ -124,18 +125,25 @@ struct LinkCounters {
   uint32_t retransmits = 0;   // map deltas that timed out (their cells are sent again)
 };
 
+// What the brick is doing, small enough to get through a bad link often (21 bytes).
 struct StatusMsg {
   BrickMode mode = BrickMode::Idle;
   Pose pose;
-  Counters counters;
   uint16_t batteryMillivolts = 0;
   uint16_t mapEpoch = 0;
   uint16_t roomId = 0;
   PathProgressMsg path;
-  LinkCounters link;
 };
 size_t encodeStatus(const StatusMsg& m, Payload& out);
 bool decodeStatus(const uint8_t* p, size_t n, StatusMsg& out);
+
+// The explorer's and the link's counters (40 bytes), sent less often than Status.
+struct CountersMsg {
+  Counters explorer;
+  LinkCounters link;
+};
+size_t encodeCounters(const CountersMsg& m, Payload& out);
+bool decodeCounters(const uint8_t* p, size_t n, CountersMsg& out);
 
 // MapDelta: changed cells of the brick's grid, as absolute states (so applying one twice or
 // late is harmless). Cells are named by their index on the brick's torus grid (row-major,
@@ -152,15 +160,17 @@ struct MapDeltaHeader {
 constexpr size_t kDeltaHeaderSize = 2 + 1 + 8 + 1;
 constexpr size_t kRunHeaderSize = 3;
 constexpr uint8_t kMaxRunCells = 64;
+constexpr size_t kMinDeltaPayload = kDeltaHeaderSize + kRunHeaderSize + 1;  // one run of up to 4 cells
 // Bytes one run of `cells` cells takes.
 constexpr size_t runBytes(size_t cells) { return kRunHeaderSize + (cells + 3) / 4; }
 
 // Writes a delta payload run by run.
 class MapDeltaWriter {
  public:
-  MapDeltaWriter(Payload& out, const MapDeltaHeader& header);
+  // `limit`: the largest payload to build, kMinDeltaPayload..kMaxPayload bytes.
+  MapDeltaWriter(Payload& out, const MapDeltaHeader& header, size_t limit = kMaxPayload);
   // Whether a run of `cells` cells still fits.
-  bool fits(size_t cells) const { return out_.size + runBytes(cells) <= kMaxPayload && runs_ < 255; }
+  bool fits(size_t cells) const { return out_.size + runBytes(cells) <= limit_ && runs_ < 255; }
   // Adds a run; `stateAt(k)` gives the state of cell index+k. False when it does not fit.
   template <class StateAt>
   bool addRun(uint16_t index, uint8_t count, StateAt stateAt) {
@@ -183,6 +193,7 @@ class MapDeltaWriter {
 
  private:
   Payload& out_;
+  size_t limit_;
   uint8_t runs_ = 0;
 };
 

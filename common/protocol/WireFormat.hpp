@@ -74,6 +74,7 @@ enum class Op : uint8_t {
   PathProgress = 0x45,  // unreliable, on change and in Status; PathProgressMsg (also "blocked")
   NewRoom = 0x46,       // unreliable, on change and in Status; NewRoomMsg
   Battery = 0x47,       // unreliable; BatteryMsg
+  Counters = 0x48,      // unreliable, periodic; CountersMsg
 };
 
 constexpr uint8_t kFlagReliable = 0x01;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "host/bench/LinkBench.hpp"
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
 #include "host/cli/ExperimentRunner.hpp"
@@ -199,6 +200,7 @@ int run(int argc, char** argv) {
               "");
   }
   table.print();
+  bench::printLinkBench(dir + "/occupancy-120.map", 1, 20);
   return nxtmap::bench::runPlanBench();
 }
 }  // namespace

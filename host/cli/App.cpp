@@ -7,7 +7,9 @@
 
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
+#include "host/cli/ConnectCommand.hpp"
 #include "host/cli/ExperimentsCommand.hpp"
+#include "host/cli/FlashCommand.hpp"
 #include "host/cli/PathCommand.hpp"
 #include "host/cli/PathsCommand.hpp"
 #include "host/cli/SimCommand.hpp"
@@ -25,17 +27,24 @@ int runCli(int argc, char** argv) {
   PathsOptions pathsOptions;
   CLI::App* path = addPathCommand(app, pathOptions);
   CLI::App* paths = addPathsCommand(app, pathsOptions);
+  ConnectOptions connectOptions;
+  FlashOptions flashOptions;
+  CLI::App* connect = addConnectCommand(app, connectOptions);
+  CLI::App* flash = addFlashCommand(app, flashOptions);
   app.footer("Examples:\n  nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live\n"
              "  nxtmap experiments worlds/seed-appendix-a --strategy both --csv results.csv --plots plots\n"
              "  nxtmap path worlds/seed-appendix-a/occupancy-120.map --from 1,20 --to 20,1 --algo seed\n"
-             "  nxtmap paths worlds/movingai/dao/arena2.map --scen worlds/movingai/dao/arena2.map.scen --algo jps");
+             "  nxtmap paths worlds/movingai/dao/arena2.map --scen worlds/movingai/dao/arena2.map.scen --algo jps\n"
+             "  nxtmap connect bt:00:16:53:0A:1B:2C      (or serial:/dev/rfcomm0, tcp:localhost:5000, sim:WORLD)\n"
+             "  nxtmap flash build/firmware/nxtmap.bin   (nxtmap flash --restore: LEGO's firmware)");
 
   try {
     if (argc > 1 && argv[1][0] != '-') {
       const std::string command = argv[1];
       if (command != sim->get_name() && command != experiments->get_name() && command != path->get_name() &&
-          command != paths->get_name()) {
-        throw CliError("unknown command '" + command + "' (commands: sim, experiments, path, paths; see nxtmap --help)");
+          command != paths->get_name() && command != connect->get_name() && command != flash->get_name()) {
+        throw CliError("unknown command '" + command +
+                       "' (commands: sim, experiments, path, paths, connect, flash; see nxtmap --help)");
       }
     }
     try {
@@ -47,12 +56,16 @@ int runCli(int argc, char** argv) {
       if (experiments->parsed()) where = "experiments: ";
       if (path->parsed()) where = "path: ";
       if (paths->parsed()) where = "paths: ";
+      if (connect->parsed()) where = "connect: ";
+      if (flash->parsed()) where = "flash: ";
       throw CliError(where + e.what());
     }
     if (sim->parsed()) return runSim(simOptions);
     if (experiments->parsed()) return runExperiments(experimentsOptions);
     if (path->parsed()) return runPath(pathOptions);
     if (paths->parsed()) return runPaths(pathsOptions);
+    if (connect->parsed()) return runConnect(connectOptions);
+    if (flash->parsed()) return runFlash(flashOptions);
     std::cout << app.help();
     throw CliError("no command given: use sim, experiments, path or paths (see nxtmap --help)");
   } catch (const CliError& e) {

@@ -106,14 +106,22 @@ TEST_F(BrickLinkTest, HelloOpensASessionAndTheWholeStateFollows) {
   EXPECT_EQ(reply.session, 0xC0FFEEu);
   EXPECT_EQ(reply.gridWidthLog2, 6);
   EXPECT_EQ(reply.mapEpoch, link.mapEpoch());
-  for (Op op : {Op::Pose, Op::PathProgress, Op::NewRoom, Op::Status, Op::MapDelta}) EXPECT_EQ(r.count(op), 1u);
+  EXPECT_TRUE(reply.freshSession);
+  for (Op op : {Op::NewRoom, Op::Status, Op::Counters, Op::MapDelta}) EXPECT_EQ(r.count(op), 1u);
+  EXPECT_EQ(r.count(Op::Pose), 2u);  // at the Hello and again with the first Status
+  EXPECT_EQ(r.count(Op::PathProgress), 2u);
   EXPECT_TRUE(mirror.equals(o.grid));
-  // Quiet until the next status period.
+  // Quiet until the next status period; then Status with pose and path again, Counters every other time.
   EXPECT_TRUE(collect(100).headers.empty());
-  EXPECT_EQ(collect(500).count(Op::Status), 1u);
+  Received period = collect(500);
+  EXPECT_EQ(period.count(Op::Status), 1u);
+  EXPECT_EQ(period.count(Op::Pose), 1u);
+  EXPECT_EQ(period.count(Op::PathProgress), 1u);
+  EXPECT_EQ(period.count(Op::Counters), 0u);
+  EXPECT_EQ(collect(1000).count(Op::Counters), 1u);
   // Pose changes are reported at once.
   report.pose.cell = Cell{1, 0};
-  EXPECT_EQ(collect(510).count(Op::Pose), 1u);
+  EXPECT_EQ(collect(1010).count(Op::Pose), 1u);
 }
 
 TEST_F(BrickLinkTest, ARepeatedCommandRunsOnceAndIsAcknowledgedEachTime) {
@@ -133,7 +141,11 @@ TEST_F(BrickLinkTest, ARepeatedCommandRunsOnceAndIsAcknowledgedEachTime) {
   link.linkLost();
   hello(7);
   feed(explore);
-  collect(20);
+  const Received again = collect(20);
+  HelloReplyMsg reply;
+  ASSERT_EQ(again.headers[0].op, Op::HelloReply);
+  ASSERT_TRUE(decodeHelloReply(again.payloads[0].data(), again.payloads[0].size(), reply));
+  EXPECT_FALSE(reply.freshSession);
   EXPECT_TRUE(commands().empty());
   // A new PC session starts afresh.
   hello(8);
@@ -186,10 +198,13 @@ TEST_F(BrickLinkTest, UnacknowledgedDeltasComeAgainAndAcknowledgedOnesDoNot) {
   ASSERT_TRUE(o.grid.set(Cell{3, 3}, CellState::Occupied));
   Received r = collect(1000);
   ASSERT_EQ(r.count(Op::MapDelta), 1u);
-  // No ack: after the retransmission time the cell goes again.
-  r = collect(1300);
+  // No ack: after the retransmission timeout the cell goes again (the Ack of the first delta
+  // came at once, so the timeout is down at its floor).
+  const uint32_t rto = link.mapSync().retransmitTimeoutMs();
+  EXPECT_EQ(rto, MapSync::kMinRtoMs);
+  r = collect(1000 + rto - 1);
   EXPECT_EQ(r.count(Op::MapDelta), 0u);
-  r = collect(1400);
+  r = collect(1000 + rto);
   EXPECT_EQ(r.count(Op::MapDelta), 1u);
   EXPECT_EQ(link.counters().retransmits, 1u);
   feed(test::pcPacket(Op::Ack, 0, received));

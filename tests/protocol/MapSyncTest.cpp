@@ -24,7 +24,7 @@ int drain(MapSync& sync, MirrorMap& mirror, uint16_t& seq, uint32_t now) {
     seq = nextSeq(seq);
     if (!sync.buildDelta(seq, now, p)) break;
     EXPECT_TRUE(mirror.apply(p.bytes, p.size));
-    sync.acknowledge(seq, 0);
+    sync.acknowledge(seq, 0, now);
     ++n;
   }
   return n;
@@ -49,7 +49,7 @@ TEST(MapSync, SendsChangedCellsAsRunsAndNothingWhenQuiet) {
   EXPECT_EQ(r.header().runCount, 3);
   EXPECT_EQ(p.size, kDeltaHeaderSize + runBytes(5) + runBytes(12) + runBytes(1));
   ASSERT_TRUE(mirror.apply(p.bytes, p.size));
-  sync.acknowledge(nextSeq(seq), 0);
+  sync.acknowledge(nextSeq(seq), 0, 0);
   EXPECT_TRUE(mirror.equals(o.grid));
   EXPECT_FALSE(sync.pending());
   EXPECT_FALSE(sync.buildDelta(7, 0, p));
@@ -71,31 +71,56 @@ TEST(MapSync, ALostDeltaIsSentAgainAfterTheTimeoutWithCurrentStates) {
   Payload p;
   ASSERT_TRUE(sync.buildDelta(101, 1010, p));  // carries only (2,1)
   ASSERT_TRUE(mirror.apply(p.bytes, p.size));
-  sync.acknowledge(101, 0);
+  sync.acknowledge(101, 0, 1050);  // round trips of 0 (drain) and 40 ms: a timeout well below 400 ms
+  const uint32_t rto = sync.retransmitTimeoutMs();
+  EXPECT_GE(rto, MapSync::kMinRtoMs);
+  EXPECT_LT(rto, 400u);
   EXPECT_FALSE(mirror.equals(o.grid));  // (1,1) is missing
-  EXPECT_EQ(sync.expire(1399), 0);
-  EXPECT_EQ(sync.expire(1400), 1);
+  EXPECT_EQ(sync.expire(1000 + rto - 1), 0);
+  EXPECT_EQ(sync.expire(1000 + rto), 1);
   EXPECT_TRUE(sync.pending());
   drain(sync, mirror, seq, 1500);
   EXPECT_TRUE(mirror.equals(o.grid));
   EXPECT_EQ(mirror.cells.at({2, 1}), CellState::Occupied);
 }
 
-TEST(MapSync, AtMostFourDeltasAreInFlightAndAcksFreeThem) {
+TEST(MapSync, AtMostSixDeltasAreInFlightAndAcksFreeThem) {
   OwnedGrid<> o;
   MapSync sync(o.grid, o.shadow, 400);
-  for (int y = 0; y < 60; y += 2) {
-    for (int x = 0; x < 40; x += 2) setCell(o.grid, x, y, CellState::Free);  // rows of cells with gaps: 5 deltas
+  for (int y = 0; y < 64; y += 2) {
+    for (int x = 0; x < 64; x += 2) setCell(o.grid, x, y, CellState::Free);  // 32 rows of 63-cell runs: 7 deltas
   }
   Payload p;
   uint16_t seq = 0;
   for (int i = 0; i < MapSync::kSlots; ++i) ASSERT_TRUE(sync.buildDelta(seq = nextSeq(seq), 0, p));
   EXPECT_FALSE(sync.buildDelta(nextSeq(seq), 0, p));
+  EXPECT_EQ(sync.inFlight(), 6);
+  sync.acknowledge(6, 0x0001, 10);  // 6 and 5
   EXPECT_EQ(sync.inFlight(), 4);
-  sync.acknowledge(4, 0x0001);  // 4 and 3
-  EXPECT_EQ(sync.inFlight(), 2);
-  sync.acknowledge(4, 0x0006);  // 2 and 1 through the mask
+  sync.acknowledge(6, 0x001E, 10);  // 4, 3, 2 and 1 through the mask
   EXPECT_EQ(sync.inFlight(), 0);
+}
+
+TEST(MapSync, TheTimeoutFollowsTheRoundTrip) {
+  OwnedGrid<> o;
+  MapSync sync(o.grid, o.shadow, 1000);
+  EXPECT_EQ(sync.retransmitTimeoutMs(), 1000u);  // nothing measured yet: the configured time
+  Payload p;
+  uint16_t seq = 0;
+  uint32_t now = 0;
+  for (int i = 0; i < 40; ++i) {  // a steady 100 ms round trip
+    setCell(o.grid, i % 30, i / 30, CellState::Free);
+    ASSERT_TRUE(sync.buildDelta(seq = nextSeq(seq), now, p));
+    now += 100;
+    sync.acknowledge(seq, 0, now);
+  }
+  EXPECT_NEAR(static_cast<double>(sync.retransmitTimeoutMs()), 2 * 100 + MapSync::kRtoMarginMs, 10);
+  for (int i = 0; i < 60; ++i) {  // then a fast link: the timeout comes down, never below the floor
+    setCell(o.grid, i % 30, 3 + i / 30, CellState::Occupied);
+    ASSERT_TRUE(sync.buildDelta(seq = nextSeq(seq), now, p));
+    sync.acknowledge(seq, 0, now);
+  }
+  EXPECT_EQ(sync.retransmitTimeoutMs(), MapSync::kMinRtoMs);
 }
 
 TEST(MapSync, LinkLossSendsInFlightCellsAgain) {
@@ -154,7 +179,7 @@ TEST(MapSync, RandomChangesAndLossesAlwaysConverge) {
       if (sync.buildDelta(seq = nextSeq(seq), now, p)) {
         if (rng() % 4 != 0) {  // a quarter of the deltas are lost
           ASSERT_TRUE(mirror.apply(p.bytes, p.size));
-          if (rng() % 3 != 0) sync.acknowledge(seq, 0);  // and a third of the acks
+          if (rng() % 3 != 0) sync.acknowledge(seq, 0, now + 5);  // and a third of the acks
         }
       }
       if (rng() % 97 == 0) sync.linkLost();

@@ -26,36 +26,43 @@ TEST(Messages, HelloHasAFixedLayoutAndRoundTrips) {
   EXPECT_FALSE(decodeHello(p.bytes, p.size, h));
 }
 
-TEST(Messages, StatusRoundTripsEveryField) {
+TEST(Messages, StatusAndCountersRoundTripEveryField) {
   StatusMsg s;
   s.mode = BrickMode::Following;
   s.pose = Pose{Cell{-3, 17}, Dir::West};
-  s.counters = Counters{101, 202, 303, 404, 5};
   s.batteryMillivolts = 7654;
   s.mapEpoch = 9;
   s.roomId = 2;
   s.path = PathProgressMsg{77, 12, PathState::Blocked, Cell{4, -5}};
-  s.link = LinkCounters{1, 2, 3, 4, 5};
   Payload p;
-  ASSERT_GT(encodeStatus(s, p), 0u);
+  ASSERT_EQ(encodeStatus(s, p), 21u);  // small: it must get through a bad link
   StatusMsg d;
   ASSERT_TRUE(decodeStatus(p.bytes, p.size, d));
   EXPECT_EQ(d.mode, s.mode);
   EXPECT_EQ(d.pose.cell, s.pose.cell);
   EXPECT_EQ(d.pose.heading, Dir::West);
-  EXPECT_EQ(d.counters.rawSamples, 202u);
-  EXPECT_EQ(d.counters.blockedMoves, 5u);
   EXPECT_EQ(d.batteryMillivolts, 7654);
   EXPECT_EQ(d.mapEpoch, 9);
+  EXPECT_EQ(d.roomId, 2);
   EXPECT_EQ(d.path.state, PathState::Blocked);
   EXPECT_EQ(d.path.at, (Cell{4, -5}));
-  EXPECT_EQ(d.link.retransmits, 5u);
   // Truncated at every length, and one byte too many: refused.
   for (size_t n = 0; n < p.size; ++n) EXPECT_FALSE(decodeStatus(p.bytes, n, d)) << n;
   p.bytes[p.size] = 0;
   EXPECT_FALSE(decodeStatus(p.bytes, p.size + 1, d));
   p.bytes[0] = 9;  // mode out of range
   EXPECT_FALSE(decodeStatus(p.bytes, p.size, d));
+
+  CountersMsg c{Counters{101, 202, 303, 404, 5}, LinkCounters{1, 2, 3, 4, 0xFFFFFFFFu}};
+  ASSERT_EQ(encodeCounters(c, p), 40u);
+  EXPECT_EQ(p.bytes[4], 202 & 0xFF);
+  CountersMsg e;
+  ASSERT_TRUE(decodeCounters(p.bytes, p.size, e));
+  EXPECT_EQ(e.explorer.rawSamples, 202u);
+  EXPECT_EQ(e.explorer.blockedMoves, 5u);
+  EXPECT_EQ(e.link.commandsRun, 3u);
+  EXPECT_EQ(e.link.retransmits, 0xFFFFFFFFu);
+  EXPECT_FALSE(decodeCounters(p.bytes, p.size - 1, e));
 }
 
 TEST(Messages, SmallMessagesRefuseOutOfRangeFields) {

@@ -1,0 +1,119 @@
+#include "host/cli/ConnectCommand.hpp"
+
+#include <CLI/CLI.hpp>
+#include <poll.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <iostream>
+#include <thread>
+
+#include "host/cli/Errors.hpp"
+#include "host/console/Console.hpp"
+#include "host/link/SimTransport.hpp"
+
+namespace nxtmap::cli {
+
+CLI::App* addConnectCommand(CLI::App& app, ConnectOptions& o) {
+  CLI::App* c = app.add_subcommand("connect", "talk to a brick: live map, explore, goto, save (type help inside)");
+  c->add_option("link", o.link, "bt:00:16:53:XX:XX:XX, serial:/dev/rfcomm0, tcp:HOST:PORT or sim:WORLD[@COL,ROW]")
+      ->required();
+  c->add_option("--speed", o.speed, "sim: links only: run the stand-in brick this many times faster (default 1)");
+  c->add_option("--connect-timeout", o.connectTimeoutS, "seconds to wait for the brick to answer (default 20)");
+  c->add_flag("!--no-live", o.live, "do not redraw the map while the brick explores");
+  return c;
+}
+
+int runConnect(const ConnectOptions& o) {
+  link::LinkSpec spec;
+  try {
+    spec = link::parseLinkSpec(o.link);
+  } catch (const link::LinkError& e) {
+    throw CliError(std::string("connect: ") + e.what());
+  }
+  if (!(o.speed > 0 && o.speed <= 1000)) throw CliError("connect: --speed must be in (0, 1000]");
+  if (o.speed != 1.0 && spec.kind != link::LinkSpec::Kind::Sim) throw CliError("connect: --speed only applies to sim: links");
+
+  link::LinkRunner::Opener opener;
+  if (spec.kind == link::LinkSpec::Kind::Sim) {
+    // Load the world now, so a bad world is a clear error rather than an endless retry.
+    std::shared_ptr<link::SimTransport> first;
+    try {
+      first = std::make_shared<link::SimTransport>(spec, o.speed);
+    } catch (const link::LinkError& e) {
+      throw CliError(std::string("connect: ") + e.what());
+    }
+    opener = [first, spec, speed = o.speed]() mutable -> std::unique_ptr<link::Transport> {
+      if (!first) throw link::LinkError("the stand-in brick was switched off");
+      // The stand-in lives as long as the console: hand out a proxy to the one instance.
+      struct Proxy : link::Transport {
+        std::shared_ptr<link::SimTransport> t;
+        size_t read(uint8_t* b, size_t c, int ms) override { return t->read(b, c, ms); }
+        void write(const uint8_t* d, size_t n) override { t->write(d, n); }
+        std::string describe() const override { return t->describe(); }
+      };
+      auto p = std::make_unique<Proxy>();
+      p->t = first;
+      return p;
+    };
+  } else {
+    opener = [spec] { return link::openTransport(spec); };
+  }
+
+  link::LinkRunner runner(opener, link::SessionConfig{});
+  runner.start();
+  console::Console console(runner, o.link);
+  const bool terminal = ::isatty(STDIN_FILENO) != 0;
+  const bool live = o.live && terminal && ::isatty(STDOUT_FILENO) != 0;
+
+  // Wait for the Hello to be answered.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(o.connectTimeoutS);
+  while (!runner.with([](link::Session& s) { return s.connected() || !s.error().empty(); })) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      const std::string why = runner.state();
+      runner.stop();
+      throw CliError("connect: no answer from the brick on " + o.link + " within " +
+                     std::to_string(static_cast<int>(o.connectTimeoutS)) + " s (" + why + ")");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  const std::string error = runner.with([](link::Session& s) { return s.error(); });
+  if (!error.empty()) {
+    runner.stop();
+    throw CliError("connect: " + error);
+  }
+  std::cout << "connected to " << o.link << " (type help for the commands)" << std::endl;
+
+  int failures = 0;
+  std::string line;
+  uint64_t drawn = 0;
+  auto lastDraw = std::chrono::steady_clock::now();
+  while (!console.quit()) {
+    // Live map: redraw when bytes arrived, at most 10 times a second.
+    if (live && runner.changes() != drawn && std::chrono::steady_clock::now() - lastDraw > std::chrono::milliseconds(100)) {
+      drawn = runner.changes();
+      lastDraw = std::chrono::steady_clock::now();
+      std::cout << "\033[H\033[2J" << console.renderMap() << console.statusLine() << "\n> " << std::flush;
+    }
+    const std::string note = console.poll();
+    if (!note.empty()) std::cout << note << std::flush;
+    pollfd p{STDIN_FILENO, POLLIN, 0};
+    if (::poll(&p, 1, 50) <= 0) continue;
+    if (!std::getline(std::cin, line)) break;
+    try {
+      const std::string out = console.execute(console::parseConsoleCommand(line));
+      std::cout << out << std::flush;
+    } catch (const console::ConsoleError& e) {
+      printError(e.what());
+      ++failures;
+    } catch (const std::invalid_argument& e) {
+      printError(e.what());
+      ++failures;
+    }
+  }
+  runner.stop();
+  // In a script, any refused command makes the run fail (exit 2); at a terminal, leaving is fine.
+  return (!terminal && failures > 0) ? kExitUsage : kExitOk;
+}
+
+}  // namespace nxtmap::cli

@@ -1,0 +1,23 @@
+// `nxtmap connect LINK`: the interactive console to a brick over bt:, serial:, tcp: (or the
+// in-process stand-in sim:WORLD). Commands come from the terminal (live map redrawn while the
+// brick explores) or, when stdin is not a terminal, one per line as a script.
+#pragma once
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace nxtmap::cli {
+
+struct ConnectOptions {
+  std::string link;
+  double speed = 1.0;        // sim: only: how much faster than real time the stand-in runs
+  double connectTimeoutS = 20;
+  bool live = true;          // redraw the map while the brick explores (terminals only)
+};
+
+CLI::App* addConnectCommand(CLI::App& app, ConnectOptions& options);
+int runConnect(const ConnectOptions& options);
+
+}  // namespace nxtmap::cli

@@ -1,0 +1,116 @@
+#include "host/console/ConsoleCommand.hpp"
+
+#include <cctype>
+#include <sstream>
+#include <vector>
+
+namespace nxtmap::console {
+namespace {
+
+int parseCell(const std::string& s, const char* what) {
+  if (s.empty() || s.size() > 5) throw ConsoleError(std::string(what) + " '" + s + "' is not a cell number");
+  for (char c : s) {
+    if (!std::isdigit(static_cast<unsigned char>(c))) throw ConsoleError(std::string(what) + " '" + s + "' is not a cell number (0, 1, 2, ...)");
+  }
+  return std::stoi(s);
+}
+
+void expectArgs(const std::vector<std::string>& w, size_t n, const char* form) {
+  if (w.size() != n) throw ConsoleError(std::string("usage: ") + form);
+}
+
+}  // namespace
+
+const char* consoleHelp() {
+  return "explore              start (or resume) exploring\n"
+         "stop                 stop the robot\n"
+         "goto C R             drive to map cell column C, row R (as the map shows them)\n"
+         "goto near LABEL      drive next to a labelled cell\n"
+         "label NAME C R       name a map cell\n"
+         "rooms                rooms seen in this session\n"
+         "route ROOM           route to another room (needs a house)\n"
+         "save FILE.yaml       save the map (ROS map_server YAML + PGM, labels kept)\n"
+         "export FILE.png      picture of the map\n"
+         "status               link, robot and map figures\n"
+         "battery              the brick's battery voltage\n"
+         "map                  print the map\n"
+         "wait explored|goal [SECONDS]   wait until exploring ends / the goal is reached\n"
+         "help                 this list\n"
+         "quit                 leave (the robot keeps its last command)\n";
+}
+
+ConsoleCommand parseConsoleCommand(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> w;
+  for (std::string t; in >> t;) w.push_back(t);
+  ConsoleCommand c;
+  if (w.empty() || w[0][0] == '#') return c;
+  const std::string& k = w[0];
+  if (k == "explore") {
+    expectArgs(w, 1, "explore");
+    c.kind = ConsoleCommand::Kind::Explore;
+  } else if (k == "stop") {
+    expectArgs(w, 1, "stop");
+    c.kind = ConsoleCommand::Kind::Stop;
+  } else if (k == "goto") {
+    if (w.size() == 3 && w[1] == "near") {
+      c.kind = ConsoleCommand::Kind::GotoNear;
+      c.name = w[2];
+    } else {
+      expectArgs(w, 3, "goto C R  or  goto near LABEL");
+      c.kind = ConsoleCommand::Kind::Goto;
+      c.col = parseCell(w[1], "column");
+      c.row = parseCell(w[2], "row");
+    }
+  } else if (k == "label") {
+    expectArgs(w, 4, "label NAME C R");
+    c.kind = ConsoleCommand::Kind::Label;
+    c.name = w[1];
+    c.col = parseCell(w[2], "column");
+    c.row = parseCell(w[3], "row");
+  } else if (k == "rooms") {
+    expectArgs(w, 1, "rooms");
+    c.kind = ConsoleCommand::Kind::Rooms;
+  } else if (k == "route") {
+    expectArgs(w, 2, "route ROOM");
+    c.kind = ConsoleCommand::Kind::Route;
+    c.name = w[1];
+  } else if (k == "save") {
+    expectArgs(w, 2, "save FILE.yaml");
+    c.kind = ConsoleCommand::Kind::Save;
+    c.name = w[1];
+    if (c.name.size() < 6 || c.name.substr(c.name.size() - 5) != ".yaml") throw ConsoleError("save needs a .yaml file name: save FILE.yaml");
+  } else if (k == "export") {
+    expectArgs(w, 2, "export FILE.png");
+    c.kind = ConsoleCommand::Kind::Export;
+    c.name = w[1];
+    if (c.name.size() < 5 || c.name.substr(c.name.size() - 4) != ".png") throw ConsoleError("export needs a .png file name: export FILE.png");
+  } else if (k == "status") {
+    expectArgs(w, 1, "status");
+    c.kind = ConsoleCommand::Kind::Status;
+  } else if (k == "battery") {
+    expectArgs(w, 1, "battery");
+    c.kind = ConsoleCommand::Kind::Battery;
+  } else if (k == "map") {
+    expectArgs(w, 1, "map");
+    c.kind = ConsoleCommand::Kind::Map;
+  } else if (k == "wait") {
+    if (w.size() < 2 || w.size() > 3 || (w[1] != "explored" && w[1] != "goal")) throw ConsoleError("usage: wait explored|goal [SECONDS]");
+    c.kind = ConsoleCommand::Kind::Wait;
+    c.name = w[1];
+    c.seconds = 600;
+    if (w.size() == 3) {
+      c.seconds = parseCell(w[2], "seconds");
+      if (c.seconds < 1) throw ConsoleError("wait: SECONDS must be at least 1");
+    }
+  } else if (k == "help" || k == "?") {
+    c.kind = ConsoleCommand::Kind::Help;
+  } else if (k == "quit" || k == "exit") {
+    c.kind = ConsoleCommand::Kind::Quit;
+  } else {
+    throw ConsoleError("unknown command '" + k + "' (type help for the list)");
+  }
+  return c;
+}
+
+}  // namespace nxtmap::console

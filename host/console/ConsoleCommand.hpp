@@ -1,0 +1,28 @@
+// ConsoleCommand: one line typed at `nxtmap connect`, parsed and checked before anything is sent.
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace nxtmap::console {
+
+struct ConsoleCommand {
+  enum class Kind { Explore, Stop, Goto, GotoNear, Label, Rooms, Route, Save, Export, Status, Battery, Map, Wait, Help, Quit, Empty };
+  Kind kind = Kind::Empty;
+  int col = 0, row = 0;   // Goto, Label: map cell (column right, row down, as the map display shows)
+  std::string name;       // Label, GotoNear: label; Route: room; Save/Export: file; Wait: what
+  double seconds = 0;     // Wait: the longest wait
+};
+
+// A malformed line: the message names what was wrong and the right form.
+class ConsoleError : public std::runtime_error {
+ public:
+  explicit ConsoleError(const std::string& m) : std::runtime_error(m) {}
+};
+
+// Parses one line; throws ConsoleError.
+ConsoleCommand parseConsoleCommand(const std::string& line);
+
+// The help text (one command per line).
+const char* consoleHelp();
+
+}  // namespace nxtmap::console

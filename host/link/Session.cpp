@@ -1,0 +1,230 @@
+#include "host/link/Session.hpp"
+
+#include <algorithm>
+#include <random>
+#include <stdexcept>
+
+#include "common/protocol/LegoCommands.hpp"
+
+namespace nxtmap::link {
+
+using namespace protocol;
+
+Session::Session(const SessionConfig& config) : config_(config) {
+  while (config_.session == 0) config_.session = std::random_device{}();
+}
+
+uint16_t Session::enqueue(Op op, const Payload& payload) {
+  nextSeq_ = nextSeq(nextSeq_);
+  Outgoing o{op, nextSeq_, payload};
+  outbox_.push_back(o);
+  return nextSeq_;
+}
+
+uint16_t Session::explore() { return enqueue(Op::Explore, Payload{}); }
+uint16_t Session::stop() { return enqueue(Op::Stop, Payload{}); }
+uint16_t Session::requestMap() { return enqueue(Op::RequestMap, Payload{}); }
+
+uint16_t Session::followPath(const std::vector<Cell>& cells, uint16_t pathId) {
+  if (cells.empty()) throw std::invalid_argument("a path needs at least one cell");
+  if (cells.size() > kMaxPathCells) {
+    throw std::invalid_argument("a path of " + std::to_string(cells.size()) + " cells is longer than " +
+                                std::to_string(kMaxPathCells));
+  }
+  PathMsg m;
+  m.pathId = pathId;
+  for (const Cell c : cells) {
+    if (!m.append(c)) throw std::invalid_argument("the path's cells must be 8-neighbours, one after another");
+  }
+  Payload p;
+  if (encodePath(m, p) == 0) throw std::invalid_argument("the path does not fit a packet");
+  return enqueue(Op::FollowPath, p);
+}
+
+void Session::uploadMap(const Bounds& window, const std::vector<CellState>& rowMajor, uint16_t transferId) {
+  const size_t total = static_cast<size_t>(window.width()) * static_cast<size_t>(window.height());
+  if (window.empty() || window.width() > 128 || window.height() > 128 || rowMajor.size() != total) {
+    throw std::invalid_argument("a map to upload must be 1..128 cells on each side, one state per cell");
+  }
+  const uint16_t chunks = static_cast<uint16_t>((total + kChunkCells - 1) / kChunkCells);
+  for (uint16_t k = 0; k < chunks; ++k) {
+    MapChunkMsg m;
+    m.transferId = transferId;
+    m.chunkIndex = k;
+    m.chunkCount = chunks;
+    m.window = window;
+    m.offset = static_cast<uint16_t>(k * kChunkCells);
+    m.count = static_cast<uint16_t>(std::min<size_t>(kChunkCells, total - m.offset));
+    for (uint16_t i = 0; i < m.count; ++i) m.setState(i, rowMajor[m.offset + i]);
+    Payload p;
+    encodeMapChunk(m, p);
+    enqueue(Op::MapChunk, p);
+  }
+}
+
+bool Session::acknowledged(uint16_t seq) const {
+  return std::find(acknowledgedSeqs_.begin(), acknowledgedSeqs_.end(), seq) != acknowledgedSeqs_.end();
+}
+
+void Session::linkLost() {
+  connected_ = false;
+  helloSent_ = false;
+  decoder_.reset();
+  for (Outgoing& o : outbox_) o.sent = false;  // will go again (same seq) after the Hello
+}
+
+void Session::receive(const uint8_t* data, size_t size, uint32_t nowMs) {
+  counters_.bytesIn += size;
+  Telegram t;
+  for (size_t i = 0; i < size; ++i) {
+    decoder_.push(data[i]);
+    while (decoder_.pop(t)) handle(t, nowMs);
+  }
+}
+
+void Session::handle(const Telegram& t, uint32_t nowMs) {
+  ++counters_.packetsIn;
+  if (t.type() == kTypeReply) {
+    uint8_t status = 0;
+    uint16_t mv = 0;
+    if (decodeBatteryReply(t, status, mv) && status == kLegoOk) legoBattery_ = mv;
+    return;
+  }
+  PacketView v;
+  if (!parsePacket(t, v)) return;
+  if (v.header.op == Op::HelloReply) {
+    HelloReplyMsg reply;
+    if (!decodeHelloReply(v.payload, v.payloadSize, reply)) return;
+    if (reply.version != kProtocolVersion) {
+      error_ = "the brick speaks protocol version " + std::to_string(reply.version) + ", this console " +
+               std::to_string(kProtocolVersion) + ": flash the matching firmware";
+      return;
+    }
+    if (reply.session != config_.session || connected_) return;
+    if (reply.freshSession) {
+      map_.clear();      // the brick does not know us: whatever we hold may be stale
+      received_.reset();
+    }
+    hello_ = reply;
+    connected_ = true;
+    ++counters_.connects;
+    return;
+  }
+  if (!connected_ || v.header.version != kProtocolVersion) return;
+  // Acknowledgements of our commands (stop-and-wait: only the front can be in flight).
+  while (!outbox_.empty() && outbox_.front().sent && acknowledges(v.header.ack, v.header.ackMask, outbox_.front().seq)) {
+    acknowledgedSeqs_.push_back(outbox_.front().seq);
+    outbox_.pop_front();
+    ++counters_.commandsAcknowledged;
+  }
+  switch (v.header.op) {
+    case Op::MapDelta: {
+      if (!v.header.reliable()) return;
+      counters_.deltaBytes += kLengthPrefix + t.size;
+      const uint64_t before = map_.changes();
+      if (map_.applyDelta(v.payload, v.payloadSize)) {
+        ++counters_.deltasApplied;
+        if (map_.changes() != before) lastMapChangeMs_ = nowMs;
+      }
+      // Acknowledged even when malformed: a resend would be the same bytes.
+      received_.record(v.header.seq);
+      ackOwed_ = true;
+      break;
+    }
+    case Op::Status: {
+      StatusMsg s;
+      if (decodeStatus(v.payload, v.payloadSize, s)) {
+        status_ = s;
+        if (map_.hasEpoch() && s.mapEpoch != map_.epoch()) {
+          // A new epoch whose first delta has not arrived yet: the old copy is void.
+          map_.clear();
+        }
+      }
+      break;
+    }
+    case Op::Counters: {
+      CountersMsg m;
+      if (decodeCounters(v.payload, v.payloadSize, m)) brickCounters_ = m;
+      break;
+    }
+    case Op::Pose: {
+      PoseMsg m;
+      if (decodePose(v.payload, v.payloadSize, m)) pose_ = m.pose;
+      break;
+    }
+    case Op::PathProgress: {
+      PathProgressMsg m;
+      if (decodePathProgress(v.payload, v.payloadSize, m)) path_ = m;
+      break;
+    }
+    case Op::NewRoom: {
+      NewRoomMsg m;
+      if (decodeNewRoom(v.payload, v.payloadSize, m)) room_ = m;
+      break;
+    }
+    case Op::Battery: {
+      BatteryMsg m;
+      if (decodeBattery(v.payload, v.payloadSize, m)) battery_ = m.millivolts;
+      break;
+    }
+    default:
+      break;
+  }
+}
+
+void Session::append(std::vector<uint8_t>& out, Op op, uint16_t seq, const Payload& payload) {
+  PacketHeader h;
+  h.op = op;
+  h.flags = seq != 0 ? kFlagReliable : 0;
+  h.seq = seq;
+  h.ack = received_.ack();
+  h.ackMask = received_.ackMask();
+  Frame f;
+  if (!encodePacket(h, payload.bytes, payload.size, f)) return;
+  out.insert(out.end(), f.bytes, f.bytes + f.size);
+  ackOwed_ = false;
+}
+
+std::vector<uint8_t> Session::transmit(uint32_t nowMs) {
+  std::vector<uint8_t> out;
+  if (legoBatteryRequested_) {
+    legoBatteryRequested_ = false;
+    Frame f;
+    encodeGetBatteryLevel(f);
+    out.insert(out.end(), f.bytes, f.bytes + f.size);
+  }
+  if (!connected_) {
+    if (!helloSent_ || nowMs - helloMs_ >= config_.helloRetryMs) {
+      helloSent_ = true;
+      helloMs_ = nowMs;
+      Payload p;
+      encodeHello(HelloMsg{kProtocolVersion, config_.session, !map_.hasEpoch()}, p);
+      append(out, Op::Hello, 0, p);
+    }
+  } else {
+    if (batteryRequested_) {
+      batteryRequested_ = false;
+      append(out, Op::BatteryRequest, 0, Payload{});
+    }
+    if (!outbox_.empty()) {
+      Outgoing& o = outbox_.front();
+      if (!o.sent || nowMs - o.sentMs >= config_.commandRetryMs) {
+        if (o.sent) ++counters_.commandRetries;
+        else ++counters_.commandsSent;
+        o.sent = true;
+        o.sentMs = nowMs;
+        append(out, o.op, o.seq, o.payload);
+      }
+    }
+    if (ackOwed_) {
+      // Acks are small and the way back is idle: two copies, so one damaged byte does not
+      // cost the brick a retransmission.
+      append(out, Op::Ack, 0, Payload{});
+      append(out, Op::Ack, 0, Payload{});
+    }
+  }
+  counters_.bytesOut += out.size();
+  return out;
+}
+
+}  // namespace nxtmap::link

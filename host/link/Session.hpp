@@ -1,0 +1,122 @@
+// Session: the PC's end of the radio link, as a state machine without I/O. Feed it received
+// bytes and the time; ask it for bytes to send. It says Hello until the brick answers, keeps
+// the MirrorMap equal to the brick's grid (applying and acknowledging map deltas), sends
+// commands one at a time until each is acknowledged (the same sequence number every time, so
+// the brick runs it once), and starts over with Hello after linkLost().
+#pragma once
+#include <cstdint>
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/protocol/FrameDecoder.hpp"
+#include "common/protocol/Messages.hpp"
+#include "common/protocol/Packet.hpp"
+#include "common/protocol/SeqWindow.hpp"
+#include "host/link/MirrorMap.hpp"
+
+namespace nxtmap::link {
+
+struct SessionConfig {
+  uint32_t session = 0;         // 0: pick a random one
+  uint32_t helloRetryMs = 250;  // Hello again until the brick answers
+  uint32_t commandRetryMs = 250;
+};
+
+// Figures of one session, for status and benchmarks.
+struct SessionCounters {
+  uint64_t bytesIn = 0, bytesOut = 0;
+  uint64_t packetsIn = 0;
+  uint64_t deltasApplied = 0;
+  uint64_t deltaBytes = 0;         // wire bytes of the map deltas received (frames whole)
+  uint64_t commandsSent = 0;       // first transmissions
+  uint64_t commandRetries = 0;     // repeated transmissions
+  uint64_t commandsAcknowledged = 0;
+  uint64_t connects = 0;           // HelloReplies that opened the session
+};
+
+class Session {
+ public:
+  explicit Session(const SessionConfig& config = {});
+
+  void receive(const uint8_t* data, size_t size, uint32_t nowMs);
+  // Bytes to send now (may be empty).
+  std::vector<uint8_t> transmit(uint32_t nowMs);
+  // The transport dropped: bytes in flight are gone; say Hello again.
+  void linkLost();
+
+  // Commands, queued and sent in order. Each returns its sequence number.
+  uint16_t explore();
+  uint16_t stop();
+  // A path of 8-neighbour cells (cell 0 = the robot's cell), at most kMaxPathCells cells.
+  // Throws std::invalid_argument for an empty, too long or broken path.
+  uint16_t followPath(const std::vector<Cell>& cells, uint16_t pathId);
+  // Asks for the whole map again (the brick starts a new epoch; the copy is rebuilt).
+  uint16_t requestMap();
+  // Sends a whole map to the brick in chunks (window + row-major states).
+  void uploadMap(const Bounds& window, const std::vector<CellState>& rowMajor, uint16_t transferId);
+  void requestBattery() { batteryRequested_ = true; }
+  // LEGO GET_BATTERY_LEVEL, as any NXT tool sends it (answer in legoBatteryMillivolts()).
+  void requestLegoBattery() { legoBatteryRequested_ = true; }
+
+  bool connected() const { return connected_; }
+  // Whether every queued command has been acknowledged.
+  bool commandsDone() const { return outbox_.empty(); }
+  bool acknowledged(uint16_t seq) const;
+  const std::string& error() const { return error_; }  // e.g. a protocol version mismatch
+
+  const MirrorMap& map() const { return map_; }
+  const std::optional<protocol::StatusMsg>& status() const { return status_; }
+  const std::optional<protocol::CountersMsg>& brickCounters() const { return brickCounters_; }
+  const std::optional<Pose>& pose() const { return pose_; }
+  const std::optional<protocol::PathProgressMsg>& pathProgress() const { return path_; }
+  const std::optional<protocol::NewRoomMsg>& room() const { return room_; }
+  const std::optional<uint16_t>& batteryMillivolts() const { return battery_; }
+  const std::optional<uint16_t>& legoBatteryMillivolts() const { return legoBattery_; }
+  const std::optional<protocol::HelloReplyMsg>& hello() const { return hello_; }
+  const SessionCounters& counters() const { return counters_; }
+  const protocol::DecoderCounters& decoderCounters() const { return decoder_.counters(); }
+  uint32_t sessionId() const { return config_.session; }
+  // Time (ms, the caller's clock) of the last map delta that changed the copy.
+  uint32_t lastMapChangeMs() const { return lastMapChangeMs_; }
+
+ private:
+  struct Outgoing {
+    protocol::Op op;
+    uint16_t seq;
+    protocol::Payload payload;
+    bool sent = false;
+    uint32_t sentMs = 0;
+  };
+  uint16_t enqueue(protocol::Op op, const protocol::Payload& payload);
+  void handle(const protocol::Telegram& t, uint32_t nowMs);
+  void append(std::vector<uint8_t>& out, protocol::Op op, uint16_t seq, const protocol::Payload& payload);
+
+  SessionConfig config_;
+  protocol::FrameDecoder decoder_;
+  protocol::SeqWindow received_;  // the brick's reliable seqs (map deltas)
+  MirrorMap map_;
+  std::deque<Outgoing> outbox_;
+  uint16_t nextSeq_ = 0;
+  bool connected_ = false;
+  bool ackOwed_ = false;
+  bool batteryRequested_ = false;
+  bool legoBatteryRequested_ = false;
+  bool helloSent_ = false;
+  uint32_t helloMs_ = 0;
+  std::string error_;
+  std::optional<protocol::StatusMsg> status_;
+  std::optional<protocol::CountersMsg> brickCounters_;
+  std::optional<Pose> pose_;
+  std::optional<protocol::PathProgressMsg> path_;
+  std::optional<protocol::NewRoomMsg> room_;
+  std::optional<uint16_t> battery_;
+  std::optional<uint16_t> legoBattery_;
+  std::optional<protocol::HelloReplyMsg> hello_;
+  SessionCounters counters_;
+  uint32_t lastMapChangeMs_ = 0;
+  std::vector<uint16_t> acknowledgedSeqs_;
+};
+
+}  // namespace nxtmap::link

@@ -1,0 +1,63 @@
+#include "host/link/SimTransport.hpp"
+
+#include <algorithm>
+#include <thread>
+
+namespace nxtmap::link {
+
+SimTransport::SimTransport(const LinkSpec& spec, double speed)
+    : description_(spec.text), speed_(speed), start_(std::chrono::steady_clock::now()) {
+  sim::WorldLoad load = sim::World::load(spec.address);
+  if (!load.world) throw LinkError(load.error);
+  world_ = std::make_unique<sim::World>(std::move(*load.world));
+  SimBrickConfig c;
+  if (spec.col >= 0) {
+    c.run.startCol = spec.col;
+    c.run.startRow = spec.row;
+  } else {
+    // The first free cell, scanning rows from the top.
+    bool found = false;
+    for (int r = 0; r < world_->height() && !found; ++r) {
+      for (int col = 0; col < world_->width() && !found; ++col) {
+        if (!world_->blocked(col, r)) {
+          c.run.startCol = col;
+          c.run.startRow = r;
+          found = true;
+        }
+      }
+    }
+    if (!found) throw LinkError("world " + spec.address + " has no free cell to start in");
+  }
+  if (!world_->inside(c.run.startCol, c.run.startRow) || world_->blocked(c.run.startCol, c.run.startRow)) {
+    throw LinkError("start cell " + std::to_string(c.run.startCol) + "," + std::to_string(c.run.startRow) +
+                    " is not a free cell of " + spec.address);
+  }
+  brick_ = std::make_unique<SimBrick>(*world_, c);
+}
+
+uint32_t SimTransport::nowMs() const {
+  const auto elapsed = std::chrono::steady_clock::now() - start_;
+  return static_cast<uint32_t>(std::chrono::duration<double, std::milli>(elapsed).count() * speed_);
+}
+
+size_t SimTransport::read(uint8_t* buffer, size_t capacity, int timeoutMs) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeoutMs);
+  while (true) {
+    const uint32_t now = nowMs();
+    brick_->step(now);
+    credit_ = std::min(credit_ + (now - lastMs_) * 46.08, 4096.0);
+    lastMs_ = now;
+    const std::vector<uint8_t> out = brick_->transmit(now, std::min(capacity, static_cast<size_t>(credit_)));
+    if (!out.empty()) {
+      credit_ -= static_cast<double>(out.size());
+      std::copy(out.begin(), out.end(), buffer);
+      return out.size();
+    }
+    if (std::chrono::steady_clock::now() >= deadline) return 0;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
+void SimTransport::write(const uint8_t* data, size_t size) { brick_->receive(data, size); }
+
+}  // namespace nxtmap::link

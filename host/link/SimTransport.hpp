@@ -1,0 +1,36 @@
+// SimTransport: the in-process stand-in brick (SimBrick) behind the Transport interface, on the
+// wall clock (optionally sped up), so the console can talk to `sim:WORLD` exactly as to a real
+// link. It passes bytes at the radio's 460800 baud.
+#pragma once
+#include <chrono>
+#include <memory>
+
+#include "host/link/SimBrick.hpp"
+#include "host/link/Transport.hpp"
+#include "host/sim/World.hpp"
+
+namespace nxtmap::link {
+
+class SimTransport : public Transport {
+ public:
+  // Loads the world of a sim: link; throws LinkError for a bad world or start cell.
+  SimTransport(const LinkSpec& spec, double speed = 1.0);
+
+  size_t read(uint8_t* buffer, size_t capacity, int timeoutMs) override;
+  void write(const uint8_t* data, size_t size) override;
+  std::string describe() const override { return description_; }
+  const SimBrick& brick() const { return *brick_; }
+
+ private:
+  uint32_t nowMs() const;
+
+  std::unique_ptr<sim::World> world_;
+  std::unique_ptr<SimBrick> brick_;
+  std::string description_;
+  double speed_;
+  std::chrono::steady_clock::time_point start_;
+  double credit_ = 0;
+  uint32_t lastMs_ = 0;
+};
+
+}  // namespace nxtmap::link
