@@ -9,6 +9,7 @@
 #include "host/cli/Errors.hpp"
 #include "host/cli/ExperimentsCommand.hpp"
 #include "host/cli/SimCommand.hpp"
+#include "host/cli/SimHouseCommand.hpp"
 
 namespace nxtmap::cli {
 
@@ -19,14 +20,16 @@ int runCli(int argc, char** argv) {
   ExperimentsOptions experimentsOptions;
   CLI::App* sim = addSimCommand(app, simOptions);
   CLI::App* experiments = addExperimentsCommand(app, experimentsOptions);
+  SimHouseOptions simHouseOptions;
+  CLI::App* simHouse = addSimHouseCommand(app, simHouseOptions);
   app.footer("Examples:\n  nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live\n"
              "  nxtmap experiments worlds/seed-appendix-a --strategy both --csv results.csv --plots plots");
 
   try {
     if (argc > 1 && argv[1][0] != '-') {
       const std::string command = argv[1];
-      if (command != sim->get_name() && command != experiments->get_name()) {
-        throw CliError("unknown command '" + command + "' (commands: sim, experiments; see nxtmap --help)");
+      if (command != sim->get_name() && command != experiments->get_name() && command != simHouse->get_name()) {
+        throw CliError("unknown command '" + command + "' (commands: sim, experiments, sim-house; see nxtmap --help)");
       }
     }
     try {
@@ -36,10 +39,12 @@ int runCli(int argc, char** argv) {
       std::string where;
       if (sim->parsed()) where = "sim: ";
       if (experiments->parsed()) where = "experiments: ";
+      if (simHouse->parsed()) where = "sim-house: ";
       throw CliError(where + e.what());
     }
     if (sim->parsed()) return runSim(simOptions);
     if (experiments->parsed()) return runExperiments(experimentsOptions);
+    if (simHouse->parsed()) return runSimHouse(simHouseOptions);
     std::cout << app.help();
     throw CliError("no command given: use 'sim' or 'experiments' (see nxtmap --help)");
   } catch (const CliError& e) {

@@ -1,0 +1,87 @@
+// HouseMapper: maps a house in the simulator room by room (method section 5): map the room
+// (RoomRun), record its exits; then pick the nearest unexplored exit, plan to it over what is
+// known, pass through, start a new room map with its origin at the entrance, map it and record
+// the gateway; repeat until no unexplored exit is left. An exit that leads into a room already
+// mapped becomes a gateway to it without a new run. One simulated robot keeps its true pose
+// throughout; everything the mapper decides uses only its believed pose and its maps.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "common/explore/Counters.hpp"
+#include "common/interpret/Doorway.hpp"
+#include "host/house/RoomRun.hpp"
+#include "host/mapping/FrameTransform.hpp"
+#include "host/mapping/Strategy.hpp"
+#include "host/network/HouseNetwork.hpp"
+#include "host/sim/NoiseProfile.hpp"
+#include "host/sim/World.hpp"
+
+namespace nxtmap::house {
+
+struct HouseConfig {
+  int startCol = 0, startRow = 0;           // start cell in the world
+  sim::Heading heading = sim::Heading::N;   // initial heading in the world (= house frame +y)
+  double rangeM = 1.0, minRangeM = 0.05;    // trusted sensor range (published: 5 cm - 1 m)
+  double sensorReachCm = 255.0;
+  sim::NoiseProfile noise;
+  uint64_t seed = 1;
+  mapping::Strategy strategy = mapping::Strategy::Propagation;
+  DoorwayLimits doorways{};
+  int maxRooms = 40;                        // safety stop
+};
+
+struct HouseCounters {
+  Counters explore;                 // summed over the room runs
+  uint32_t travelCells = 0;         // cells driven between rooms (to exits, through doorways)
+  uint32_t travelTurnEighths = 0;
+  uint32_t travelBlocked = 0;       // moves between rooms that bumped into something
+  double timeUnits() const {
+    return (explore.timeHalfUnits() + 2.0 * travelCells + travelTurnEighths) / 2.0;
+  }
+};
+
+class HouseMapper {
+ public:
+  HouseMapper(const sim::World& world, const HouseConfig& config);
+
+  // Maps the whole house (every exit reachable from the start). Returns the number of rooms.
+  int run();
+
+  const network::HouseNetwork& network() const { return network_; }
+  network::HouseNetwork& network() { return network_; }
+  const HouseCounters& counters() const { return counters_; }
+  int exitsFound() const { return exitsFound_; }
+  int exitsUnreached() const { return exitsUnreached_; }   // exits the robot could not get through
+  const sim::SimRobot& robot() const { return robot_; }
+  const sim::World& world() const { return world_; }
+  const HouseConfig& config() const { return config_; }
+  const ExplorerConfig& explorerConfig() const { return explorerConfig_; }
+  // House frame (room 0: origin at the start, +y the initial heading) <-> world cells.
+  const mapping::FrameTransform& houseFrame() const { return frame_; }
+
+ private:
+  struct Pending {
+    int room;
+    RoomExit exit;  // in the room's frame
+  };
+  void mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, const RoomExit* via);
+  bool leadsToMappedRoom(const Pending& p);
+  bool driveTo(Cell target, const network::RoomMap& known);
+  bool step(Dir d);
+
+  const sim::World& world_;
+  HouseConfig config_;
+  ExplorerConfig explorerConfig_;
+  mapping::FrameTransform frame_;
+  sim::SimRobot robot_;
+  network::HouseNetwork network_;
+  HouseCounters counters_;
+  Pose belief_;  // in the house frame
+  std::vector<Pending> pending_;
+  int exitsFound_ = 0;
+  int exitsUnreached_ = 0;
+};
+
+}  // namespace nxtmap::house

@@ -1,0 +1,65 @@
+#include "host/house/HouseScore.hpp"
+
+#include "host/sim/WorldTruth.hpp"
+
+namespace nxtmap::house {
+namespace {
+CellState beliefAt(const HouseMapper& m, const network::RoomMap& merged, int col, int row) {
+  return merged.at(m.houseFrame().toExplorer(col, row));
+}
+}  // namespace
+
+HouseScore scoreHouse(const HouseMapper& m) {
+  const sim::World& world = m.world();
+  const RangeGeometry& g = m.explorerConfig().geometry;
+  const sim::Observability obs =
+      sim::computeObservability(world, m.config().startCol, m.config().startRow, g.freeCells(), g.hitCells());
+  const network::RoomMap merged = m.network().merged();
+  HouseScore s;
+  s.rooms = static_cast<int>(m.network().rooms().size());
+  s.gateways = static_cast<int>(m.network().gateways().size());
+  for (int row = 0; row < world.height(); ++row) {
+    for (int col = 0; col < world.width(); ++col) {
+      const bool blocked = world.blocked(col, row);
+      const CellState b = beliefAt(m, merged, col, row);
+      const bool disagree = b != CellState::Unknown && ((b == CellState::Occupied) != blocked);
+      if (obs.observable[static_cast<size_t>(row * world.width() + col)] == 0) {
+        if (disagree) ++s.wrongElsewhere;
+        continue;
+      }
+      ++s.observable;
+      if (b == CellState::Unknown) {
+        ++s.unknown;
+      } else if (disagree) {
+        ++s.wrong;
+      } else {
+        ++s.agree;
+      }
+    }
+  }
+  return s;
+}
+
+PlanCoverage planCoverage(const HouseMapper& m, const HousePlan& plan, double minPct) {
+  const sim::World& world = m.world();
+  const sim::Observability obs = sim::computeObservability(world, m.config().startCol, m.config().startRow, 1, 1);
+  const network::RoomMap merged = m.network().merged();
+  PlanCoverage c;
+  c.planRooms = static_cast<int>(plan.rooms.size());
+  for (const PlanRoom& r : plan.rooms) {
+    int reachable = 0, mapped = 0;
+    for (int row = r.minRow; row <= r.maxRow; ++row) {
+      for (int col = r.minCol; col <= r.maxCol; ++col) {
+        if (!world.inside(col, row) || obs.reachable[static_cast<size_t>(row * world.width() + col)] == 0) continue;
+        ++reachable;
+        if (beliefAt(m, merged, col, row) == CellState::Free) ++mapped;
+      }
+    }
+    if (reachable == 0) continue;
+    ++c.reachable;
+    if (100.0 * mapped >= minPct * reachable) ++c.covered;
+  }
+  return c;
+}
+
+}  // namespace nxtmap::house
