@@ -64,6 +64,10 @@ void addInnerDoorways(const RoomGrid& grid, const DoorwayLimits& limits, RoomInt
   if (more) r.moreExits = true;
   for (uint8_t i = 0; i < n; ++i) {
     const Doorway& d = found[i];
+    // A "doorway" from one outer wall to the opposite one is a cross-section of a narrow room.
+    const bool wallToWall = d.alongX ? (d.first.x - 1 == r.wallLine[3] && d.first.x + d.width == r.wallLine[1])
+                                     : (d.first.y - 1 == r.wallLine[2] && d.first.y + d.width == r.wallLine[0]);
+    if (wallToWall) continue;
     Side side;
     if (d.alongX) {
       side = (r.wallLine[0] - d.first.y) <= (d.first.y - r.wallLine[2]) ? Side::North : Side::South;
