@@ -7,6 +7,7 @@
 
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
+#include "host/cli/ExportCommand.hpp"
 #include "host/cli/ExperimentsCommand.hpp"
 #include "host/cli/SimCommand.hpp"
 #include "host/cli/SimHouseCommand.hpp"
@@ -22,14 +23,18 @@ int runCli(int argc, char** argv) {
   CLI::App* experiments = addExperimentsCommand(app, experimentsOptions);
   SimHouseOptions simHouseOptions;
   CLI::App* simHouse = addSimHouseCommand(app, simHouseOptions);
+  ExportOptions exportOptions;
+  CLI::App* exportCmd = addExportCommand(app, exportOptions);
   app.footer("Examples:\n  nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live\n"
              "  nxtmap experiments worlds/seed-appendix-a --strategy both --csv results.csv --plots plots");
 
   try {
     if (argc > 1 && argv[1][0] != '-') {
       const std::string command = argv[1];
-      if (command != sim->get_name() && command != experiments->get_name() && command != simHouse->get_name()) {
-        throw CliError("unknown command '" + command + "' (commands: sim, experiments, sim-house; see nxtmap --help)");
+      if (command != sim->get_name() && command != experiments->get_name() && command != simHouse->get_name() &&
+          command != exportCmd->get_name()) {
+        throw CliError("unknown command '" + command +
+                       "' (commands: sim, experiments, sim-house, export; see nxtmap --help)");
       }
     }
     try {
@@ -40,11 +45,13 @@ int runCli(int argc, char** argv) {
       if (sim->parsed()) where = "sim: ";
       if (experiments->parsed()) where = "experiments: ";
       if (simHouse->parsed()) where = "sim-house: ";
+      if (exportCmd->parsed()) where = "export: ";
       throw CliError(where + e.what());
     }
     if (sim->parsed()) return runSim(simOptions);
     if (experiments->parsed()) return runExperiments(experimentsOptions);
     if (simHouse->parsed()) return runSimHouse(simHouseOptions);
+    if (exportCmd->parsed()) return runExport(exportOptions);
     std::cout << app.help();
     throw CliError("no command given: use 'sim' or 'experiments' (see nxtmap --help)");
   } catch (const CliError& e) {

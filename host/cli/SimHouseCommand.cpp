@@ -11,6 +11,7 @@
 #include "host/house/HouseExpoPlan.hpp"
 #include "host/house/HouseMapper.hpp"
 #include "host/house/HouseScore.hpp"
+#include "host/network/HouseFiles.hpp"
 #include "host/report/ExperimentTable.hpp"
 
 namespace nxtmap::cli {
@@ -61,6 +62,7 @@ int runSimHouse(const SimHouseOptions& o) {
 
   house::HouseMapper mapper(world, config);
   mapper.run();
+  if (plan) house::labelRoomsFromPlan(mapper, *plan);
   const house::HouseScore s = house::scoreHouse(mapper);
   const house::HouseCounters& c = mapper.counters();
   const auto num = [](double v) { return report::formatNumber(v, 1); };
@@ -93,6 +95,12 @@ int runSimHouse(const SimHouseOptions& o) {
       << "sensor requests  " << c.explore.sensorRequests << "\n"
       << "raw samples      " << c.explore.rawSamples << "\n";
   std::cout << out.str() << std::flush;
+  if (!o.save.empty()) {
+    std::string error;
+    if (!network::saveHouse(mapper.network(), world.resolutionM(), o.save, error)) throw CliError(error);
+    std::cout << "saved            " << o.save << " (" << mapper.network().rooms().size() << " room maps + "
+              << network::kHouseFileName << ")\n";
+  }
   return kExitOk;
 }
 

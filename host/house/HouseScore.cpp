@@ -2,6 +2,11 @@
 
 #include "host/sim/WorldTruth.hpp"
 
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <string>
+
 namespace nxtmap::house {
 namespace {
 CellState beliefAt(const HouseMapper& m, const network::RoomMap& merged, int col, int row) {
@@ -60,6 +65,40 @@ PlanCoverage planCoverage(const HouseMapper& m, const HousePlan& plan, double mi
     if (100.0 * mapped >= minPct * reachable) ++c.covered;
   }
   return c;
+}
+
+void labelRoomsFromPlan(HouseMapper& m, const HousePlan& plan) {
+  auto& rooms = m.network().rooms();
+  std::map<std::string, int> used;
+  for (const PlanRoom& r : plan.rooms) {
+    std::string base;
+    for (const char ch : r.category) base += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (base.empty() || !std::isalpha(static_cast<unsigned char>(base[0]))) base = "room_" + base;
+    // The free mapped cell nearest the box's centre, inside the box.
+    const double cc = (r.minCol + r.maxCol) / 2.0, cr = (r.minRow + r.maxRow) / 2.0;
+    int bestRoom = -1;
+    Cell bestCell{};
+    double bestD = 0.0;
+    for (int row = r.minRow; row <= r.maxRow; ++row) {
+      for (int col = r.minCol; col <= r.maxCol; ++col) {
+        const Cell h = m.houseFrame().toExplorer(col, row);
+        const double d = std::hypot(col - cc, row - cr);
+        if (bestRoom >= 0 && d >= bestD) continue;
+        for (size_t k = 0; k < rooms.size(); ++k) {
+          const Cell local = rooms[k].toHouse.inverse().apply(h);
+          if (!rooms[k].map.isFree(local)) continue;
+          bestRoom = static_cast<int>(k);
+          bestCell = local;
+          bestD = d;
+          break;
+        }
+      }
+    }
+    if (bestRoom < 0) continue;
+    const int n = ++used[base];
+    const std::string name = n == 1 ? base : base + "_" + std::to_string(n);
+    rooms[static_cast<size_t>(bestRoom)].labels[name] = bestCell;
+  }
 }
 
 }  // namespace nxtmap::house

@@ -30,4 +30,9 @@ struct PlanCoverage {
 };
 PlanCoverage planCoverage(const HouseMapper& mapper, const HousePlan& plan, double minPct = 90.0);
 
+// Names the mapped rooms after the plan: each plan room box whose centre (or nearest free cell
+// to it) is a free cell of a room map gets a label there, the category in lower case ("kitchen",
+// "kitchen_2" for a second one). The user's naming of rooms, in the simulator.
+void labelRoomsFromPlan(HouseMapper& mapper, const HousePlan& plan);
+
 }  // namespace nxtmap::house
