@@ -199,6 +199,10 @@ HouseLoad loadHouse(const std::string& dir) {
         out.error = where + ": room name '" + node.name + "' is not 1-64 of A-Z a-z 0-9 _ - starting with a letter";
         return out;
       }
+      if (net.roomIndex(node.name) >= 0) {
+        out.error = where + ": two rooms are named '" + node.name + "'";
+        return out;
+      }
       const std::string mapFile = r["map"] ? r["map"].as<std::string>() : "";
       if (mapFile.empty() || mapFile.find('/') != std::string::npos) {
         out.error = where + ": room '" + node.name + "' needs 'map', a file name in the house directory";
