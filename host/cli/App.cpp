@@ -9,6 +9,8 @@
 #include "host/cli/Errors.hpp"
 #include "host/cli/ExportCommand.hpp"
 #include "host/cli/ExperimentsCommand.hpp"
+#include "host/cli/PathCommand.hpp"
+#include "host/cli/PathsCommand.hpp"
 #include "host/cli/SimCommand.hpp"
 #include "host/cli/SimHouseCommand.hpp"
 
@@ -21,20 +23,26 @@ int runCli(int argc, char** argv) {
   ExperimentsOptions experimentsOptions;
   CLI::App* sim = addSimCommand(app, simOptions);
   CLI::App* experiments = addExperimentsCommand(app, experimentsOptions);
+  PathOptions pathOptions;
+  PathsOptions pathsOptions;
+  CLI::App* path = addPathCommand(app, pathOptions);
+  CLI::App* paths = addPathsCommand(app, pathsOptions);
   SimHouseOptions simHouseOptions;
   CLI::App* simHouse = addSimHouseCommand(app, simHouseOptions);
   ExportOptions exportOptions;
   CLI::App* exportCmd = addExportCommand(app, exportOptions);
   app.footer("Examples:\n  nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live\n"
-             "  nxtmap experiments worlds/seed-appendix-a --strategy both --csv results.csv --plots plots");
+             "  nxtmap experiments worlds/seed-appendix-a --strategy both --csv results.csv --plots plots\n"
+             "  nxtmap path worlds/seed-appendix-a/occupancy-120.map --from 1,20 --to 20,1 --algo seed\n"
+             "  nxtmap paths worlds/movingai/dao/arena2.map --scen worlds/movingai/dao/arena2.map.scen --algo jps");
 
   try {
     if (argc > 1 && argv[1][0] != '-') {
       const std::string command = argv[1];
-      if (command != sim->get_name() && command != experiments->get_name() && command != simHouse->get_name() &&
-          command != exportCmd->get_name()) {
+      if (command != sim->get_name() && command != experiments->get_name() && command != path->get_name() &&
+          command != paths->get_name() && command != simHouse->get_name() && command != exportCmd->get_name()) {
         throw CliError("unknown command '" + command +
-                       "' (commands: sim, experiments, sim-house, export; see nxtmap --help)");
+                       "' (commands: sim, experiments, path, paths, sim-house, export; see nxtmap --help)");
       }
     }
     try {
@@ -44,16 +52,20 @@ int runCli(int argc, char** argv) {
       std::string where;
       if (sim->parsed()) where = "sim: ";
       if (experiments->parsed()) where = "experiments: ";
+      if (path->parsed()) where = "path: ";
+      if (paths->parsed()) where = "paths: ";
       if (simHouse->parsed()) where = "sim-house: ";
       if (exportCmd->parsed()) where = "export: ";
       throw CliError(where + e.what());
     }
     if (sim->parsed()) return runSim(simOptions);
     if (experiments->parsed()) return runExperiments(experimentsOptions);
+    if (path->parsed()) return runPath(pathOptions);
+    if (paths->parsed()) return runPaths(pathsOptions);
     if (simHouse->parsed()) return runSimHouse(simHouseOptions);
     if (exportCmd->parsed()) return runExport(exportOptions);
     std::cout << app.help();
-    throw CliError("no command given: use 'sim' or 'experiments' (see nxtmap --help)");
+    throw CliError("no command given: use sim, experiments, path, paths, sim-house or export (see nxtmap --help)");
   } catch (const CliError& e) {
     printError(e.what());
     return kExitUsage;

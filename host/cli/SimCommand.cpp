@@ -41,7 +41,7 @@ const char* endName(ExplorerEnd e) {
 
 std::string statusLine(const mapping::MappingRun& run) {
   std::ostringstream o;
-  const Counters& c = run.counters();
+  const Counters c = run.counters();
   o << mapping::strategyName(run.config().strategy);
   if (const PropagationExplorer* p = run.propagation()) {
     o << " | ";
@@ -129,10 +129,11 @@ int runSim(const SimOptions& o) {
   if (show == Show::Live) {
     drawFrame(run, textOptions, true);
     while (!run.finished()) {
-      const Action::Kind kind = run.lastAction().kind;
+      const DriveAction done = run.lastAction();
       run.step();
-      // Redraw when the robot moved or turned (reads alone would make the display crawl).
-      if (kind == Action::Kind::Move || kind == Action::Kind::Turn || run.finished()) {
+      // Redraw when the robot moved or turned (reads and steering alone would make the display crawl).
+      const bool turned = done.kind == DriveAction::Kind::Rotate && (done.value > 700 || done.value < -700);
+      if (done.kind == DriveAction::Kind::Drive || turned || run.finished()) {
         drawFrame(run, textOptions, false);
         if (o.delayMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(o.delayMs));
       }
@@ -144,7 +145,7 @@ int runSim(const SimOptions& o) {
     }
   }
 
-  const Counters& c = run.counters();
+  const Counters c = run.counters();
   const mapping::MapScore s = mapping::scoreRun(run);
   auto num = [](double v) { return report::formatNumber(v, 1); };
   std::ostringstream out;

@@ -34,6 +34,12 @@ public:
     MoveResult move(int cells);
     // Turns by eighths of a full turn, + = clockwise (2 = 90 degrees right).
     void turn(int eighths);
+    // Turns in place by any angle, + = clockwise. The error grows with the angle: turnSigmaDeg per
+    // 90 degrees, with a floor of a quarter of it for small corrections (backlash, wheel scrub).
+    void rotate(double deg);
+    // Drives straight by cm (+ forward, - backward) with slip. If the centre would enter a blocked
+    // cell on the way, the wheels stall and the robot backs off to where it started: returns false.
+    bool drive(double cm);
 
     double xCm() const { return x_; }
     double yCm() const { return y_; }
