@@ -15,6 +15,15 @@ ExplorerConfig explorerConfigFor(const sim::World& world, const HouseConfig& c) 
   e.geometry.minCm = static_cast<int16_t>(std::lround(c.minRangeM * 100.0));
   e.geometry.maxCm = static_cast<int16_t>(std::lround(c.rangeM * 100.0));
   e.geometry.mountCm = 0;
+  // As MappingRun: past the distance where half the beam still falls inside one cell, an echo
+  // only proves the cells before it free.
+  const double beam = c.noise.coneHalfAngleDeg;
+  if (beam > 0.0) {
+    const double sure = 0.5 * e.geometry.cellCm / std::tan(beam * 3.141592653589793 / 180.0) - e.geometry.mountCm;
+    if (sure < e.geometry.maxCm) {
+      e.geometry.sureCm = static_cast<int16_t>(std::max(e.geometry.minCm + 1.0, std::floor(sure)));
+    }
+  }
   return e;
 }
 
@@ -54,7 +63,7 @@ void HouseMapper::mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, 
   const network::RoomTransform toRoom = toHouse.inverse();
   std::vector<Cell> entrance;
   for (const Cell c : entranceHouse) entrance.push_back(toRoom.apply(c));
-  RoomRun run(robot_, explorerConfig_, config_.strategy, config_.doorways, entrance);
+  RoomRun run(robot_, explorerConfig_, config_.strategy, config_.doorways, entrance, config_.poseCorrection);
   run.runToEnd();
   if (std::getenv("NXTMAP_HOUSE_DEBUG")) {
     std::fprintf(stderr, "room %zu: end %d, pose %d,%d, exits %zu, ignored %d\n", network_.rooms().size(),
@@ -70,6 +79,7 @@ void HouseMapper::mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, 
   counters_.explore.cellsMoved += c.cellsMoved;
   counters_.explore.turnEighths += c.turnEighths;
   counters_.explore.blockedMoves += c.blockedMoves;
+  counters_.explore.correctionMrad += c.correctionMrad;
 
   network::RoomNode node;
   node.name = "room" + std::to_string(network_.rooms().size());

@@ -28,8 +28,9 @@ struct HouseConfig {
   sim::NoiseProfile noise;
   uint64_t seed = 1;
   mapping::Strategy strategy = mapping::Strategy::Propagation;
-  DoorwayLimits doorways{};
+  DoorwayLimits doorways{4, 15, 3};        // cells: 0.4 .. 1.5 m doorways at 10 cm cells
   int maxRooms = 40;                        // safety stop
+  bool poseCorrection = true;               // the pilot keeps the robot on the grid (off: dead reckoning)
 };
 
 struct HouseCounters {

@@ -18,12 +18,11 @@ bool overlaps(const Doorway& a, const Doorway& b) {
 }  // namespace
 
 RoomRun::RoomRun(sim::SimRobot& robot, const ExplorerConfig& config, mapping::Strategy strategy,
-                 const DoorwayLimits& doorways, std::vector<Cell> entrance)
+                 const DoorwayLimits& doorways, std::vector<Cell> entrance, bool poseCorrection)
     : robot_(robot),
       config_(config),
       doorwayLimits_(doorways),
       storage_(std::make_unique<Storage>()),
-      filter_(config.geometry),
       closed_(entrance),
       entrance_(std::move(entrance)) {
   map_ = std::make_unique<MapLayers>(storage_->map.view(), Storage::kWidth(), Storage::kHeight());
@@ -35,36 +34,38 @@ RoomRun::RoomRun(sim::SimRobot& robot, const ExplorerConfig& config, mapping::St
     frontier_ = std::make_unique<FrontierExplorer>(*map_, *planner_, config_);
     explorer_ = frontier_.get();
   }
+  PilotConfig pilot;
+  pilot.correct = poseCorrection;
+  pilot_ = std::make_unique<Pilot>(*explorer_, pilot);
   closeDoors();
-  last_ = explorer_->step(Event::start());
+  last_ = pilot_->step(DriveEvent::start());
 }
 
 RoomRun::~RoomRun() = default;
 
-Event RoomRun::carryOut(const Action& a) {
+DriveEvent RoomRun::carryOut(const DriveAction& a) {
   switch (a.kind) {
-    case Action::Kind::Read:
-      filter_.reset();
-      while (!filter_.done()) filter_.add(static_cast<uint8_t>(robot_.ping(static_cast<int>(a.sensor))));
-      return Event::range(a.sensor, filter_.result());
-    case Action::Kind::Move: {
-      const sim::MoveResult r = robot_.move(a.amount);
-      if (r.blocked) return Event::blocked();
-      return Event::moved(static_cast<int8_t>(r.cellsMoved));
+    case DriveAction::Kind::Read: {
+      RangeFilter filter(config_.geometry);
+      while (!filter.done()) filter.add(static_cast<uint8_t>(robot_.ping(static_cast<int>(a.sensor))));
+      return DriveEvent::range(a.sensor, filter.result());
     }
-    case Action::Kind::Turn:
-      robot_.turn(a.amount);
-      return Event::turned(a.amount);
-    case Action::Kind::Done:
+    case DriveAction::Kind::Rotate:
+      robot_.rotate(a.value * (180.0 / 3141.592653589793));
+      return DriveEvent::rotated();
+    case DriveAction::Kind::Drive:
+      return DriveEvent::driven(!robot_.drive(a.value / 10.0));
+    case DriveAction::Kind::Done:
       break;
   }
-  return Event::start();
+  return DriveEvent::start();
 }
 
-bool RoomRun::movesIntoClosed(const Action& a) const {
-  if (a.kind != Action::Kind::Move) return false;
+// Every Drive carries out one explorer move of one cell (forward for value > 0).
+bool RoomRun::drivesIntoClosed(const DriveAction& a) const {
+  if (a.kind != DriveAction::Kind::Drive) return false;
   const Pose& p = explorer_->pose();
-  const Cell next = advance(p.cell, a.amount > 0 ? p.heading : opposite(p.heading));
+  const Cell next = advance(p.cell, a.value > 0 ? p.heading : opposite(p.heading));
   return std::find(closed_.begin(), closed_.end(), next) != closed_.end();
 }
 
@@ -112,6 +113,7 @@ void RoomRun::lookForDoorways() {
   bool changed = false;
   for (uint8_t i = 0; i < n; ++i) {
     const Doorway& d = found[i];
+    if (!wellSeen(d)) continue;
     bool known = false;
     for (Doorway& c : candidates_) {
       if (!overlaps(d, c) && !overlaps(c, d)) continue;
@@ -127,6 +129,19 @@ void RoomRun::lookForDoorways() {
     }
   }
   if (changed || (++sinceCheck_ >= kRecheckSteps && !candidates_.empty())) evaluateCandidates();
+}
+
+bool RoomRun::wellSeen(const Doorway& d) const {
+  // Under noise one stray reading can open a gap in a wall or put a "jamb" in the open: the
+  // jambs must be surely occupied and every gap cell surely free (evidence, see MapLayers).
+  const auto jamb = [&](Cell c) { return map_->evidence(c) >= kSureEvidence; };
+  for (int16_t b = 0; b < d.depth; ++b) {
+    if (!jamb(d.cell(-1, b)) || !jamb(d.cell(d.width, b))) return false;
+    for (int16_t a = 0; a < d.width; ++a) {
+      if (map_->evidence(d.cell(a, b)) > -kSureEvidence) return false;
+    }
+  }
+  return true;
 }
 
 void RoomRun::evaluateCandidates() {
@@ -172,12 +187,12 @@ void RoomRun::evaluateCandidates() {
 }
 
 void RoomRun::runToEnd() {
-  while (!explorer_->finished()) {
+  while (!pilot_->finished()) {
     // A move decided just before a doorway was closed meets the closed doorway like a wall.
-    const Event e = movesIntoClosed(last_) ? Event::blocked() : carryOut(last_);
-    last_ = explorer_->step(e);
+    const DriveEvent e = drivesIntoClosed(last_) ? DriveEvent::driven(true) : carryOut(last_);
+    last_ = pilot_->step(e);
     closeDoors();
-    if (!explorer_->finished()) lookForDoorways();
+    if (!pilot_->finished()) lookForDoorways();
   }
   finish();
 }

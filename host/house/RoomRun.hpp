@@ -1,5 +1,6 @@
-// RoomRun: one room of a house, mapped by the common explorer driven by the shared simulated
-// robot (the robot keeps its true pose from room to room). The room's frame has its origin at
+// RoomRun: one room of a house, mapped by the common explorer and pilot (which keeps the robot on
+// the cell grid under noise) driving the shared simulated robot (the robot keeps its true pose
+// from room to room), exactly as MappingRun does for a single room. The room's frame has its origin at
 // the cell where the run starts and +y along the robot's heading there.
 //
 // Confinement (until the explorer itself knows about exits, see notes/house-to-lead.md): after
@@ -18,6 +19,7 @@
 #include "common/explore/FrontierExplorer.hpp"
 #include "common/explore/PropagationExplorer.hpp"
 #include "common/interpret/Doorway.hpp"
+#include "common/motion/Pilot.hpp"
 #include "common/sensing/RangeFilter.hpp"
 #include "host/mapping/Strategy.hpp"
 #include "host/network/RoomMap.hpp"
@@ -40,14 +42,14 @@ class RoomRun {
 
   // `entrance`: the doorway's cells behind the start, in the new room's frame (empty for the first room).
   RoomRun(sim::SimRobot& robot, const ExplorerConfig& config, mapping::Strategy strategy,
-          const DoorwayLimits& doorways, std::vector<Cell> entrance);
+          const DoorwayLimits& doorways, std::vector<Cell> entrance, bool poseCorrection = true);
   ~RoomRun();
 
   // Maps the room to the end; then the doorways are open again and exits() / roomMap() are set.
   void runToEnd();
 
   const Explorer& explorer() const { return *explorer_; }
-  const Counters& counters() const { return explorer_->counters(); }
+  Counters counters() const { return pilot_->counters(); }
   ExplorerEnd end() const { return explorer_->end(); }
   const Pose& pose() const { return explorer_->pose(); }  // believed, in the room's frame
   const std::vector<RoomExit>& exits() const { return exits_; }
@@ -55,11 +57,13 @@ class RoomRun {
   int ignoredDoorways() const { return static_cast<int>(candidates_.size()); }  // never became exits
 
  private:
-  Event carryOut(const Action& a);
+  DriveEvent carryOut(const DriveAction& a);
   void closeDoors();
-  bool movesIntoClosed(const Action& a) const;
+  bool drivesIntoClosed(const DriveAction& a) const;
   void lookForDoorways();
   void evaluateCandidates();
+  bool wellSeen(const Doorway& d) const;
+  static constexpr int kSureEvidence = 1;  // |evidence| a doorway's cells need (1: as the three-state map)
   // Cells reachable from the start over free cells, with the given extra cells held closed.
   std::vector<uint8_t> reach(const std::vector<Cell>& closed, Bounds& box) const;
   void finish();
@@ -73,8 +77,8 @@ class RoomRun {
   std::unique_ptr<PropagationExplorer> propagation_;
   std::unique_ptr<FrontierExplorer> frontier_;
   Explorer* explorer_ = nullptr;
-  RangeFilter filter_;
-  Action last_;
+  std::unique_ptr<Pilot> pilot_;
+  DriveAction last_;
   std::vector<Cell> closed_;         // virtual door cells (entrance and exits)
   std::vector<Cell> entrance_;
   std::vector<RoomExit> exits_;
