@@ -1,6 +1,7 @@
 // nxtmap-bench (`make bench`): speed and quality of both strategies on the 18 Appendix-A runs,
 // measured against their targets.
 //   nxtmap-bench [SCENARIO_DIR]   (default: ./worlds/seed-appendix-a, else the source tree's)
+//   nxtmap-bench house            the house section alone (host/bench/HouseBench.cpp)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -13,6 +14,10 @@
 #include "host/cli/Errors.hpp"
 #include "host/cli/ExperimentRunner.hpp"
 #include "host/report/ExperimentTable.hpp"
+
+namespace nxtmap::bench {
+int runHouseBench();  // host/bench/HouseBench.cpp: the house section
+}
 
 namespace {
 namespace fs = std::filesystem;
@@ -194,12 +199,13 @@ int run(int argc, char** argv) {
               "");
   }
   table.print();
-  return 0;
+  return nxtmap::bench::runHouseBench();
 }
 }  // namespace
 
 int main(int argc, char** argv) {
   try {
+    if (argc > 1 && std::string(argv[1]) == "house") return nxtmap::bench::runHouseBench();  // that section alone
     return run(argc, argv);
   } catch (const nxtmap::cli::CliError& e) {
     nxtmap::cli::printError(std::string("bench: ") + e.what());
