@@ -8,8 +8,11 @@ constexpr Cell at(bool alongX, int16_t along, int16_t line) {
   return alongX ? Cell{along, line} : Cell{line, along};
 }
 
-bool isJamb(const RoomGrid& g, bool alongX, int16_t along, int16_t line) {
-  if (!g.isOccupied(at(alongX, along, line))) return false;
+// `away`: +1 or -1, the direction along the line that leads away from the gap.
+bool isJamb(const RoomGrid& g, bool alongX, int16_t along, int16_t line, int16_t away, int16_t minJamb) {
+  for (int16_t k = 0; k < minJamb; ++k) {
+    if (!g.isOccupied(at(alongX, static_cast<int16_t>(along + k * away), line))) return false;
+  }
   const CellState a = g.at(at(alongX, along, static_cast<int16_t>(line - 1)));
   const CellState b = g.at(at(alongX, along, static_cast<int16_t>(line + 1)));
   const bool bothOccupied = a == CellState::Occupied && b == CellState::Occupied;
@@ -71,8 +74,8 @@ uint8_t findDoorways(const RoomGrid& grid, const Bounds& area, const DoorwayLimi
           continue;
         }
         if (runLen >= limits.minWidth && runLen <= limits.maxWidth &&
-            isJamb(grid, alongX, static_cast<int16_t>(runStart - 1), line) &&
-            isJamb(grid, alongX, i, line)) {
+            isJamb(grid, alongX, static_cast<int16_t>(runStart - 1), line, -1, limits.minJamb) &&
+            isJamb(grid, alongX, i, line, 1, limits.minJamb)) {
           addLine(alongX, runStart, runLen, line, out, n, capacity, overflow);
         }
         runLen = 0;

@@ -36,12 +36,15 @@ struct DoorwayLimits {
   int16_t minWidth = 2;   // narrower gaps are taken as sensing holes
   int16_t maxWidth = 15;  // wider gaps are open areas, not doorways (1.5 m at 10 cm cells)
   int16_t maxDepth = 3;   // deeper "gaps" are corridors
+  int16_t minJamb = 1;    // occupied cells each wall end must show along the line (2+: a stray
+                          // occupied cell in the open is no jamb)
 };
 
 // Finds the doorways whose cells lie in `area` (usually the grid's window). A doorway is a run of
 // known-free cells on a line, between two occupied jambs on the same line, where each jamb is the
 // end of a wall along that line (not the side of a wall across it): of a jamb's two neighbours
-// across the line, at least one is free and not both are occupied. The cells just outside the
+// across the line, at least one is free and not both are occupied; and the wall goes on along the
+// line away from the gap for minJamb occupied cells. The cells just outside the
 // gap's middle on both sides must not be occupied (the doorway can be crossed).
 // Writes at most `capacity` doorways to `out` and returns how many; `more` (optional) tells
 // whether some were left out.

@@ -50,7 +50,7 @@ Result mapHouse(const house::HousePlan& plan, const std::string& noise) {
   r.score = house::scoreHouse(m);
   r.coverage = house::planCoverage(m, plan);
   r.timeUnits = m.counters().timeUnits();
-  r.sensorRequests = m.counters().explore.sensorRequests;
+  r.sensorRequests = m.counters().sensorRequests();
   return r;
 }
 

@@ -91,9 +91,9 @@ int runSimHouse(const SimHouseOptions& o) {
       << "agreement        " << num(s.agreementPct()) << " % of " << s.observable
       << " observable cells (unknown " << s.unknown << ", wrong " << s.wrong << "; wrong elsewhere "
       << s.wrongElsewhere << ")\n"
-      << "time units       " << num(c.timeUnits()) << " (between rooms: " << c.travelCells << " cells)\n"
-      << "sensor requests  " << c.explore.sensorRequests << "\n"
-      << "raw samples      " << c.explore.rawSamples << "\n";
+      << "time units       " << num(c.timeUnits()) << " (between rooms: " << c.travel.cellsMoved << " cells)\n"
+      << "sensor requests  " << c.sensorRequests() << "\n"
+      << "raw samples      " << c.explore.rawSamples + c.travel.rawSamples << "\n";
   std::cout << out.str() << std::flush;
   if (!o.save.empty()) {
     std::string error;

@@ -1,11 +1,16 @@
 #include "host/house/HouseMapper.hpp"
 
+#include "common/motion/Pilot.hpp"
+#include "host/house/GoToExplorer.hpp"
+#include "host/house/SimDrive.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <memory>
 
 namespace nxtmap::house {
 namespace {
@@ -146,40 +151,54 @@ bool HouseMapper::step(Dir d) {
     if (rotate(belief_.heading, 1) == d) eighths = 2;
     if (rotate(belief_.heading, -1) == d) eighths = -2;
     robot_.turn(eighths);
-    counters_.travelTurnEighths += static_cast<uint32_t>(std::abs(eighths));
+    counters_.travel.turnEighths += static_cast<uint32_t>(std::abs(eighths));
     belief_.heading = d;
   }
   const sim::MoveResult r = robot_.move(1);
   if (r.blocked) {
-    ++counters_.travelBlocked;
+    ++counters_.travel.blockedMoves;
     return false;
   }
-  ++counters_.travelCells;
+  ++counters_.travel.cellsMoved;
   belief_.cell = advance(belief_.cell, d);
   return true;
 }
 
-bool HouseMapper::driveTo(Cell target, const network::RoomMap& known) {
-  const std::vector<int> dist = distances(known, target);  // from the target, walk downhill
-  const auto at = [&](Cell c) {
-    return known.inside(c) ? dist[static_cast<size_t>((c.y - known.minY()) * known.width() + (c.x - known.minX()))] : -1;
-  };
-  if (at(belief_.cell) < 0) return false;
-  while (belief_.cell != target) {
-    const int here = at(belief_.cell);
-    Dir best = belief_.heading;
-    bool found = false;
-    for (int k = 0; k < 4 && !found; ++k) {  // prefer going straight on
-      const Dir d = rotate(belief_.heading, k == 0 ? 0 : (k == 1 ? 1 : (k == 2 ? -1 : 2)));
-      const int n = at(advance(belief_.cell, d));
-      if (n >= 0 && n == here - 1) {
-        best = d;
-        found = true;
-      }
+bool HouseMapper::travelTo(Cell target, const network::RoomMap& known) {
+  if (belief_.cell == target) return true;
+  // The travel's frame: the robot's believed pose is its origin, as for an explorer's start.
+  const network::RoomTransform toHouse = network::RoomTransform::fromPose(belief_.cell, belief_.heading);
+  const network::RoomTransform toLocal = toHouse.inverse();
+  auto storage = std::make_unique<RoomRun::Storage>();
+  MapLayers map(storage->map.view(), RoomRun::Storage::kWidth(), RoomRun::Storage::kHeight());
+  TravelPlanner planner(storage->travel.view(), RoomRun::Storage::kWidth(), RoomRun::Storage::kHeight());
+  for (int y = known.minY(); y <= known.maxY(); ++y) {
+    for (int x = known.minX(); x <= known.maxX(); ++x) {
+      const Cell h{static_cast<int16_t>(x), static_cast<int16_t>(y)};
+      const CellState s = known.at(h);
+      if (s == CellState::Unknown) continue;
+      const Cell c = toLocal.apply(h);
+      if (!map.grid().fits(c)) continue;
+      (void)(s == CellState::Free ? map.observeFree(c) : map.observeOccupied(c));
     }
-    if (!found || !step(best)) return false;
   }
-  return true;
+  GoToExplorer go(map, planner, explorerConfig_, toLocal.apply(target));
+  PilotConfig pc;
+  pc.correct = config_.poseCorrection;
+  Pilot pilot(go, pc);
+  DriveAction a = pilot.step(DriveEvent::start());
+  while (!pilot.finished()) a = pilot.step(carryOutOnRobot(robot_, a, explorerConfig_.geometry));
+  const Counters c = pilot.counters();
+  counters_.travel.sensorRequests += c.sensorRequests;
+  counters_.travel.rawSamples += c.rawSamples;
+  counters_.travel.cellsMoved += c.cellsMoved;
+  counters_.travel.turnEighths += c.turnEighths;
+  counters_.travel.blockedMoves += c.blockedMoves;
+  counters_.travel.correctionMrad += c.correctionMrad;
+  belief_.cell = toHouse.apply(go.pose().cell);
+  belief_.heading = toHouse.apply(go.pose().heading);
+  if (!go.arrived()) ++counters_.travelBlocked;
+  return go.arrived();
 }
 
 int HouseMapper::run() {
@@ -216,7 +235,7 @@ int HouseMapper::run() {
     const network::RoomNode& owner = network_.rooms()[static_cast<size_t>(p.room)];
     const Cell in = owner.toHouse.apply(p.exit.inside);
     const Dir out = owner.toHouse.apply(p.exit.outward);
-    bool through = driveTo(in, known);
+    bool through = travelTo(in, known);
     const bool reachedInside = through;
     for (int k = 0; through && k <= p.exit.depth; ++k) through = step(out);
     if (!through) {

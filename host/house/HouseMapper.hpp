@@ -28,19 +28,17 @@ struct HouseConfig {
   sim::NoiseProfile noise;
   uint64_t seed = 1;
   mapping::Strategy strategy = mapping::Strategy::Propagation;
-  DoorwayLimits doorways{4, 15, 3};        // cells: 0.4 .. 1.5 m doorways at 10 cm cells
+  DoorwayLimits doorways{4, 15, 3, 2};     // cells: 0.4 .. 1.5 m doorways at 10 cm cells, walls of 2+ cells
   int maxRooms = 40;                        // safety stop
   bool poseCorrection = true;               // the pilot keeps the robot on the grid (off: dead reckoning)
 };
 
 struct HouseCounters {
   Counters explore;                 // summed over the room runs
-  uint32_t travelCells = 0;         // cells driven between rooms (to exits, through doorways)
-  uint32_t travelTurnEighths = 0;
-  uint32_t travelBlocked = 0;       // moves between rooms that bumped into something
-  double timeUnits() const {
-    return (explore.timeHalfUnits() + 2.0 * travelCells + travelTurnEighths) / 2.0;
-  }
+  Counters travel;                  // driving between rooms (to exits, through doorways)
+  uint32_t travelBlocked = 0;       // travels that did not arrive
+  double timeUnits() const { return (explore.timeHalfUnits() + travel.timeHalfUnits()) / 2.0; }
+  uint32_t sensorRequests() const { return explore.sensorRequests + travel.sensorRequests; }
 };
 
 class HouseMapper {
@@ -69,7 +67,8 @@ class HouseMapper {
   };
   void mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, const RoomExit* via);
   bool leadsToMappedRoom(const Pending& p);
-  bool driveTo(Cell target, const network::RoomMap& known);
+  // Drives to a house cell over the known rooms with the pilot (pose corrections); false when not there.
+  bool travelTo(Cell target, const network::RoomMap& known);
   bool step(Dir d);
 
   const sim::World& world_;

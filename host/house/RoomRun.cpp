@@ -1,5 +1,7 @@
 #include "host/house/RoomRun.hpp"
 
+#include "host/house/SimDrive.hpp"
+
 #include <algorithm>
 #include <deque>
 
@@ -43,24 +45,6 @@ RoomRun::RoomRun(sim::SimRobot& robot, const ExplorerConfig& config, mapping::St
 
 RoomRun::~RoomRun() = default;
 
-DriveEvent RoomRun::carryOut(const DriveAction& a) {
-  switch (a.kind) {
-    case DriveAction::Kind::Read: {
-      RangeFilter filter(config_.geometry);
-      while (!filter.done()) filter.add(static_cast<uint8_t>(robot_.ping(static_cast<int>(a.sensor))));
-      return DriveEvent::range(a.sensor, filter.result());
-    }
-    case DriveAction::Kind::Rotate:
-      robot_.rotate(a.value * (180.0 / 3141.592653589793));
-      return DriveEvent::rotated();
-    case DriveAction::Kind::Drive:
-      return DriveEvent::driven(!robot_.drive(a.value / 10.0));
-    case DriveAction::Kind::Done:
-      break;
-  }
-  return DriveEvent::start();
-}
-
 // Every Drive carries out one explorer move of one cell (forward for value > 0).
 bool RoomRun::drivesIntoClosed(const DriveAction& a) const {
   if (a.kind != DriveAction::Kind::Drive) return false;
@@ -81,8 +65,9 @@ std::vector<uint8_t> RoomRun::reach(const std::vector<Cell>& closed, Bounds& box
   const auto open = [&](Cell c) {
     return box.contains(c) && map_->grid().isFree(c) && std::find(closed.begin(), closed.end(), c) == closed.end();
   };
+  // The start cell always counts (the robot stood there), whatever noise later said about it.
   const Cell start{0, 0};
-  if (!open(start)) return seen;
+  if (!box.contains(start)) return seen;
   std::deque<Cell> queue{start};
   seen[idx(start)] = 1;
   while (!queue.empty()) {
@@ -189,7 +174,7 @@ void RoomRun::evaluateCandidates() {
 void RoomRun::runToEnd() {
   while (!pilot_->finished()) {
     // A move decided just before a doorway was closed meets the closed doorway like a wall.
-    const DriveEvent e = drivesIntoClosed(last_) ? DriveEvent::driven(true) : carryOut(last_);
+    const DriveEvent e = drivesIntoClosed(last_) ? DriveEvent::driven(true) : carryOutOnRobot(robot_, last_, config_.geometry);
     last_ = pilot_->step(e);
     closeDoors();
     if (!pilot_->finished()) lookForDoorways();

@@ -57,7 +57,6 @@ class RoomRun {
   int ignoredDoorways() const { return static_cast<int>(candidates_.size()); }  // never became exits
 
  private:
-  DriveEvent carryOut(const DriveAction& a);
   void closeDoors();
   bool drivesIntoClosed(const DriveAction& a) const;
   void lookForDoorways();

@@ -55,13 +55,27 @@ TEST(Doorway, CorridorsOpenAreasAndHolesAreNotDoorways) {
   EXPECT_TRUE(find(corridor).empty());
   test::GridFixture wide;  // an opening wider than a doorway
   wide.draw({"#..................#", "#..................#", "##................##", "#..................#"});
-  EXPECT_TRUE(find(wide, DoorwayLimits{2, 15, 3}).empty());
+  EXPECT_TRUE(find(wide, DoorwayLimits{2, 15, 3, 1}).empty());
   test::GridFixture hole;  // a one-cell gap is a sensing hole
   hole.draw({"#.....#", "#.....#", "###.###", "#.....#"});
   EXPECT_TRUE(find(hole).empty());
   test::GridFixture unseen;  // the gap was never seen free
   unseen.draw({"#.....#", "#.....#", "##???##", "#.....#"});
   EXPECT_TRUE(find(unseen).empty());
+}
+
+TEST(Doorway, StrayCellsAreNoJambsWhenWallsMustGoOn) {
+  test::GridFixture f;  // two stray occupied cells in the open (as noise leaves them), and a real doorway
+  f.draw({"##########",
+          "#........#",
+          "#.#...#..#",
+          "#........#",
+          "####..####",
+          "#........#"});
+  EXPECT_EQ(find(f, DoorwayLimits{2, 15, 3, 1}).size(), 2u);  // the strays make a "doorway" too
+  const std::vector<Doorway> d = find(f, DoorwayLimits{2, 15, 3, 2});
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].first, (Cell{4, 1}));
 }
 
 TEST(Doorway, SeveralDoorwaysOnOneWallAndACapacityLimit) {
