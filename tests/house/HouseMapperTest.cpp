@@ -1,8 +1,14 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
 #include "host/house/HouseExpoPlan.hpp"
 #include "host/house/HouseMapper.hpp"
 #include "host/house/HouseScore.hpp"
+#include "host/network/HouseFiles.hpp"
+#include "tests/support/TempDir.hpp"
 
 namespace nxtmap::house {
 namespace {
@@ -74,6 +80,45 @@ TEST(HouseMapper, SameSeedSameHouse) {
   ASSERT_EQ(a.network().rooms().size(), b.network().rooms().size());
   EXPECT_TRUE(a.network().merged() == b.network().merged());
   EXPECT_EQ(a.counters().explore.sensorRequests, b.counters().explore.sensorRequests);
+}
+
+}  // namespace
+}  // namespace nxtmap::house
+
+namespace nxtmap::house {
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+const std::string kWorlds = std::string(NXTMAP_SOURCE_DIR) + "/worlds/";
+
+TEST(HouseMapper, AMappedHouseSavesReloadsAndSavesTheSameBytes) {
+  const HousePlanLoad l = loadHouseExpo(kWorlds + "houseexpo/house_expo_room_0000.json");
+  ASSERT_TRUE(l.plan) << l.error;
+  HouseConfig config;
+  ASSERT_TRUE(defaultStart(*l.plan, config.startCol, config.startRow));
+  HouseMapper m(l.plan->world, config);
+  m.run();
+  labelRoomsFromPlan(m, *l.plan);
+  test::TempDir t("mapped_house");
+  std::string e;
+  ASSERT_TRUE(network::saveHouse(m.network(), 0.1, t.path("a"), e)) << e;
+  const network::HouseLoad back = network::loadHouse(t.path("a"));
+  ASSERT_TRUE(back.network) << back.error;
+  EXPECT_TRUE(back.network->merged() == m.network().merged());
+  ASSERT_TRUE(network::saveHouse(*back.network, back.resolutionM, t.path("b"), e)) << e;
+  int files = 0;
+  for (const auto& f : std::filesystem::directory_iterator(t.path("a"))) {
+    ++files;
+    const std::string name = f.path().filename().string();
+    EXPECT_EQ(slurp(t.path("a/" + name)), slurp(t.path("b/" + name))) << name;
+  }
+  EXPECT_EQ(files, 1 + 2 * static_cast<int>(m.network().rooms().size()));
 }
 
 }  // namespace
