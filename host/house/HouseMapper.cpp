@@ -2,6 +2,7 @@
 
 #include "common/motion/Pilot.hpp"
 #include "host/house/GoToExplorer.hpp"
+#include "host/house/RoomSplit.hpp"
 #include "host/house/SimDrive.hpp"
 
 #include <algorithm>
@@ -68,7 +69,8 @@ void HouseMapper::mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, 
   const network::RoomTransform toRoom = toHouse.inverse();
   std::vector<Cell> entrance;
   for (const Cell c : entranceHouse) entrance.push_back(toRoom.apply(c));
-  RoomRun run(robot_, explorerConfig_, config_.strategy, config_.doorways, entrance, config_.poseCorrection);
+  RoomRun run(robot_, explorerConfig_, config_.strategy, config_.doorways, entrance, config_.poseCorrection,
+              config_.roomLimits);
   run.runToEnd();
   if (std::getenv("NXTMAP_HOUSE_DEBUG")) {
     std::fprintf(stderr, "room %zu: end %d, pose %d,%d, exits %zu, ignored %d\n", network_.rooms().size(),
@@ -86,20 +88,29 @@ void HouseMapper::mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, 
   counters_.explore.blockedMoves += c.blockedMoves;
   counters_.explore.correctionMrad += c.correctionMrad;
 
-  network::RoomNode node;
-  node.name = "room" + std::to_string(network_.rooms().size());
-  node.map = run.roomMap();
-  node.toHouse = toHouse;
-  const int index = network_.addRoom(std::move(node));
-  if (fromRoom >= 0 && via != nullptr) {
+  // An open area larger than the maximum becomes several rooms (parts share the room's frame).
+  const RoomParts parts = splitRoom(run.roomMap(), run.interpretation());
+  const int first = static_cast<int>(network_.rooms().size());
+  for (const network::RoomMap& part : parts.maps) {
+    network::RoomNode node;
+    node.name = "room" + std::to_string(network_.rooms().size());
+    node.map = part;
+    node.toHouse = toHouse;
+    network_.addRoom(std::move(node));
+  }
+  for (const RoomParts::Cut& cut : parts.cuts) {
+    network_.addGateway(network::Gateway{first + cut.partA, first + cut.partB, cut.cells, cut.cells});
+  }
+  const auto partOf = [&](Cell at) { return first + std::max(0, parts.partOf(at)); };
+  if (fromRoom >= 0 && via != nullptr && !entrance.empty()) {
     network::Gateway g;
     g.roomA = fromRoom;
-    g.roomB = index;
+    g.roomB = partOf(entrance[entrance.size() / 2]);
     g.cellsA = via->cells;
     g.cellsB = entrance;
     network_.addGateway(std::move(g));
   }
-  for (const RoomExit& e : run.exits()) pending_.push_back(Pending{index, e});
+  for (const RoomExit& e : run.exits()) pending_.push_back(Pending{partOf(e.inside), e});
   exitsFound_ += static_cast<int>(run.exits().size());
   belief_.cell = toHouse.apply(run.pose().cell);
   belief_.heading = toHouse.apply(run.pose().heading);

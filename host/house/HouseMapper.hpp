@@ -11,6 +11,7 @@
 
 #include "common/explore/Counters.hpp"
 #include "common/interpret/Doorway.hpp"
+#include "common/interpret/RoomInterpretation.hpp"
 #include "host/house/RoomRun.hpp"
 #include "host/mapping/FrameTransform.hpp"
 #include "host/mapping/Strategy.hpp"
@@ -29,6 +30,7 @@ struct HouseConfig {
   uint64_t seed = 1;
   mapping::Strategy strategy = mapping::Strategy::Propagation;
   DoorwayLimits doorways{4, 15, 3, 2};     // cells: 0.4 .. 1.5 m doorways at 10 cm cells, walls of 2+ cells
+  RoomLimits roomLimits{3, 80};             // an open area over 8 m (at 10 cm cells) is several rooms
   int maxRooms = 40;                        // safety stop
   bool poseCorrection = true;               // the pilot keeps the robot on the grid (off: dead reckoning)
 };

@@ -20,13 +20,15 @@ bool overlaps(const Doorway& a, const Doorway& b) {
 }  // namespace
 
 RoomRun::RoomRun(sim::SimRobot& robot, const ExplorerConfig& config, mapping::Strategy strategy,
-                 const DoorwayLimits& doorways, std::vector<Cell> entrance, bool poseCorrection)
+                 const DoorwayLimits& doorways, std::vector<Cell> entrance, bool poseCorrection,
+                 const RoomLimits& roomLimits)
     : robot_(robot),
       config_(config),
       doorwayLimits_(doorways),
       storage_(std::make_unique<Storage>()),
       closed_(entrance),
-      entrance_(std::move(entrance)) {
+      entrance_(std::move(entrance)),
+      roomLimits_(roomLimits) {
   map_ = std::make_unique<MapLayers>(storage_->map.view(), Storage::kWidth(), Storage::kHeight());
   planner_ = std::make_unique<TravelPlanner>(storage_->travel.view(), Storage::kWidth(), Storage::kHeight());
   if (strategy == mapping::Strategy::Propagation) {
@@ -187,6 +189,7 @@ void RoomRun::finish() {
   for (const Cell c : closed_) {
     for (int k = 0; k < 16 && map_->grid().isOccupied(c); ++k) (void)map_->observeFree(c);
   }
+  interpretation_ = interpretRoom(map_->grid(), roomLimits_, doorwayLimits_);
   // Cut the map to the room: reachable cells without crossing a doorway, their 8 neighbours,
   // and the doorways themselves.
   Bounds box;

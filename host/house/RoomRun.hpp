@@ -19,6 +19,7 @@
 #include "common/explore/FrontierExplorer.hpp"
 #include "common/explore/PropagationExplorer.hpp"
 #include "common/interpret/Doorway.hpp"
+#include "common/interpret/RoomInterpretation.hpp"
 #include "common/motion/Pilot.hpp"
 #include "common/sensing/RangeFilter.hpp"
 #include "host/mapping/Strategy.hpp"
@@ -42,7 +43,8 @@ class RoomRun {
 
   // `entrance`: the doorway's cells behind the start, in the new room's frame (empty for the first room).
   RoomRun(sim::SimRobot& robot, const ExplorerConfig& config, mapping::Strategy strategy,
-          const DoorwayLimits& doorways, std::vector<Cell> entrance, bool poseCorrection = true);
+          const DoorwayLimits& doorways, std::vector<Cell> entrance, bool poseCorrection = true,
+          const RoomLimits& roomLimits = RoomLimits{});
   ~RoomRun();
 
   // Maps the room to the end; then the doorways are open again and exits() / roomMap() are set.
@@ -54,6 +56,8 @@ class RoomRun {
   const Pose& pose() const { return explorer_->pose(); }  // believed, in the room's frame
   const std::vector<RoomExit>& exits() const { return exits_; }
   const network::RoomMap& roomMap() const { return roomMap_; }
+  // The interpretation of the finished map (walls, size, exits, how many rooms it makes).
+  const RoomInterpretation& interpretation() const { return interpretation_; }
   int ignoredDoorways() const { return static_cast<int>(candidates_.size()); }  // never became exits
 
  private:
@@ -85,6 +89,8 @@ class RoomRun {
   int sinceCheck_ = 0;               // steps since the candidates were last evaluated
   static constexpr int kRecheckSteps = 25;
   network::RoomMap roomMap_;
+  RoomLimits roomLimits_;
+  RoomInterpretation interpretation_;
 };
 
 }  // namespace nxtmap::house
