@@ -1,6 +1,7 @@
 // nxtmap-bench (`make bench`): speed and quality of both strategies on the 18 Appendix-A runs,
 // measured against their targets.
 //   nxtmap-bench [SCENARIO_DIR]   (default: ./worlds/seed-appendix-a, else the source tree's)
+//   nxtmap-bench plan             the path-search section alone (host/bench/PlanBench.cpp)
 //   nxtmap-bench house            the house section alone (host/bench/HouseBench.cpp)
 #include <algorithm>
 #include <chrono>
@@ -16,6 +17,7 @@
 #include "host/report/ExperimentTable.hpp"
 
 namespace nxtmap::bench {
+int runPlanBench();  // host/bench/PlanBench.cpp: the path-search section
 int runHouseBench();  // host/bench/HouseBench.cpp: the house section
 }
 
@@ -199,12 +201,14 @@ int run(int argc, char** argv) {
               "");
   }
   table.print();
-  return nxtmap::bench::runHouseBench();
+  const int rc = nxtmap::bench::runPlanBench();
+  return rc != 0 ? rc : nxtmap::bench::runHouseBench();
 }
 }  // namespace
 
 int main(int argc, char** argv) {
   try {
+    if (argc > 1 && std::string(argv[1]) == "plan") return nxtmap::bench::runPlanBench();  // that section alone
     if (argc > 1 && std::string(argv[1]) == "house") return nxtmap::bench::runHouseBench();  // that section alone
     return run(argc, argv);
   } catch (const nxtmap::cli::CliError& e) {

@@ -100,7 +100,7 @@ CLI::App* addPathCommand(CLI::App& app, PathOptions& o) {
   c->add_option("--from", o.from, "start cell COL,ROW (col right, row down from the top-left)")->required();
   c->add_option("--to", o.to, "goal cell COL,ROW, or near:LABEL (closest reachable cell next to a label)")
       ->required();
-  c->add_option("--algo", o.algo, "seed (the published search), astar, jps or dijkstra (default astar)");
+  c->add_option("--algo", o.algo, "seed (the published search), astar, jps, jps+ (precomputed jumps) or dijkstra (default astar)");
   c->add_option("--label", o.labels, "add a label NAME=COL,ROW or NAME=COL,ROW,WIDTH,HEIGHT (repeatable)");
   c->add_option("--clearance", o.clearance, "keep this many cells away from obstacles (default 0)");
   c->add_flag("--through-unknown", o.throughUnknown, "allow unknown cells (default: never used)");
@@ -113,7 +113,7 @@ int runPath(const PathOptions& o) {
   if (!o.house.empty()) return runHousePath(o);
   if (o.map.empty()) throw CliError("path: give a MAP, or --house DIR");
   const auto algorithm = plan::algorithmByName(o.algo);
-  if (!algorithm) throw CliError("--algo must be one of seed, astar, jps, dijkstra, not '" + o.algo + "'");
+  if (!algorithm) throw CliError("--algo must be one of seed, astar, jps, jps+, dijkstra, not '" + o.algo + "'");
   if (o.draw != "auto" && o.draw != "always" && o.draw != "never") {
     throw CliError("--draw must be one of auto, always, never, not '" + o.draw + "'");
   }

@@ -1,4 +1,4 @@
-// `nxtmap path MAP --from C,R --to C,R|near:LABEL [--algo seed|astar|jps|dijkstra]`: one path on a map
+// `nxtmap path MAP --from C,R --to C,R|near:LABEL [--algo seed|astar|jps|jps+|dijkstra]`: one path on a map
 // (a world, or a map saved by `nxtmap sim --save`), drawn on the map, with its length and nodes expanded.
 #pragma once
 #include <cstdint>

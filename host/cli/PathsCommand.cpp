@@ -29,7 +29,7 @@ CLI::App* addPathsCommand(CLI::App& app, PathsOptions& o) {
   CLI::App* c = app.add_subcommand("paths", "every Moving AI problem of a .scen file, checked against its optimum");
   c->add_option("map", o.map, "map: Moving AI .map (or a ROS .yaml)")->required();
   c->add_option("--scen", o.scen, "Moving AI scenario file (.scen, version 1)")->required();
-  c->add_option("--algo", o.algo, "seed, astar, jps or dijkstra (default astar)");
+  c->add_option("--algo", o.algo, "seed, astar, jps, jps+ or dijkstra (default astar)");
   c->add_option("--csv", o.csv, "write one line per problem as CSV");
   c->add_option("--max-nodes", o.maxNodes, "per problem: give up after this many expanded nodes (default: no limit)");
   return c;
@@ -37,7 +37,7 @@ CLI::App* addPathsCommand(CLI::App& app, PathsOptions& o) {
 
 int runPaths(const PathsOptions& o) {
   const auto algorithm = plan::algorithmByName(o.algo);
-  if (!algorithm) throw CliError("--algo must be one of seed, astar, jps, dijkstra, not '" + o.algo + "'");
+  if (!algorithm) throw CliError("--algo must be one of seed, astar, jps, jps+, dijkstra, not '" + o.algo + "'");
   const mapio::MapLoad load = mapio::loadMap(o.map);
   if (!load.map) throw CliError(load.error);
   const mapio::OccupancyMap& map = *load.map;

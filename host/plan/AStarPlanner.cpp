@@ -35,6 +35,7 @@ PlanResult AStarPlanner::search(const Traversability& grid, MapCell from, MapCel
       r.status = PlanStatus::NodeLimit;
       return r;
     }
+    const MapCell here = grid.cellOf(e.i);
     for (int d = 0; d < 8; ++d) {
       const uint32_t n = static_cast<uint32_t>(static_cast<int>(e.i) + offset[d]);
       if (!grid.open(n) || scratch_.closed(n)) continue;
@@ -44,7 +45,7 @@ PlanResult AStarPlanner::search(const Traversability& grid, MapCell from, MapCel
         continue;
       }
       const double g = e.g + (diagonal ? kSqrt2 : 1.0);
-      if (g < scratch_.g(n)) scratch_.relax(n, g, octile(grid.cellOf(n), to), e.i);
+      if (g < scratch_.g(n)) scratch_.relax(n, g, octile(MapCell{here.col + dcs[d], here.row + drs[d]}, to), e.i);
     }
   }
   r.status = PlanStatus::NoPath;

@@ -1,16 +1,17 @@
 #include "host/plan/JumpPointPlanner.hpp"
 
 #include <algorithm>
+#include <memory>
 
 namespace nxtmap::plan {
 namespace {
 
 constexpr uint32_t kNone = 0xffffffffu;
 
-// Jumps over the padded grid; indices step by `dc + dr * stride`.
-class Jumper {
+// Jumps by scanning the padded grid; indices step by `dc + dr * stride`.
+class ScanJumper {
  public:
-  Jumper(const Traversability& grid, uint32_t goal) : g_(grid), s_(grid.stride()), goal_(goal) {}
+  ScanJumper(const Traversability& grid, uint32_t goal) : g_(grid), s_(grid.stride()), goal_(goal) {}
 
   bool open(uint32_t i, int dc, int dr) const { return g_.open(at(i, dc, dr)); }
   uint32_t at(uint32_t i, int dc, int dr) const {
@@ -43,36 +44,80 @@ class Jumper {
     }
   }
 
+  // The first jump point leaving the jump point i by (dc, dr), or kNone.
+  uint32_t jump(uint32_t i, MapCell /*here*/, int dc, int dr) const {
+    if (!canStep(i, dc, dr)) return kNone;
+    return (dc != 0 && dr != 0) ? diagonal(at(i, dc, dr), dc, dr) : straight(at(i, dc, dr), dc, dr);
+  }
+
  private:
   const Traversability& g_;
   int s_;
   uint32_t goal_;
 };
 
+// The same jumps answered from a JumpTable, with the goal checked at query time.
+class TableJumper {
+ public:
+  TableJumper(const Traversability& grid, const JumpTable& table, MapCell goal)
+      : g_(grid), t_(table), s_(grid.stride()), goal_(goal) {}
+
+  bool open(uint32_t i, int dc, int dr) const {
+    return g_.open(static_cast<uint32_t>(static_cast<int>(i) + dr * s_ + dc));
+  }
+
+  uint32_t jump(uint32_t i, MapCell here, int dc, int dr) const {
+    const int v = t_.at(i, JumpTable::direction(dc, dr));
+    const int reach = v > 0 ? v : -v;  // steps that can be taken (to the jump point, or before the block)
+    const int gc = goal_.col - here.col, gr = goal_.row - here.row;
+    int k = -1;  // steps to a target found on the way
+    if (dc != 0 && dr != 0) {
+      // The diagonal reaches the goal's row or column after m steps: stop there (JPS+ target jump point).
+      if (gc * dc > 0 && gr * dr > 0) {
+        const int m = std::min(gc * dc, gr * dr);
+        if (m <= reach) k = m;
+      }
+    } else if (dr == 0 ? (gr == 0 && gc * dc > 0 && gc * dc <= reach) : (gc == 0 && gr * dr > 0 && gr * dr <= reach)) {
+      k = dr == 0 ? gc * dc : gr * dr;
+    }
+    if (k < 0) {
+      if (v <= 0) return kNone;
+      k = v;
+    }
+    return static_cast<uint32_t>(static_cast<int>(i) + k * (dr * s_ + dc));
+  }
+
+ private:
+  const Traversability& g_;
+  const JumpTable& t_;
+  int s_;
+  MapCell goal_;
+};
+
 int sign(int v) { return (v > 0) - (v < 0); }
 
-}  // namespace
-
-PlanResult JumpPointPlanner::search(const Traversability& grid, MapCell from, MapCell to, const PlanOptions& options) {
+// A* over jump points; Jumper::jump gives the successor in a direction.
+template <class JumpPolicy>
+PlanResult jpsSearch(const Traversability& grid, MapCell from, MapCell to, const PlanOptions& options,
+                     SearchScratch& scratch, const JumpPolicy& jump) {
   PlanResult r;
   const uint32_t start = grid.index(from);
   const uint32_t goal = grid.index(to);
-  const Jumper jump(grid, goal);
-  scratch_.begin(grid.paddedSize());
-  scratch_.relax(start, 0.0, octile(from, to), start);
+  scratch.begin(grid.paddedSize());
+  scratch.relax(start, 0.0, octile(from, to), start);
 
   int dirs[8][2];
-  while (!scratch_.openEmpty()) {
-    const SearchScratch::Entry e = scratch_.pop();
-    if (scratch_.closed(e.i) || e.g > scratch_.g(e.i)) continue;
-    scratch_.close(e.i);
+  while (!scratch.openEmpty()) {
+    const SearchScratch::Entry e = scratch.pop();
+    if (scratch.closed(e.i) || e.g > scratch.g(e.i)) continue;
+    scratch.close(e.i);
     ++r.nodesExpanded;
     if (e.i == goal) {
       r.status = PlanStatus::Found;
       r.length = e.g;
       // Jump points back to the start, then each straight or diagonal segment filled in.
       std::vector<MapCell> points;
-      for (uint32_t i = goal;; i = scratch_.parent(i)) {
+      for (uint32_t i = goal;; i = scratch.parent(i)) {
         points.push_back(grid.cellOf(i));
         if (i == start) break;
       }
@@ -97,25 +142,21 @@ PlanResult JumpPointPlanner::search(const Traversability& grid, MapCell from, Ma
     // Directions worth trying from this jump point, given how it was reached.
     const MapCell here = grid.cellOf(e.i);
     int n = 0;
+    auto add = [&](int c, int rr) {
+      dirs[n][0] = c;
+      dirs[n][1] = rr;
+      ++n;
+    };
     if (e.i == start) {
       for (int dr = -1; dr <= 1; ++dr) {
         for (int dc = -1; dc <= 1; ++dc) {
-          if (dc != 0 || dr != 0) {
-            dirs[n][0] = dc;
-            dirs[n][1] = dr;
-            ++n;
-          }
+          if (dc != 0 || dr != 0) add(dc, dr);
         }
       }
     } else {
-      const MapCell p = grid.cellOf(scratch_.parent(e.i));
+      const MapCell p = grid.cellOf(scratch.parent(e.i));
       const int dc = sign(here.col - p.col);
       const int dr = sign(here.row - p.row);
-      auto add = [&](int c, int rr) {
-        dirs[n][0] = c;
-        dirs[n][1] = rr;
-        ++n;
-      };
       if (dc != 0 && dr != 0) {
         add(dc, 0);
         add(0, dr);
@@ -139,19 +180,23 @@ PlanResult JumpPointPlanner::search(const Traversability& grid, MapCell from, Ma
       }
     }
     for (int k = 0; k < n; ++k) {
-      const int dc = dirs[k][0];
-      const int dr = dirs[k][1];
-      if (!jump.canStep(e.i, dc, dr)) continue;
-      const uint32_t next = jump.at(e.i, dc, dr);
-      const uint32_t j = (dc != 0 && dr != 0) ? jump.diagonal(next, dc, dr) : jump.straight(next, dc, dr);
-      if (j == kNone || scratch_.closed(j)) continue;
+      const uint32_t j = jump.jump(e.i, here, dirs[k][0], dirs[k][1]);
+      if (j == kNone || scratch.closed(j)) continue;
       const MapCell jc = grid.cellOf(j);
       const double g = e.g + octile(here, jc);
-      if (g < scratch_.g(j)) scratch_.relax(j, g, octile(jc, to), e.i);
+      if (g < scratch.g(j)) scratch.relax(j, g, octile(jc, to), e.i);
     }
   }
   r.status = PlanStatus::NoPath;
   return r;
+}
+
+}  // namespace
+
+PlanResult JumpPointPlanner::search(const Traversability& grid, MapCell from, MapCell to, const PlanOptions& options) {
+  if (!precomputed_) return jpsSearch(grid, from, to, options, scratch_, ScanJumper(grid, grid.index(to)));
+  if (!table_ || table_->gridId() != grid.id()) table_ = std::make_unique<JumpTable>(grid);
+  return jpsSearch(grid, from, to, options, scratch_, TableJumper(grid, *table_, to));
 }
 
 }  // namespace nxtmap::plan

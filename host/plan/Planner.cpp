@@ -31,7 +31,8 @@ std::unique_ptr<Planner> makePlanner(Algorithm algorithm) {
   switch (algorithm) {
     case Algorithm::Seed: return std::make_unique<SeedSearch>();
     case Algorithm::AStar: return std::make_unique<AStarPlanner>();
-    case Algorithm::Jps: return std::make_unique<JumpPointPlanner>();
+    case Algorithm::Jps: return std::make_unique<JumpPointPlanner>(false);
+    case Algorithm::JpsPlus: return std::make_unique<JumpPointPlanner>(true);
     case Algorithm::Dijkstra: return std::make_unique<DijkstraPlanner>();
   }
   return nullptr;
@@ -42,13 +43,14 @@ const char* algorithmName(Algorithm algorithm) {
     case Algorithm::Seed: return "seed";
     case Algorithm::AStar: return "astar";
     case Algorithm::Jps: return "jps";
+    case Algorithm::JpsPlus: return "jps+";
     case Algorithm::Dijkstra: return "dijkstra";
   }
   return "?";
 }
 
 std::optional<Algorithm> algorithmByName(const std::string& name) {
-  for (Algorithm a : {Algorithm::Seed, Algorithm::AStar, Algorithm::Jps, Algorithm::Dijkstra}) {
+  for (Algorithm a : {Algorithm::Seed, Algorithm::AStar, Algorithm::Jps, Algorithm::JpsPlus, Algorithm::Dijkstra}) {
     if (name == algorithmName(a)) return a;
   }
   return std::nullopt;

@@ -5,7 +5,8 @@
 //   if (r.found()) use(r.path, r.length, r.nodesExpanded);
 //
 // Moves: 8-connected, straight 1, diagonal sqrt(2), no corner cutting; see Traversability.hpp.
-// Algorithms: astar, jps and dijkstra return a shortest path; seed is the published IDA*-like search
+// Algorithms: astar, jps, jps+ (jump point search with a per-grid precomputed jump table) and dijkstra
+// return a shortest path; seed is the published IDA*-like search
 // (SeedSearch.hpp), complete but not optimal. A planner keeps scratch memory between queries: use one
 // object per thread, and prepare a Traversability once to run many queries on the same map.
 #pragma once
@@ -45,7 +46,7 @@ struct PlanResult {
   bool found() const { return status == PlanStatus::Found; }
 };
 
-enum class Algorithm { Seed, AStar, Jps, Dijkstra };
+enum class Algorithm { Seed, AStar, Jps, JpsPlus, Dijkstra };
 
 class Planner {
  public:
@@ -64,7 +65,7 @@ class Planner {
 };
 
 std::unique_ptr<Planner> makePlanner(Algorithm algorithm);
-const char* algorithmName(Algorithm algorithm);  // "seed", "astar", "jps", "dijkstra"
+const char* algorithmName(Algorithm algorithm);  // "seed", "astar", "jps", "jps+", "dijkstra"
 std::optional<Algorithm> algorithmByName(const std::string& name);
 const char* statusName(PlanStatus status);
 

@@ -2,6 +2,7 @@
 // reused between queries (a generation stamp instead of clearing), plus the open list.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <queue>
@@ -21,31 +22,28 @@ class SearchScratch {
 
   // Starts a query on a grid of `size` padded cells.
   void begin(size_t size) {
-    if (seen_.size() < size) {
-      seen_.assign(size, 0);
-      closed_.assign(size, 0);
-      g_.assign(size, 0.0);
-      parent_.assign(size, 0);
+    if (nodes_.size() < size) {
+      nodes_.assign(size, Node{});
       gen_ = 0;
     }
     if (++gen_ == 0) {  // wrapped: clear the stamps once
-      std::fill(seen_.begin(), seen_.end(), 0);
-      std::fill(closed_.begin(), closed_.end(), 0);
+      std::fill(nodes_.begin(), nodes_.end(), Node{});
       gen_ = 1;
     }
     open_ = Heap();
   }
 
-  bool seen(uint32_t i) const { return seen_[i] == gen_; }
-  bool closed(uint32_t i) const { return closed_[i] == gen_; }
-  void close(uint32_t i) { closed_[i] = gen_; }
-  double g(uint32_t i) const { return seen(i) ? g_[i] : std::numeric_limits<double>::infinity(); }
-  uint32_t parent(uint32_t i) const { return parent_[i]; }
+  bool seen(uint32_t i) const { return nodes_[i].seen == gen_; }
+  bool closed(uint32_t i) const { return nodes_[i].closed == gen_; }
+  void close(uint32_t i) { nodes_[i].closed = gen_; }
+  double g(uint32_t i) const { return seen(i) ? nodes_[i].g : std::numeric_limits<double>::infinity(); }
+  uint32_t parent(uint32_t i) const { return nodes_[i].parent; }
   // Records a better cost for i and queues it.
   void relax(uint32_t i, double g, double h, uint32_t parent) {
-    seen_[i] = gen_;
-    g_[i] = g;
-    parent_[i] = parent;
+    Node& n = nodes_[i];
+    n.seen = gen_;
+    n.g = g;
+    n.parent = parent;
     open_.push(Entry{g + h, g, i});
   }
   bool openEmpty() const { return open_.empty(); }
@@ -62,9 +60,14 @@ class SearchScratch {
   };
   using Heap = std::priority_queue<Entry, std::vector<Entry>, Later>;
 
-  std::vector<uint32_t> seen_, closed_;
-  std::vector<double> g_;
-  std::vector<uint32_t> parent_;
+  // One record per cell, so a neighbour's state is one memory access.
+  struct Node {
+    double g = 0.0;       // valid when seen == gen_
+    uint32_t parent = 0;  // padded index
+    uint32_t seen = 0;    // generation stamps
+    uint32_t closed = 0;
+  };
+  std::vector<Node> nodes_;
   uint32_t gen_ = 0;
   Heap open_;
 };

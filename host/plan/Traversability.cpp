@@ -1,11 +1,18 @@
 #include "host/plan/Traversability.hpp"
 
 #include <algorithm>
+#include <atomic>
 
 namespace nxtmap::plan {
+namespace {
+uint64_t nextId() {
+  static std::atomic<uint64_t> counter{0};
+  return ++counter;
+}
+}  // namespace
 
 Traversability::Traversability(const mapio::OccupancyMap& map, bool unknownTraversable, int clearanceCells)
-    : width_(map.width()), height_(map.height()) {
+    : id_(nextId()), width_(map.width()), height_(map.height()) {
   const int k = std::clamp(clearanceCells, 0, kMaxClearance);
   const size_t s = static_cast<size_t>(stride());
   cells_.assign(s * static_cast<size_t>(height_ + 2), 0);

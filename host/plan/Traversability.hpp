@@ -41,6 +41,8 @@ class Traversability {
   // clearanceCells: 0..kMaxClearance (clamped).
   Traversability(const mapio::OccupancyMap& map, bool unknownTraversable = false, int clearanceCells = 0);
 
+  // Distinct for every constructed grid (copies share it): lets planners cache per-grid preprocessing.
+  uint64_t id() const { return id_; }
   int width() const { return width_; }
   int height() const { return height_; }
   int stride() const { return width_ + 2; }
@@ -68,6 +70,7 @@ class Traversability {
   bool validPath(const std::vector<MapCell>& path, double& lengthOut) const;
 
  private:
+  uint64_t id_;
   int width_;
   int height_;
   std::vector<uint8_t> cells_;  // padded, 1 = passable

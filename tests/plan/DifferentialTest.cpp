@@ -1,4 +1,4 @@
-// Differential test: astar, jps and plain Dijkstra agree on random grids (found or not, and the length);
+// Differential test: astar, jps, jps+ and plain Dijkstra agree on random grids (found or not, and the length);
 // every path is legal and as long as reported; the published search finds a path exactly when one exists.
 #include <gtest/gtest.h>
 
@@ -38,6 +38,7 @@ TEST(Differential, AStarJpsDijkstraAndSeedOnRandomGrids) {
   std::mt19937 rng(20261122);
   auto astar = makePlanner(Algorithm::AStar);
   auto jps = makePlanner(Algorithm::Jps);
+  auto jpsPlus = makePlanner(Algorithm::JpsPlus);
   auto dijkstra = makePlanner(Algorithm::Dijkstra);
   auto seed = makePlanner(Algorithm::Seed);
   const double densities[] = {0.0, 0.1, 0.2, 0.3, 0.4};
@@ -60,7 +61,7 @@ TEST(Differential, AStarJpsDijkstraAndSeedOnRandomGrids) {
                                 std::to_string(from.row) + " to " + std::to_string(to.col) + "," + std::to_string(to.row);
       ASSERT_TRUE(ref.status == PlanStatus::Found || ref.status == PlanStatus::NoPath) << where;
       ref.found() ? ++found : ++notFound;
-      for (Planner* p : {astar.get(), jps.get(), seed.get()}) {
+      for (Planner* p : {astar.get(), jps.get(), jpsPlus.get(), seed.get()}) {
         const PlanResult r = p->plan(grid, from, to, options);
         const std::string who = where + " " + algorithmName(p->algorithm());
         ASSERT_EQ(r.status, ref.status) << who;

@@ -1,4 +1,4 @@
-// astar and jps reproduce the published Moving AI optima (within 1e-3) on a sample of every scenario
+// astar, jps and jps+ reproduce the published Moving AI optima (within 1e-3) on a sample of every scenario
 // file in worlds/movingai (the first problem of each sampled bucket; `make bench` runs them all).
 #include <gtest/gtest.h>
 
@@ -21,12 +21,13 @@ struct ScenarioFile {
 
 TEST(MovingAi, SampleOfEveryScenarioFileMatchesThePublishedOptimum) {
   const ScenarioFile files[] = {{"worlds/movingai/dao/arena2.map", 3},
-                                {"worlds/movingai/maze/maze512-1-0.map", 60},
-                                {"worlds/movingai/room/8room_000.map", 10},
-                                {"worlds/movingai/random/random512-10-0.map", 8},
-                                {"worlds/movingai/street/Berlin_0_512.map", 8}};
+                                {"worlds/movingai/maze/maze512-1-0.map", 80},
+                                {"worlds/movingai/room/8room_000.map", 12},
+                                {"worlds/movingai/random/random512-10-0.map", 10},
+                                {"worlds/movingai/street/Berlin_0_512.map", 10}};
   auto astar = makePlanner(Algorithm::AStar);
   auto jps = makePlanner(Algorithm::Jps);
+  auto jpsPlus = makePlanner(Algorithm::JpsPlus);
   for (const ScenarioFile& f : files) {
     const mapio::MapLoad map = mapio::loadMap(source(f.map));
     ASSERT_TRUE(map.map) << map.error;
@@ -41,7 +42,7 @@ TEST(MovingAi, SampleOfEveryScenarioFileMatchesThePublishedOptimum) {
     }
     ASSERT_GE(sample.size(), 15u) << f.map;
     const Traversability grid(*map.map);
-    for (Planner* planner : {astar.get(), jps.get()}) {
+    for (Planner* planner : {astar.get(), jps.get(), jpsPlus.get()}) {
       const std::vector<ProblemOutcome> out = runProblems(*planner, grid, sample);
       for (size_t i = 0; i < sample.size(); ++i) {
         EXPECT_TRUE(out[i].matches) << f.map << " " << algorithmName(planner->algorithm()) << " bucket "

@@ -28,7 +28,7 @@ void expectUsageError(const std::string& args, const std::string& mention) {
 }
 
 TEST(PathCli, DrawsThePathAndPrintsLengthAndNodes) {
-  for (const char* algo : {"astar", "jps", "seed", "dijkstra"}) {
+  for (const char* algo : {"astar", "jps", "jps+", "seed", "dijkstra"}) {
     const RunOutput r = runCli("path " + kRoom + " --from 1,20 --to 20,1 --algo " + algo);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("S"), std::string::npos);
@@ -105,7 +105,7 @@ TEST(PathsCli, RunsAScenarioFileAndChecksTheOptima) {
   std::string few = ls[0] + "\n";
   for (size_t i = 1; i < ls.size(); i += 60) few += ls[i] + "\n";
   const std::string scen = tmp.write("few.scen", few);
-  for (const char* algo : {"astar", "jps"}) {
+  for (const char* algo : {"astar", "jps", "jps+"}) {
     const RunOutput r = runCli("paths " + map + " --scen " + shellQuote(scen) + " --algo " + algo + " --csv " +
                                shellQuote(tmp.path("out.csv")));
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;

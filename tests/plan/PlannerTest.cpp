@@ -12,8 +12,8 @@ namespace {
 
 using test::mapFromRows;
 
-const Algorithm kAll[] = {Algorithm::AStar, Algorithm::Jps, Algorithm::Dijkstra, Algorithm::Seed};
-const Algorithm kOptimal[] = {Algorithm::AStar, Algorithm::Jps, Algorithm::Dijkstra};
+const Algorithm kAll[] = {Algorithm::AStar, Algorithm::Jps, Algorithm::JpsPlus, Algorithm::Dijkstra, Algorithm::Seed};
+const Algorithm kOptimal[] = {Algorithm::AStar, Algorithm::Jps, Algorithm::JpsPlus, Algorithm::Dijkstra};
 
 struct KnownCase {
   const char* name;
