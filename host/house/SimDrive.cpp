@@ -16,6 +16,8 @@ DriveEvent carryOutOnRobot(sim::SimRobot& robot, const DriveAction& a, const Ran
       return DriveEvent::rotated();
     case DriveAction::Kind::Drive:
       return DriveEvent::driven(!robot.drive(a.value / 10.0));
+    case DriveAction::Kind::Think:
+      return DriveEvent::thought();
     case DriveAction::Kind::Done:
       break;
   }
