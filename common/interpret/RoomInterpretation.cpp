@@ -42,6 +42,58 @@ int16_t findWall(const RoomGrid& g, Side side, const Bounds& w, int16_t& cells) 
   return best;
 }
 
+void addExit(RoomInterpretation& r, Side side, Cell first, int16_t width) {
+  if (r.exitCount >= RoomInterpretation::kMaxExits) {
+    r.moreExits = true;
+    return;
+  }
+  Exit& e = r.exits[r.exitCount++];
+  e.side = side;
+  e.first = first;
+  e.width = width;
+}
+
+// Doorways strictly inside the walls' box become exits on the side of the nearer parallel wall.
+void addInnerDoorways(const RoomGrid& grid, const DoorwayLimits& limits, RoomInterpretation& r) {
+  const Bounds inner{static_cast<int16_t>(r.wallLine[3] + 1), static_cast<int16_t>(r.wallLine[2] + 1),
+                     static_cast<int16_t>(r.wallLine[1] - 1), static_cast<int16_t>(r.wallLine[0] - 1)};
+  constexpr uint8_t kCap = RoomInterpretation::kMaxExits;
+  Doorway found[kCap];
+  bool more = false;
+  const uint8_t n = findDoorways(grid, inner, limits, found, kCap, &more);
+  if (more) r.moreExits = true;
+  for (uint8_t i = 0; i < n; ++i) {
+    const Doorway& d = found[i];
+    // A "doorway" from one outer wall to the opposite one is a cross-section of a narrow room.
+    const bool wallToWall = d.alongX ? (d.first.x - 1 == r.wallLine[3] && d.first.x + d.width == r.wallLine[1])
+                                     : (d.first.y - 1 == r.wallLine[2] && d.first.y + d.width == r.wallLine[0]);
+    if (wallToWall) continue;
+    Side side;
+    if (d.alongX) {
+      side = (r.wallLine[0] - d.first.y) <= (d.first.y - r.wallLine[2]) ? Side::North : Side::South;
+    } else {
+      side = (r.wallLine[1] - d.first.x) <= (d.first.x - r.wallLine[3]) ? Side::East : Side::West;
+    }
+    addExit(r, side, d.first, d.width);
+  }
+}
+
+int32_t insideFree(const RoomGrid& grid, const RoomInterpretation& r) {
+  int32_t n = 0;
+  for (int16_t y = static_cast<int16_t>(r.wallLine[2] + 1); y < r.wallLine[0]; ++y) {
+    for (int16_t x = static_cast<int16_t>(r.wallLine[3] + 1); x < r.wallLine[1]; ++x) {
+      if (grid.isFree(Cell{x, y})) ++n;
+    }
+  }
+  return n;
+}
+
+uint8_t parts(int16_t interior, int16_t maxSide) {
+  if (maxSide <= 0 || interior <= 0) return 1;
+  const int p = (interior + maxSide - 1) / maxSide;
+  return static_cast<uint8_t>(p > 255 ? 255 : p);
+}
+
 }  // namespace
 
 Cell Exit::middle() const {
@@ -51,7 +103,7 @@ Cell Exit::middle() const {
                     : Cell{first.x, static_cast<int16_t>(first.y + half)};
 }
 
-RoomInterpretation interpretRoom(const RoomGrid& grid, const RoomLimits& limits) {
+RoomInterpretation interpretRoom(const RoomGrid& grid, const RoomLimits& limits, const DoorwayLimits& doorways) {
   RoomInterpretation r;
   const Bounds w = grid.window();
   if (w.empty() || grid.count(CellState::Occupied) == 0) return r;
@@ -76,19 +128,16 @@ RoomInterpretation interpretRoom(const RoomGrid& grid, const RoomLimits& limits)
         continue;
       }
       if (runLen > 0) {
-        if (r.exitCount < RoomInterpretation::kMaxExits) {
-          Exit& e = r.exits[r.exitCount++];
-          e.side = side;
-          e.first = horizontal ? Cell{runStart, r.wallLine[s]} : Cell{r.wallLine[s], runStart};
-          e.width = runLen;
-        } else {
-          r.moreExits = true;
-        }
+        addExit(r, side, horizontal ? Cell{runStart, r.wallLine[s]} : Cell{r.wallLine[s], runStart}, runLen);
         runLen = 0;
       }
     }
   }
+  addInnerDoorways(grid, doorways, r);
+  r.freeCells = insideFree(grid, r);
   const int16_t iw = r.interiorWidth(), ih = r.interiorHeight();
+  r.partsX = parts(iw, limits.maxSide);
+  r.partsY = parts(ih, limits.maxSide);
   if (iw < limits.minSide || ih < limits.minSide) {
     r.roomClass = RoomClass::TooSmall;
   } else if (iw > limits.maxSide || ih > limits.maxSide) {

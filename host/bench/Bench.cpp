@@ -2,6 +2,7 @@
 // measured against their targets.
 //   nxtmap-bench [SCENARIO_DIR]   (default: ./worlds/seed-appendix-a, else the source tree's)
 //   nxtmap-bench plan             the path-search section alone (host/bench/PlanBench.cpp)
+//   nxtmap-bench house            the house section alone (host/bench/HouseBench.cpp)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -18,6 +19,7 @@
 
 namespace nxtmap::bench {
 int runPlanBench();  // host/bench/PlanBench.cpp: the path-search section
+int runHouseBench();  // host/bench/HouseBench.cpp: the house section
 }
 
 namespace {
@@ -201,13 +203,15 @@ int run(int argc, char** argv) {
   }
   table.print();
   bench::printLinkBench(dir + "/occupancy-120.map", 1, 20);
-  return nxtmap::bench::runPlanBench();
+  const int rc = nxtmap::bench::runPlanBench();
+  return rc != 0 ? rc : nxtmap::bench::runHouseBench();
 }
 }  // namespace
 
 int main(int argc, char** argv) {
   try {
     if (argc > 1 && std::string(argv[1]) == "plan") return nxtmap::bench::runPlanBench();  // that section alone
+    if (argc > 1 && std::string(argv[1]) == "house") return nxtmap::bench::runHouseBench();  // that section alone
     return run(argc, argv);
   } catch (const nxtmap::cli::CliError& e) {
     nxtmap::cli::printError(std::string("bench: ") + e.what());

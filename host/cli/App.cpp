@@ -8,11 +8,13 @@
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
 #include "host/cli/ConnectCommand.hpp"
+#include "host/cli/ExportCommand.hpp"
 #include "host/cli/ExperimentsCommand.hpp"
 #include "host/cli/FlashCommand.hpp"
 #include "host/cli/PathCommand.hpp"
 #include "host/cli/PathsCommand.hpp"
 #include "host/cli/SimCommand.hpp"
+#include "host/cli/SimHouseCommand.hpp"
 
 namespace nxtmap::cli {
 
@@ -31,6 +33,10 @@ int runCli(int argc, char** argv) {
   FlashOptions flashOptions;
   CLI::App* connect = addConnectCommand(app, connectOptions);
   CLI::App* flash = addFlashCommand(app, flashOptions);
+  SimHouseOptions simHouseOptions;
+  CLI::App* simHouse = addSimHouseCommand(app, simHouseOptions);
+  ExportOptions exportOptions;
+  CLI::App* exportCmd = addExportCommand(app, exportOptions);
   app.footer("Examples:\n  nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live\n"
              "  nxtmap experiments worlds/seed-appendix-a --strategy both --csv results.csv --plots plots\n"
              "  nxtmap path worlds/seed-appendix-a/occupancy-120.map --from 1,20 --to 20,1 --algo seed\n"
@@ -42,9 +48,10 @@ int runCli(int argc, char** argv) {
     if (argc > 1 && argv[1][0] != '-') {
       const std::string command = argv[1];
       if (command != sim->get_name() && command != experiments->get_name() && command != path->get_name() &&
-          command != paths->get_name() && command != connect->get_name() && command != flash->get_name()) {
+          command != paths->get_name() && command != connect->get_name() && command != flash->get_name() &&
+          command != simHouse->get_name() && command != exportCmd->get_name()) {
         throw CliError("unknown command '" + command +
-                       "' (commands: sim, experiments, path, paths, connect, flash; see nxtmap --help)");
+                       "' (commands: sim, experiments, path, paths, sim-house, export, connect, flash; see nxtmap --help)");
       }
     }
     try {
@@ -58,6 +65,8 @@ int runCli(int argc, char** argv) {
       if (paths->parsed()) where = "paths: ";
       if (connect->parsed()) where = "connect: ";
       if (flash->parsed()) where = "flash: ";
+      if (simHouse->parsed()) where = "sim-house: ";
+      if (exportCmd->parsed()) where = "export: ";
       throw CliError(where + e.what());
     }
     if (sim->parsed()) return runSim(simOptions);
@@ -66,8 +75,10 @@ int runCli(int argc, char** argv) {
     if (paths->parsed()) return runPaths(pathsOptions);
     if (connect->parsed()) return runConnect(connectOptions);
     if (flash->parsed()) return runFlash(flashOptions);
+    if (simHouse->parsed()) return runSimHouse(simHouseOptions);
+    if (exportCmd->parsed()) return runExport(exportOptions);
     std::cout << app.help();
-    throw CliError("no command given: use sim, experiments, path or paths (see nxtmap --help)");
+    throw CliError("no command given: use sim, experiments, path, paths, sim-house or export (see nxtmap --help)");
   } catch (const CliError& e) {
     printError(e.what());
     return kExitUsage;

@@ -1,4 +1,5 @@
 #include "host/cli/PathCommand.hpp"
+#include "host/cli/HousePathCommand.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -93,7 +94,9 @@ std::string drawMap(const mapio::OccupancyMap& map, const plan::PlanResult& r, c
 
 CLI::App* addPathCommand(CLI::App& app, PathOptions& o) {
   CLI::App* c = app.add_subcommand("path", "one path on a map, drawn, with its length and nodes expanded");
-  c->add_option("map", o.map, "map: a world (.map, .yaml) or a map saved by 'nxtmap sim --save'")->required();
+  c->add_option("map", o.map, "map: a world (.map, .yaml) or a map saved by 'nxtmap sim --save'");
+  c->add_option("--house", o.house, "route across the rooms of a house directory instead (--from ROOM:C,R "
+                                    "--to ROOM:C,R|near:LABEL, cells of the room's map)");
   c->add_option("--from", o.from, "start cell COL,ROW (col right, row down from the top-left)")->required();
   c->add_option("--to", o.to, "goal cell COL,ROW, or near:LABEL (closest reachable cell next to a label)")
       ->required();
@@ -107,6 +110,8 @@ CLI::App* addPathCommand(CLI::App& app, PathOptions& o) {
 }
 
 int runPath(const PathOptions& o) {
+  if (!o.house.empty()) return runHousePath(o);
+  if (o.map.empty()) throw CliError("path: give a MAP, or --house DIR");
   const auto algorithm = plan::algorithmByName(o.algo);
   if (!algorithm) throw CliError("--algo must be one of seed, astar, jps, jps+, dijkstra, not '" + o.algo + "'");
   if (o.draw != "auto" && o.draw != "always" && o.draw != "never") {

@@ -21,6 +21,7 @@ struct PathOptions {
   bool throughUnknown = false;
   std::string draw = "auto";        // auto | always | never
   uint64_t maxNodes = 0;            // 0: no limit
+  std::string house;                // --house DIR: route across the rooms of a saved house (HousePathCommand)
 };
 
 CLI::App* addPathCommand(CLI::App& app, PathOptions& options);

@@ -1,0 +1,106 @@
+// The house section of `make bench` (nxtmap-bench house: this section alone): every HouseExpo plan
+// in worlds/houseexpo mapped room by room from its default start, without noise and with typical
+// noise, against the targets (agreement of the merged map with the world on the cells a
+// reachable cell can observe: >= 99 % without noise, >= 97 % with typical noise).
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "host/house/HouseExpoPlan.hpp"
+#include "host/house/HouseMapper.hpp"
+#include "host/house/HouseScore.hpp"
+#include "host/report/ExperimentTable.hpp"
+
+namespace nxtmap::bench {
+namespace {
+namespace fs = std::filesystem;
+using report::formatNumber;
+
+constexpr double kCleanTargetPct = 99.0;
+constexpr double kNoisyTargetPct = 97.0;
+constexpr uint64_t kNoisySeed = 1;
+
+fs::path houseDir() {
+  const fs::path local = fs::path("worlds") / "houseexpo";
+  std::error_code ec;
+  if (fs::is_directory(local, ec)) return local;
+  return fs::path(__FILE__).parent_path().parent_path().parent_path() / "worlds" / "houseexpo";
+}
+
+struct Result {
+  house::HouseScore score;
+  house::PlanCoverage coverage;
+  double timeUnits = 0, wallS = 0;
+  uint32_t sensorRequests = 0;
+};
+
+Result mapHouse(const house::HousePlan& plan, const std::string& noise) {
+  house::HouseConfig config;
+  house::defaultStart(plan, config.startCol, config.startRow);
+  config.noise = *sim::noiseProfileByName(noise);
+  config.seed = kNoisySeed;
+  const auto t0 = std::chrono::steady_clock::now();
+  house::HouseMapper m(plan.world, config);
+  m.run();
+  Result r;
+  r.wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.score = house::scoreHouse(m);
+  r.coverage = house::planCoverage(m, plan);
+  r.timeUnits = m.counters().timeUnits();
+  r.sensorRequests = m.counters().sensorRequests();
+  return r;
+}
+
+std::string pad(const std::string& s, size_t w) { return s.size() >= w ? s : s + std::string(w - s.size(), ' '); }
+
+}  // namespace
+
+int runHouseBench() {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(houseDir(), ec)) {
+    if (e.path().extension() == ".json") files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  std::cout << "\nhouses (HouseExpo, room by room, propagation; agreement on cells a reachable cell can observe)\n";
+  const std::vector<size_t> w = {20, 8, 13, 9, 10, 9, 8, 10, 8};
+  const std::vector<std::string> head = {"house", "noise", "rooms/plan", "gateways", "agreement", "target",
+                                         "result", "time", "sensors"};
+  std::string line;
+  for (size_t i = 0; i < head.size(); ++i) line += pad(head[i], w[i]) + " ";
+  std::cout << line << "\n" << std::string(line.size(), '-') << "\n";
+  int met = 0, targets = 0;
+  double wall = 0;
+  for (const fs::path& f : files) {
+    const house::HousePlanLoad l = house::loadHouseExpo(f.string());
+    if (!l.plan) {
+      std::cout << l.error << "\n";
+      continue;
+    }
+    for (const std::string noise : {"none", "typical"}) {
+      const Result r = mapHouse(*l.plan, noise);
+      wall += r.wallS;
+      const double target = noise == "none" ? kCleanTargetPct : kNoisyTargetPct;
+      const bool ok = r.score.agreementPct() >= target;
+      ++targets;
+      met += ok ? 1 : 0;
+      const std::vector<std::string> cells = {
+          f.stem().string().substr(0, 19), noise,
+          std::to_string(r.score.rooms) + "/" + std::to_string(l.plan->roomNum),
+          std::to_string(r.score.gateways), formatNumber(r.score.agreementPct(), 1) + " %",
+          ">= " + formatNumber(target) + " %", ok ? "PASS" : "MISS", formatNumber(r.timeUnits, 0),
+          std::to_string(r.sensorRequests)};
+      line.clear();
+      for (size_t i = 0; i < cells.size(); ++i) line += pad(cells[i], w[i]) + " ";
+      std::cout << line << "\n";
+    }
+  }
+  std::cout << "house targets met: " << met << " of " << targets << " (wall time " << formatNumber(wall, 2)
+            << " s)\n";
+  return 0;
+}
+
+}  // namespace nxtmap::bench

@@ -1,0 +1,28 @@
+// `nxtmap sim-house WORLD [--start C,R] [--noise P] [--seed N] [--save DIR]`: maps a house in the
+// simulator room by room (host/house/HouseMapper), prints the rooms, gateways, counters and the
+// merged map's agreement with the world, and optionally saves the house (one ROS map per room
+// and a house file).
+#pragma once
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace nxtmap::cli {
+
+struct SimHouseOptions {
+  std::string world;   // HouseExpo .json, Moving AI .map or ROS .yaml
+  std::string start;   // COL,ROW; optional for a HouseExpo plan (a start is picked)
+  std::string heading = "N";
+  double rangeM = 1.0;
+  std::string noise = "none";
+  std::string seed = "1";
+  std::string strategy = "propagation";
+  std::string save;    // directory to write the house to
+};
+
+CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& options);
+int runSimHouse(const SimHouseOptions& options);
+
+}  // namespace nxtmap::cli

@@ -1,0 +1,47 @@
+// HouseExpoPlan: a HouseExpo floor plan (TeaganLi/HouseExpo JSON) rasterised into a simulator world.
+// The JSON holds `verts`, one outline polygon in metres (interior walls are thin notches of it),
+// `room_category` {name: [[x1, y1, x2, y2], ...]} room boxes in metres, `room_num`, `id`, `bbox`.
+// Rasterising: a cell whose centre lies inside the polygon (even-odd rule) is free, every other
+// cell is wall; one ring of wall cells surrounds the bounding box. World rows grow downwards,
+// y in metres grows upwards: row 0 holds the plan's highest y.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "host/sim/World.hpp"
+
+namespace nxtmap::house {
+
+// A room box of the plan, in world cells (inclusive; col right, row down).
+struct PlanRoom {
+  std::string category;  // e.g. "Kitchen"
+  int minCol = 0, minRow = 0, maxCol = 0, maxRow = 0;
+  bool contains(int col, int row) const { return col >= minCol && col <= maxCol && row >= minRow && row <= maxRow; }
+};
+
+struct HousePlan {
+  std::string id;
+  int roomNum = 0;               // the plan's own room count
+  std::vector<PlanRoom> rooms;   // one per room box
+  sim::World world;
+  // The metres of the world's lower-left corner (col 0's left edge, the last row's bottom edge).
+  double originXM = 0.0, originYM = 0.0;
+};
+
+struct HousePlanLoad {
+  std::optional<HousePlan> plan;
+  std::string error;  // names the file and the problem when plan is empty
+};
+
+// Reads and rasterises a HouseExpo JSON file; resolution in metres per cell (0.01 .. 1).
+HousePlanLoad loadHouseExpo(const std::string& path, double resolutionM = 0.10);
+// The same from the JSON text; `name` is used in messages and as the world's name.
+HousePlanLoad parseHouseExpo(const std::string& json, const std::string& name, double resolutionM = 0.10);
+
+// A good start for a run: among the free cells at least 4 cells from any wall (or as far as any
+// gets), the one nearest the first room box's centre. False when the plan has no free cell.
+bool defaultStart(const HousePlan& plan, int& col, int& row);
+
+}  // namespace nxtmap::house

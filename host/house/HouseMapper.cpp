@@ -1,0 +1,267 @@
+#include "host/house/HouseMapper.hpp"
+
+#include "common/motion/Pilot.hpp"
+#include "host/house/GoToExplorer.hpp"
+#include "host/house/RoomSplit.hpp"
+#include "host/house/SimDrive.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <memory>
+
+namespace nxtmap::house {
+namespace {
+ExplorerConfig explorerConfigFor(const sim::World& world, const HouseConfig& c) {
+  ExplorerConfig e;
+  e.geometry.cellCm = static_cast<int16_t>(std::lround(world.resolutionM() * 100.0));
+  e.geometry.minCm = static_cast<int16_t>(std::lround(c.minRangeM * 100.0));
+  e.geometry.maxCm = static_cast<int16_t>(std::lround(c.rangeM * 100.0));
+  e.geometry.mountCm = 0;
+  // As MappingRun: past the distance where half the beam still falls inside one cell, an echo
+  // only proves the cells before it free.
+  const double beam = c.noise.coneHalfAngleDeg;
+  if (beam > 0.0) {
+    const double sure = 0.5 * e.geometry.cellCm / std::tan(beam * 3.141592653589793 / 180.0) - e.geometry.mountCm;
+    if (sure < e.geometry.maxCm) {
+      e.geometry.sureCm = static_cast<int16_t>(std::max(e.geometry.minCm + 1.0, std::floor(sure)));
+    }
+  }
+  return e;
+}
+
+// Breadth-first distances (4-connected, over free cells of `known`) from `from`; -1 = unreached.
+std::vector<int> distances(const network::RoomMap& known, Cell from) {
+  std::vector<int> dist(static_cast<size_t>(known.width()) * static_cast<size_t>(known.height()), -1);
+  const auto idx = [&](Cell c) {
+    return static_cast<size_t>((c.y - known.minY()) * known.width() + (c.x - known.minX()));
+  };
+  if (!known.isFree(from)) return dist;
+  std::deque<Cell> queue{from};
+  dist[idx(from)] = 0;
+  while (!queue.empty()) {
+    const Cell c = queue.front();
+    queue.pop_front();
+    for (int d = 0; d < 4; ++d) {
+      const Cell n = advance(c, static_cast<Dir>(d));
+      if (!known.isFree(n) || dist[idx(n)] >= 0) continue;
+      dist[idx(n)] = dist[idx(c)] + 1;
+      queue.push_back(n);
+    }
+  }
+  return dist;
+}
+}  // namespace
+
+HouseMapper::HouseMapper(const sim::World& world, const HouseConfig& config)
+    : world_(world),
+      config_(config),
+      explorerConfig_(explorerConfigFor(world, config)),
+      frame_(config.startCol, config.startRow, config.heading),
+      robot_(world, config.startCol, config.startRow, config.heading, config.noise, config.seed,
+             config.sensorReachCm, 0.0) {}
+
+void HouseMapper::mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, const RoomExit* via) {
+  const network::RoomTransform toHouse = network::RoomTransform::fromPose(belief_.cell, belief_.heading);
+  const network::RoomTransform toRoom = toHouse.inverse();
+  std::vector<Cell> entrance;
+  for (const Cell c : entranceHouse) entrance.push_back(toRoom.apply(c));
+  RoomRun run(robot_, explorerConfig_, config_.strategy, config_.doorways, entrance, config_.poseCorrection,
+              config_.roomLimits);
+  run.runToEnd();
+  if (std::getenv("NXTMAP_HOUSE_DEBUG")) {
+    std::fprintf(stderr, "room %zu: end %d, pose %d,%d, exits %zu, ignored %d\n", network_.rooms().size(),
+                 static_cast<int>(run.end()), run.pose().cell.x, run.pose().cell.y, run.exits().size(),
+                 run.ignoredDoorways());
+    for (const RoomExit& e : run.exits())
+      std::fprintf(stderr, "  exit inside %d,%d out %d depth %d cells %zu\n", e.inside.x, e.inside.y,
+                   static_cast<int>(e.outward), e.depth, e.cells.size());
+  }
+  const Counters& c = run.counters();
+  counters_.explore.sensorRequests += c.sensorRequests;
+  counters_.explore.rawSamples += c.rawSamples;
+  counters_.explore.cellsMoved += c.cellsMoved;
+  counters_.explore.turnEighths += c.turnEighths;
+  counters_.explore.blockedMoves += c.blockedMoves;
+  counters_.explore.correctionMrad += c.correctionMrad;
+
+  // An open area larger than the maximum becomes several rooms (parts share the room's frame).
+  const RoomParts parts = splitRoom(run.roomMap(), run.interpretation());
+  const int first = static_cast<int>(network_.rooms().size());
+  for (const network::RoomMap& part : parts.maps) {
+    network::RoomNode node;
+    node.name = "room" + std::to_string(network_.rooms().size());
+    node.map = part;
+    node.toHouse = toHouse;
+    network_.addRoom(std::move(node));
+  }
+  for (const RoomParts::Cut& cut : parts.cuts) {
+    network_.addGateway(network::Gateway{first + cut.partA, first + cut.partB, cut.cells, cut.cells});
+  }
+  const auto partOf = [&](Cell at) { return first + std::max(0, parts.partOf(at)); };
+  if (fromRoom >= 0 && via != nullptr && !entrance.empty()) {
+    network::Gateway g;
+    g.roomA = fromRoom;
+    g.roomB = partOf(entrance[entrance.size() / 2]);
+    g.cellsA = via->cells;
+    g.cellsB = entrance;
+    network_.addGateway(std::move(g));
+  }
+  for (const RoomExit& e : run.exits()) pending_.push_back(Pending{partOf(e.inside), e});
+  exitsFound_ += static_cast<int>(run.exits().size());
+  belief_.cell = toHouse.apply(run.pose().cell);
+  belief_.heading = toHouse.apply(run.pose().heading);
+}
+
+bool HouseMapper::leadsToMappedRoom(const Pending& p) {
+  const network::RoomNode& owner = network_.rooms()[static_cast<size_t>(p.room)];
+  const Cell inside = owner.toHouse.apply(p.exit.inside);
+  const Dir out = owner.toHouse.apply(p.exit.outward);
+  const auto& rooms = network_.rooms();
+  for (int k = 1; k <= 2; ++k) {
+    const Cell beyond = advance(inside, out, static_cast<int16_t>(p.exit.depth + k));
+    for (size_t j = 0; j < rooms.size(); ++j) {
+      if (static_cast<int>(j) == p.room) continue;
+      const network::RoomTransform toJ = rooms[j].toHouse.inverse();
+      if (!rooms[j].map.isFree(toJ.apply(beyond))) continue;
+      // A gateway to a mapped room; skip it when that doorway is already a gateway of the two.
+      std::vector<Cell> house, inJ;
+      for (const Cell c : p.exit.cells) {
+        house.push_back(owner.toHouse.apply(c));
+        inJ.push_back(toJ.apply(house.back()));
+      }
+      bool known = false;
+      for (const int gi : network_.gatewaysBetween(p.room, static_cast<int>(j))) {
+        const network::Gateway& g = network_.gateways()[static_cast<size_t>(gi)];
+        const network::RoomNode& a = rooms[static_cast<size_t>(g.roomA)];
+        for (const Cell gc : g.cellsA) {
+          const Cell h = a.toHouse.apply(gc);
+          for (const Cell hc : house) known = known || (std::abs(h.x - hc.x) + std::abs(h.y - hc.y) <= 1);
+        }
+      }
+      if (!known) {
+        network::Gateway g;
+        g.roomA = p.room;
+        g.roomB = static_cast<int>(j);
+        g.cellsA = p.exit.cells;
+        g.cellsB = inJ;
+        network_.addGateway(std::move(g));
+      }
+      return true;
+    }
+  }
+  return false;
+}
+
+bool HouseMapper::step(Dir d) {
+  if (belief_.heading != d) {
+    int eighths = 4;
+    if (rotate(belief_.heading, 1) == d) eighths = 2;
+    if (rotate(belief_.heading, -1) == d) eighths = -2;
+    robot_.turn(eighths);
+    counters_.travel.turnEighths += static_cast<uint32_t>(std::abs(eighths));
+    belief_.heading = d;
+  }
+  const sim::MoveResult r = robot_.move(1);
+  if (r.blocked) {
+    ++counters_.travel.blockedMoves;
+    return false;
+  }
+  ++counters_.travel.cellsMoved;
+  belief_.cell = advance(belief_.cell, d);
+  return true;
+}
+
+bool HouseMapper::travelTo(Cell target, const network::RoomMap& known) {
+  if (belief_.cell == target) return true;
+  // The travel's frame: the robot's believed pose is its origin, as for an explorer's start.
+  const network::RoomTransform toHouse = network::RoomTransform::fromPose(belief_.cell, belief_.heading);
+  const network::RoomTransform toLocal = toHouse.inverse();
+  auto storage = std::make_unique<RoomRun::Storage>();
+  MapLayers map(storage->map.view(), RoomRun::Storage::kWidth(), RoomRun::Storage::kHeight());
+  TravelPlanner planner(storage->travel.view(), RoomRun::Storage::kWidth(), RoomRun::Storage::kHeight());
+  for (int y = known.minY(); y <= known.maxY(); ++y) {
+    for (int x = known.minX(); x <= known.maxX(); ++x) {
+      const Cell h{static_cast<int16_t>(x), static_cast<int16_t>(y)};
+      const CellState s = known.at(h);
+      if (s == CellState::Unknown) continue;
+      const Cell c = toLocal.apply(h);
+      if (!map.grid().fits(c)) continue;
+      (void)(s == CellState::Free ? map.observeFree(c) : map.observeOccupied(c));
+    }
+  }
+  GoToExplorer go(map, planner, explorerConfig_, toLocal.apply(target));
+  PilotConfig pc;
+  pc.correct = config_.poseCorrection;
+  Pilot pilot(go, pc);
+  DriveAction a = pilot.step(DriveEvent::start());
+  while (!pilot.finished()) a = pilot.step(carryOutOnRobot(robot_, a, explorerConfig_.geometry));
+  const Counters c = pilot.counters();
+  counters_.travel.sensorRequests += c.sensorRequests;
+  counters_.travel.rawSamples += c.rawSamples;
+  counters_.travel.cellsMoved += c.cellsMoved;
+  counters_.travel.turnEighths += c.turnEighths;
+  counters_.travel.blockedMoves += c.blockedMoves;
+  counters_.travel.correctionMrad += c.correctionMrad;
+  belief_.cell = toHouse.apply(go.pose().cell);
+  belief_.heading = toHouse.apply(go.pose().heading);
+  if (!go.arrived()) ++counters_.travelBlocked;
+  return go.arrived();
+}
+
+int HouseMapper::run() {
+  belief_ = Pose{};
+  mapRoom({}, -1, nullptr);
+  while (!pending_.empty() && static_cast<int>(network_.rooms().size()) < config_.maxRooms) {
+    // Exits into rooms already mapped become gateways without a run.
+    pending_.erase(std::remove_if(pending_.begin(), pending_.end(), [&](const Pending& p) { return leadsToMappedRoom(p); }),
+                   pending_.end());
+    if (pending_.empty()) break;
+    const network::RoomMap known = network_.merged();
+    const std::vector<int> dist = distances(known, belief_.cell);
+    size_t best = pending_.size();
+    int bestDist = std::numeric_limits<int>::max();
+    for (size_t i = 0; i < pending_.size(); ++i) {
+      const network::RoomNode& owner = network_.rooms()[static_cast<size_t>(pending_[i].room)];
+      const Cell in = owner.toHouse.apply(pending_[i].exit.inside);
+      if (!known.inside(in)) continue;
+      const int d = dist.empty() ? -1
+                                 : dist[static_cast<size_t>((in.y - known.minY()) * known.width() + (in.x - known.minX()))];
+      if (d >= 0 && d < bestDist) {
+        bestDist = d;
+        best = i;
+      }
+    }
+    if (best == pending_.size()) {  // nothing left that can be reached
+      if (std::getenv("NXTMAP_HOUSE_DEBUG")) std::fprintf(stderr, "no reachable exit among %zu\n", pending_.size());
+      exitsUnreached_ += static_cast<int>(pending_.size());
+      pending_.clear();
+      break;
+    }
+    const Pending p = pending_[best];
+    pending_.erase(pending_.begin() + static_cast<long>(best));
+    const network::RoomNode& owner = network_.rooms()[static_cast<size_t>(p.room)];
+    const Cell in = owner.toHouse.apply(p.exit.inside);
+    const Dir out = owner.toHouse.apply(p.exit.outward);
+    bool through = travelTo(in, known);
+    const bool reachedInside = through;
+    for (int k = 0; through && k <= p.exit.depth; ++k) through = step(out);
+    if (!through) {
+      if (std::getenv("NXTMAP_HOUSE_DEBUG"))
+        std::fprintf(stderr, "exit not passed: reached inside %d, at %d,%d\n", reachedInside, belief_.cell.x, belief_.cell.y);
+      ++exitsUnreached_;
+      continue;
+    }
+    std::vector<Cell> entranceHouse;
+    for (const Cell c : p.exit.cells) entranceHouse.push_back(owner.toHouse.apply(c));
+    const int from = p.room;
+    const RoomExit via = p.exit;
+    mapRoom(entranceHouse, from, &via);
+  }
+  return static_cast<int>(network_.rooms().size());
+}
+
+}  // namespace nxtmap::house

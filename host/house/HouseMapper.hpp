@@ -1,0 +1,89 @@
+// HouseMapper: maps a house in the simulator room by room (method section 5): map the room
+// (RoomRun), record its exits; then pick the nearest unexplored exit, plan to it over what is
+// known, pass through, start a new room map with its origin at the entrance, map it and record
+// the gateway; repeat until no unexplored exit is left. An exit that leads into a room already
+// mapped becomes a gateway to it without a new run. One simulated robot keeps its true pose
+// throughout; everything the mapper decides uses only its believed pose and its maps.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "common/explore/Counters.hpp"
+#include "common/interpret/Doorway.hpp"
+#include "common/interpret/RoomInterpretation.hpp"
+#include "host/house/RoomRun.hpp"
+#include "host/mapping/FrameTransform.hpp"
+#include "host/mapping/Strategy.hpp"
+#include "host/network/HouseNetwork.hpp"
+#include "host/sim/NoiseProfile.hpp"
+#include "host/sim/World.hpp"
+
+namespace nxtmap::house {
+
+struct HouseConfig {
+  int startCol = 0, startRow = 0;           // start cell in the world
+  sim::Heading heading = sim::Heading::N;   // initial heading in the world (= house frame +y)
+  double rangeM = 1.0, minRangeM = 0.05;    // trusted sensor range (published: 5 cm - 1 m)
+  double sensorReachCm = 255.0;
+  sim::NoiseProfile noise;
+  uint64_t seed = 1;
+  mapping::Strategy strategy = mapping::Strategy::Propagation;
+  DoorwayLimits doorways{4, 15, 3, 2};     // cells: 0.4 .. 1.5 m doorways at 10 cm cells, walls of 2+ cells
+  RoomLimits roomLimits{3, 80};             // an open area over 8 m (at 10 cm cells) is several rooms
+  int maxRooms = 40;                        // safety stop
+  bool poseCorrection = true;               // the pilot keeps the robot on the grid (off: dead reckoning)
+};
+
+struct HouseCounters {
+  Counters explore;                 // summed over the room runs
+  Counters travel;                  // driving between rooms (to exits, through doorways)
+  uint32_t travelBlocked = 0;       // travels that did not arrive
+  double timeUnits() const { return (explore.timeHalfUnits() + travel.timeHalfUnits()) / 2.0; }
+  uint32_t sensorRequests() const { return explore.sensorRequests + travel.sensorRequests; }
+};
+
+class HouseMapper {
+ public:
+  HouseMapper(const sim::World& world, const HouseConfig& config);
+
+  // Maps the whole house (every exit reachable from the start). Returns the number of rooms.
+  int run();
+
+  const network::HouseNetwork& network() const { return network_; }
+  network::HouseNetwork& network() { return network_; }
+  const HouseCounters& counters() const { return counters_; }
+  int exitsFound() const { return exitsFound_; }
+  int exitsUnreached() const { return exitsUnreached_; }   // exits the robot could not get through
+  const sim::SimRobot& robot() const { return robot_; }
+  const sim::World& world() const { return world_; }
+  const HouseConfig& config() const { return config_; }
+  const ExplorerConfig& explorerConfig() const { return explorerConfig_; }
+  // House frame (room 0: origin at the start, +y the initial heading) <-> world cells.
+  const mapping::FrameTransform& houseFrame() const { return frame_; }
+
+ private:
+  struct Pending {
+    int room;
+    RoomExit exit;  // in the room's frame
+  };
+  void mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, const RoomExit* via);
+  bool leadsToMappedRoom(const Pending& p);
+  // Drives to a house cell over the known rooms with the pilot (pose corrections); false when not there.
+  bool travelTo(Cell target, const network::RoomMap& known);
+  bool step(Dir d);
+
+  const sim::World& world_;
+  HouseConfig config_;
+  ExplorerConfig explorerConfig_;
+  mapping::FrameTransform frame_;
+  sim::SimRobot robot_;
+  network::HouseNetwork network_;
+  HouseCounters counters_;
+  Pose belief_;  // in the house frame
+  std::vector<Pending> pending_;
+  int exitsFound_ = 0;
+  int exitsUnreached_ = 0;
+};
+
+}  // namespace nxtmap::house

@@ -1,0 +1,104 @@
+#include "host/house/HouseScore.hpp"
+
+#include "host/sim/WorldTruth.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace nxtmap::house {
+namespace {
+CellState beliefAt(const HouseMapper& m, const network::RoomMap& merged, int col, int row) {
+  return merged.at(m.houseFrame().toExplorer(col, row));
+}
+}  // namespace
+
+HouseScore scoreHouse(const HouseMapper& m) {
+  const sim::World& world = m.world();
+  const RangeGeometry& g = m.explorerConfig().geometry;
+  const sim::Observability obs =
+      sim::computeObservability(world, m.config().startCol, m.config().startRow, g.freeCells(), g.hitCells());
+  const network::RoomMap merged = m.network().merged();
+  HouseScore s;
+  s.rooms = static_cast<int>(m.network().rooms().size());
+  s.gateways = static_cast<int>(m.network().gateways().size());
+  for (int row = 0; row < world.height(); ++row) {
+    for (int col = 0; col < world.width(); ++col) {
+      const bool blocked = world.blocked(col, row);
+      const CellState b = beliefAt(m, merged, col, row);
+      const bool disagree = b != CellState::Unknown && ((b == CellState::Occupied) != blocked);
+      if (obs.observable[static_cast<size_t>(row * world.width() + col)] == 0) {
+        if (disagree) ++s.wrongElsewhere;
+        continue;
+      }
+      ++s.observable;
+      if (b == CellState::Unknown) {
+        ++s.unknown;
+      } else if (disagree) {
+        ++s.wrong;
+      } else {
+        ++s.agree;
+      }
+    }
+  }
+  return s;
+}
+
+PlanCoverage planCoverage(const HouseMapper& m, const HousePlan& plan, double minPct) {
+  const sim::World& world = m.world();
+  const sim::Observability obs = sim::computeObservability(world, m.config().startCol, m.config().startRow, 1, 1);
+  const network::RoomMap merged = m.network().merged();
+  PlanCoverage c;
+  c.planRooms = static_cast<int>(plan.rooms.size());
+  for (const PlanRoom& r : plan.rooms) {
+    int reachable = 0, mapped = 0;
+    for (int row = r.minRow; row <= r.maxRow; ++row) {
+      for (int col = r.minCol; col <= r.maxCol; ++col) {
+        if (!world.inside(col, row) || obs.reachable[static_cast<size_t>(row * world.width() + col)] == 0) continue;
+        ++reachable;
+        if (beliefAt(m, merged, col, row) == CellState::Free) ++mapped;
+      }
+    }
+    if (reachable == 0) continue;
+    ++c.reachable;
+    if (100.0 * mapped >= minPct * reachable) ++c.covered;
+  }
+  return c;
+}
+
+void labelRoomsFromPlan(HouseMapper& m, const HousePlan& plan) {
+  auto& rooms = m.network().rooms();
+  std::map<std::string, int> used;
+  for (const PlanRoom& r : plan.rooms) {
+    std::string base;
+    for (const char ch : r.category) base += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (base.empty() || !std::isalpha(static_cast<unsigned char>(base[0]))) base = "room_" + base;
+    // The free mapped cell nearest the box's centre, inside the box.
+    const double cc = (r.minCol + r.maxCol) / 2.0, cr = (r.minRow + r.maxRow) / 2.0;
+    int bestRoom = -1;
+    Cell bestCell{};
+    double bestD = 0.0;
+    for (int row = r.minRow; row <= r.maxRow; ++row) {
+      for (int col = r.minCol; col <= r.maxCol; ++col) {
+        const Cell h = m.houseFrame().toExplorer(col, row);
+        const double d = std::hypot(col - cc, row - cr);
+        if (bestRoom >= 0 && d >= bestD) continue;
+        for (size_t k = 0; k < rooms.size(); ++k) {
+          const Cell local = rooms[k].toHouse.inverse().apply(h);
+          if (!rooms[k].map.isFree(local)) continue;
+          bestRoom = static_cast<int>(k);
+          bestCell = local;
+          bestD = d;
+          break;
+        }
+      }
+    }
+    if (bestRoom < 0) continue;
+    const int n = ++used[base];
+    const std::string name = n == 1 ? base : base + "_" + std::to_string(n);
+    rooms[static_cast<size_t>(bestRoom)].labels[name] = bestCell;
+  }
+}
+
+}  // namespace nxtmap::house

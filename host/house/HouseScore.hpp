@@ -1,0 +1,38 @@
+// HouseScore: how a mapped house compares with the world and with the floor plan.
+#pragma once
+
+#include <vector>
+
+#include "host/house/HouseExpoPlan.hpp"
+#include "host/house/HouseMapper.hpp"
+
+namespace nxtmap::house {
+
+struct HouseScore {
+  int observable = 0;      // world cells some reachable cell can observe (the method's sensing)
+  int agree = 0;           // ... that the merged map holds in the world's state
+  int unknown = 0;         // ... that the merged map holds as unknown
+  int wrong = 0;           // ... that the merged map holds in the other state
+  int wrongElsewhere = 0;  // known map cells outside the observable set that disagree with the world
+  int rooms = 0;           // room maps in the network
+  int gateways = 0;
+  double agreementPct() const { return observable == 0 ? 100.0 : 100.0 * agree / observable; }
+};
+
+HouseScore scoreHouse(const HouseMapper& mapper);
+
+// Plan rooms (room boxes) whose reachable free cells the merged map holds as free to at least
+// `minPct` percent; rooms with no reachable cell are not counted in `reachable`.
+struct PlanCoverage {
+  int planRooms = 0;   // boxes in the plan
+  int reachable = 0;   // boxes holding reachable free cells
+  int covered = 0;     // ... mapped to at least minPct
+};
+PlanCoverage planCoverage(const HouseMapper& mapper, const HousePlan& plan, double minPct = 90.0);
+
+// Names the mapped rooms after the plan: each plan room box whose centre (or nearest free cell
+// to it) is a free cell of a room map gets a label there, the category in lower case ("kitchen",
+// "kitchen_2" for a second one). The user's naming of rooms, in the simulator.
+void labelRoomsFromPlan(HouseMapper& mapper, const HousePlan& plan);
+
+}  // namespace nxtmap::house

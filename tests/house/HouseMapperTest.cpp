@@ -1,0 +1,125 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "host/house/HouseExpoPlan.hpp"
+#include "host/house/HouseMapper.hpp"
+#include "host/house/HouseScore.hpp"
+#include "host/network/HouseFiles.hpp"
+#include "tests/support/TempDir.hpp"
+
+namespace nxtmap::house {
+namespace {
+
+const std::string kRoot = std::string(NXTMAP_SOURCE_DIR) + "/worlds/";
+
+TEST(HouseMapper, ThreeRoomsWithALoopOfDoorways) {
+  const sim::WorldLoad l = sim::World::load(kRoot + "houses/three-rooms.map");
+  ASSERT_TRUE(l.world) << l.error;
+  HouseConfig config;
+  config.startCol = 8;
+  config.startRow = 8;
+  HouseMapper m(*l.world, config);
+  EXPECT_EQ(m.run(), 3);
+  const network::HouseNetwork& n = m.network();
+  std::string error;
+  EXPECT_TRUE(n.validate(error)) << error;
+  // Three doorways: two passed, the third found from both sides joins two mapped rooms.
+  EXPECT_EQ(n.gateways().size(), 3u);
+  EXPECT_EQ(m.exitsUnreached(), 0);
+  for (int a = 0; a < 3; ++a) {
+    for (int b = 0; b < 3; ++b) EXPECT_FALSE(n.roomRoute(a, b).empty());
+  }
+  const HouseScore s = scoreHouse(m);
+  EXPECT_GE(s.agreementPct(), 99.0);
+  EXPECT_EQ(s.wrong, 0);
+  // Every gateway's cells are the same world cells seen from both rooms.
+  for (const network::Gateway& g : n.gateways()) {
+    const auto& ra = n.rooms()[static_cast<size_t>(g.roomA)];
+    const auto& rb = n.rooms()[static_cast<size_t>(g.roomB)];
+    ASSERT_EQ(g.cellsA.size(), g.cellsB.size());
+    for (size_t i = 0; i < g.cellsA.size(); ++i) {
+      int ca, rowA, cb, rowB;
+      m.houseFrame().toWorld(ra.toHouse.apply(g.cellsA[i]), ca, rowA);
+      m.houseFrame().toWorld(rb.toHouse.apply(g.cellsB[i]), cb, rowB);
+      EXPECT_EQ(ca, cb);
+      EXPECT_EQ(rowA, rowB);
+      EXPECT_FALSE(l.world->blocked(ca, rowA));
+    }
+  }
+}
+
+TEST(HouseMapper, HouseExpoPlanRoomByRoom) {
+  const HousePlanLoad l = loadHouseExpo(kRoot + "houseexpo/1f99717550c31ae321ca2313edceedcc.json");
+  ASSERT_TRUE(l.plan) << l.error;
+  HouseConfig config;
+  ASSERT_TRUE(defaultStart(*l.plan, config.startCol, config.startRow));
+  HouseMapper m(l.plan->world, config);
+  EXPECT_EQ(m.run(), 2);  // kitchen and living room
+  EXPECT_EQ(m.network().gateways().size(), 1u);
+  const HouseScore s = scoreHouse(m);
+  EXPECT_GE(s.agreementPct(), 99.0);
+  const PlanCoverage c = planCoverage(m, *l.plan);
+  EXPECT_EQ(c.covered, c.reachable);
+  EXPECT_EQ(c.reachable, 2);
+}
+
+TEST(HouseMapper, SameSeedSameHouse) {
+  const sim::WorldLoad l = sim::World::load(kRoot + "houses/three-rooms.map");
+  ASSERT_TRUE(l.world);
+  HouseConfig config;
+  config.startCol = 8;
+  config.startRow = 8;
+  config.noise = *sim::noiseProfileByName("typical");
+  config.seed = 7;
+  HouseMapper a(*l.world, config), b(*l.world, config);
+  a.run();
+  b.run();
+  ASSERT_EQ(a.network().rooms().size(), b.network().rooms().size());
+  EXPECT_TRUE(a.network().merged() == b.network().merged());
+  EXPECT_EQ(a.counters().explore.sensorRequests, b.counters().explore.sensorRequests);
+}
+
+}  // namespace
+}  // namespace nxtmap::house
+
+namespace nxtmap::house {
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+const std::string kWorlds = std::string(NXTMAP_SOURCE_DIR) + "/worlds/";
+
+TEST(HouseMapper, AMappedHouseSavesReloadsAndSavesTheSameBytes) {
+  const HousePlanLoad l = loadHouseExpo(kWorlds + "houseexpo/house_expo_room_0000.json");
+  ASSERT_TRUE(l.plan) << l.error;
+  HouseConfig config;
+  ASSERT_TRUE(defaultStart(*l.plan, config.startCol, config.startRow));
+  HouseMapper m(l.plan->world, config);
+  m.run();
+  labelRoomsFromPlan(m, *l.plan);
+  test::TempDir t("mapped_house");
+  std::string e;
+  ASSERT_TRUE(network::saveHouse(m.network(), 0.1, t.path("a"), e)) << e;
+  const network::HouseLoad back = network::loadHouse(t.path("a"));
+  ASSERT_TRUE(back.network) << back.error;
+  EXPECT_TRUE(back.network->merged() == m.network().merged());
+  ASSERT_TRUE(network::saveHouse(*back.network, back.resolutionM, t.path("b"), e)) << e;
+  int files = 0;
+  for (const auto& f : std::filesystem::directory_iterator(t.path("a"))) {
+    ++files;
+    const std::string name = f.path().filename().string();
+    EXPECT_EQ(slurp(t.path("a/" + name)), slurp(t.path("b/" + name))) << name;
+  }
+  EXPECT_EQ(files, 1 + 2 * static_cast<int>(m.network().rooms().size()));
+}
+
+}  // namespace
+}  // namespace nxtmap::house
