@@ -4,7 +4,6 @@
 
 namespace nxtmap {
 namespace {
-constexpr int32_t kQuarterMrad = 1571;
 constexpr int32_t abs32(int32_t v) { return v < 0 ? -v : v; }
 constexpr int32_t clamp32(int32_t v, int32_t lim) { return v < -lim ? -lim : (v > lim ? lim : v); }
 // Integer square root of a non-negative 64-bit value.
@@ -92,7 +91,12 @@ DriveAction Pilot::begin(const Action& a) {
     case Action::Kind::Turn: {
       NXTMAP_CHECK(a.amount % 2 == 0);  // explorers keep to the axis grid
       phase_ = Phase::Turn;
-      commandMrad_ = (a.amount / 2) * kQuarterMrad - (config_.correct ? tracker_.thetaMrad() : 0);
+      // Whole quarter turns, rounded so that their sum never drifts from a multiple of pi/2.
+      turnedUrad_ += static_cast<int64_t>(a.amount / 2) * 1570796;
+      commandMrad_ = static_cast<int32_t>((turnedUrad_ - commandedUrad_ + (turnedUrad_ >= commandedUrad_ ? 500 : -500)) / 1000);
+      commandedUrad_ += static_cast<int64_t>(commandMrad_) * 1000;
+      // Take out the estimated heading error as well (not part of the quarter-turn bookkeeping).
+      if (config_.correct) commandMrad_ -= tracker_.thetaMrad();
       return DriveAction::rotate(commandMrad_);
     }
     case Action::Kind::Move:

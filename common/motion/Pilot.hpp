@@ -62,6 +62,8 @@ class Pilot {
   int32_t driveMm_ = 0;       // drive in progress
   uint8_t readHere_ = 0;      // bit per Dir: read since the robot last moved
   uint32_t poseReads_ = 0, poseSamples_ = 0, correctionMrad_ = 0;
+  int64_t turnedUrad_ = 0;     // quarter turns asked by the explorer, microradians
+  int64_t commandedUrad_ = 0;  // of them, commanded to the wheels (whole mrad)
 };
 
 }  // namespace nxtmap

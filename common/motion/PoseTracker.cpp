@@ -2,22 +2,27 @@
 
 namespace nxtmap {
 namespace {
-constexpr int64_t kQuarterMrad = 1571;  // pi/2 in mrad
+constexpr int64_t kQuarterMrad = 1571;      // pi/2 in mrad, rounded (variance scaling only)
+constexpr int64_t kQuarterUrad = 1570796;   // pi/2 in microradians
 constexpr int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 // Rounded division (ties away from zero); d > 0.
 constexpr int64_t divRound(int64_t n, int64_t d) { return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d); }
-// Believed quarter turns in mrad: 1571 per quarter.
-constexpr int64_t quartersMrad(int q) { return q * kQuarterMrad; }
 }  // namespace
 
 void PoseTracker::reset() {
   x_ = y_ = t_ = 0;
+  residualUrad_ = 0;
   for (auto& row : p_)
     for (auto& v : row) v = 0;
 }
 
 void PoseTracker::rotated(int32_t mrad, int quarters) {
-  t_ += mrad - quartersMrad(quarters);
+  // The heading error changes by what was turned minus what is believed, kept to the microradian
+  // so that thousands of quarter turns do not add up rounding.
+  const int64_t delta = static_cast<int64_t>(mrad) * 1000 - quarters * kQuarterUrad + residualUrad_;
+  const int64_t whole = divRound(delta, 1000);
+  t_ += whole;
+  residualUrad_ = delta - whole * 1000;
   // Turn error grows with the angle turned, with a floor for small corrections.
   int64_t scaled = abs64(mrad) * 1000 / kQuarterMrad;  // per mille of a quarter
   if (scaled < 250) scaled = 250;

@@ -55,6 +55,7 @@ class PoseTracker {
  private:
   PoseNoise noise_;
   int64_t x_ = 0, y_ = 0, t_ = 0;  // mm, mm, mrad
+  int64_t residualUrad_ = 0;       // heading error below the mrad, microradians (|.| <= 500)
   int64_t p_[3][3] = {};           // covariance: mm^2, mm*mrad, mrad^2
   uint32_t accepted_ = 0, rejected_ = 0;
 };

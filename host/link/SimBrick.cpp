@@ -108,7 +108,10 @@ void SimBrick::step(uint32_t nowMs) {
   while (link_.nextCommand(c)) carryOut(c);
   while (nowMs >= nextActionMs_) {
     if (mode_ == BrickMode::Exploring) {
-      if (!run_.step()) mode_ = BrickMode::Done;
+      bool more = run_.step();
+      // The core's thinking slices cost no robot time here (the brick spends about 1 ms on each).
+      while (more && run_.lastAction().kind == DriveAction::Kind::Think) more = run_.step();
+      if (!more) mode_ = BrickMode::Done;
       nextActionMs_ += config_.actionMs;
     } else if (mode_ == BrickMode::Following) {
       followOne();

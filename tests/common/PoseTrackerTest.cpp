@@ -108,5 +108,16 @@ TEST(PoseTracker, RepeatedReadingsConverge) {
   EXPECT_LT(t.varianceAlong(Dir::South), 64 / 4);
 }
 
+TEST(PoseTracker, QuarterTurnsAreCountedToTheMicroradian) {
+  // 1571 mrad is 0.204 mrad more than a quarter turn: a thousand of them leave 204 mrad.
+  PoseTracker t;
+  for (int i = 0; i < 1000; ++i) t.rotated(1571, 1);
+  EXPECT_NEAR(t.thetaMrad(), 204, 1);
+  // Four of 1571 and one of 1570 average 1570.8 mrad: 0.004 mrad too much per turn, 4 mrad after 1000.
+  PoseTracker u;
+  for (int i = 0; i < 1000; ++i) u.rotated(i % 5 == 4 ? 1570 : 1571, 1);
+  EXPECT_NEAR(u.thetaMrad(), 4, 1);
+}
+
 }  // namespace
 }  // namespace nxtmap
