@@ -2,6 +2,8 @@
 // the work it does (bytes compared, cells decoded) per delta.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "common/protocol/MapSync.hpp"
 #include "tests/protocol/ProtocolTestSupport.hpp"
 
@@ -177,6 +179,47 @@ TEST(MapSyncScan, WorkIsBoundedByTheChanges) {
   EXPECT_LE(sync.work().cellsExamined - w1.cellsExamined, 3u + MapSync::kMaxGap + 1u + 3u);
   ASSERT_TRUE(mirror.apply(p.bytes, p.size));
   EXPECT_TRUE(mirror.equals(o.grid));
+}
+
+// Many changes per delta, heavy losses and timeouts (so deltas are full, shrink to the smallest
+// payload and resume at odd places): once the grid is quiet and the link works, equal.
+TEST(MapSyncScan, FullDeltasWithLossesAndResumesAlwaysConverge) {
+  for (uint32_t seed = 1; seed <= 12; ++seed) {
+    std::mt19937 rng(seed);
+    OwnedGrid<> o;
+    MapSync sync(o.grid, o.shadow, 60);
+    MirrorMap mirror;
+    uint16_t seq = 0;
+    uint32_t now = 0;
+    uint32_t resumedOdd = 0;
+    for (int step = 0; step < 300; ++step) {
+      now += 10;
+      const int changes = static_cast<int>(rng() % 120);
+      for (int k = 0; k < changes; ++k) {
+        const int x = static_cast<int>(rng() % 64) - 32, y = static_cast<int>(rng() % 64) - 32;
+        ASSERT_TRUE(o.grid.set(Cell{static_cast<int16_t>(x), static_cast<int16_t>(y)},
+                               static_cast<CellState>(1 + rng() % 2)));
+      }
+      sync.expire(now);
+      Payload p;
+      for (int d = 0; d < 3 && sync.buildDelta(seq = nextSeq(seq), now, p); ++d) {
+        if (sync.resumeIndex() % 64 != 0) ++resumedOdd;
+        if (rng() % 2 == 0) {  // half of the deltas are lost
+          ASSERT_TRUE(mirror.apply(p.bytes, p.size));
+          if (rng() % 2 == 0) sync.acknowledge(seq, 0, now + 3);  // and half of the acks
+        }
+      }
+      if (rng() % 151 == 0) sync.linkLost();
+    }
+    EXPECT_GT(resumedOdd, 0u) << "seed " << seed << ": the scan never resumed inside a row";
+    for (int i = 0; i < 400 && (sync.pending() || sync.inFlight() > 0); ++i) {
+      now += 100;
+      sync.expire(now);
+      drain(sync, mirror, seq, now);
+    }
+    EXPECT_FALSE(sync.pending());
+    EXPECT_TRUE(mirror.equals(o.grid)) << "seed " << seed;
+  }
 }
 
 }  // namespace
