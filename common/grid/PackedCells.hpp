@@ -28,6 +28,9 @@ class PackedCells {
   int16_t width() const { return width_; }
   int16_t height() const { return height_; }
   size_t bytes() const { return packedBytes(width_, height_, BITS); }
+  // The packed bytes (bytes() of them), for byte-wise comparisons of two tori of the same size.
+  const uint8_t* data() const { return data_; }
+  uint8_t* data() { return data_; }
 
   // Index of a cell on the torus, 0 .. width*height-1.
   uint32_t index(Cell c) const {

@@ -1,6 +1,7 @@
 #include "common/protocol/MapSync.hpp"
 
 #include "common/protocol/Packet.hpp"
+#include "common/protocol/PackedDiff.hpp"
 
 namespace nxtmap::protocol {
 namespace {
@@ -33,6 +34,7 @@ void MapSync::restart() {
   epoch_ = static_cast<uint16_t>(epoch_ + 1);
   announce_ = true;
   lastWindow_ = grid_.window();
+  resume_ = 0;
 }
 
 void MapSync::linkLost() {
@@ -48,21 +50,34 @@ void MapSync::followWindow() {
 }
 
 bool MapSync::cellPending(uint32_t index) const {
+  ++work_.cellsExamined;
   return shadow_.atIndex(index) != grid_.cells().atIndex(index);
 }
 
 bool MapSync::pending() const {
-  const size_t bytes = shadow_.bytes();
-  // Byte compare first; the packed layouts are identical (same capacity, same torus indexing).
-  const PackedCells<2>& cells = grid_.cells();
-  const uint32_t total = static_cast<uint32_t>(cells.width()) * static_cast<uint32_t>(cells.height());
-  for (uint32_t i = 0; i < total; i += 4) {
-    if (i / 4 < bytes && (shadow_.atIndex(i) != cells.atIndex(i) || shadow_.atIndex(i + 1) != cells.atIndex(i + 1) ||
-                          shadow_.atIndex(i + 2) != cells.atIndex(i + 2) || shadow_.atIndex(i + 3) != cells.atIndex(i + 3))) {
-      return true;
+  ++work_.scans;
+  const uint32_t total = static_cast<uint32_t>(shadow_.bytes()) * 4u;
+  return nextPending(0, total) < total;
+}
+
+uint32_t MapSync::nextPending(uint32_t from, uint32_t end) const {
+  // Same capacity, same torus indexing: byte k of both holds cells 4k .. 4k+3.
+  const uint8_t* shadow = shadow_.data();
+  const uint8_t* cells = grid_.cells().data();
+  uint32_t i = from;
+  while (i < end) {
+    if ((i & 3u) == 0) {
+      const uint32_t wholeEnd = end >> 2;  // bytes entirely inside [i, end)
+      const uint32_t b = static_cast<uint32_t>(firstDifference(shadow, cells, i >> 2, wholeEnd));
+      work_.bytesCompared += b - (i >> 2) + (b < wholeEnd ? 1u : 0u);
+      i = b << 2;
+      if (b < wholeEnd) return i + lowestCell(differingCells(shadow[b], cells[b]));
+      if (i >= end) break;
     }
+    if (cellPending(i)) return i;  // a partial byte at either end of the range
+    ++i;
   }
-  return false;
+  return end;
 }
 
 MapSync::Slot* MapSync::freeSlot() {
@@ -86,43 +101,58 @@ bool MapSync::buildDelta(uint16_t seq, uint32_t nowMs, Payload& out) {
   MapDeltaWriter writer(out, header, payloadLimit_);
   slot->runCount = 0;
 
-  const uint32_t w = static_cast<uint32_t>(cells.width());
-  const uint32_t total = w * static_cast<uint32_t>(cells.height());
-  uint32_t i = 0;
-  while (i < total && slot->runCount < kRunsPerSlot) {
-    if (!cellPending(i)) {
-      ++i;
-      continue;
-    }
-    // A run from i along the row: up to kMaxRunCells cells, bridging gaps of up to kMaxGap.
-    const uint32_t rowEnd = (i / w + 1) * w;
-    uint32_t last = i;
-    for (uint32_t j = i + 1; j < rowEnd && j - i < kMaxRunCells && j - last <= kMaxGap; ++j) {
-      if (cellPending(j)) last = j;
-    }
-    uint32_t count = last - i + 1;
-    while (count > 0 && !writer.fits(count)) {
-      // Shrink to the last pending cell that fits.
-      --count;
-      while (count > 0 && !cellPending(i + count - 1)) --count;
-    }
-    if (count == 0) break;  // payload full
-    const uint32_t base = i;
-    const bool added = writer.addRun(static_cast<uint16_t>(base), static_cast<uint8_t>(count),
-                                     [&](uint8_t k) { return cells.atIndex(base + k); });
-    if (!added) break;
-    for (uint32_t k = 0; k < count; ++k) shadow_.setIndex(base + k, cells.atIndex(base + k));
-    slot->runIndex[slot->runCount] = static_cast<uint16_t>(base);
-    slot->runCells[slot->runCount] = static_cast<uint8_t>(count);
-    ++slot->runCount;
-    i = base + count;
+  // From where the last full delta stopped to the end, then round from 0.
+  ++work_.scans;
+  const uint32_t total = static_cast<uint32_t>(cells.width()) * static_cast<uint32_t>(cells.height());
+  const uint32_t start = resume_ < total ? resume_ : 0;
+  uint32_t i = start;
+  bool room = addRuns(i, total, writer, *slot);
+  if (room && start > 0) {
+    i = 0;
+    room = addRuns(i, start, writer, *slot);
   }
+  resume_ = static_cast<uint16_t>((room ? start : i) & ~3u);  // whole bytes: the scans stay byte-wise
   if (slot->runCount == 0 && !announce_) return false;
   announce_ = false;
   slot->used = true;
   slot->seq = seq;
   slot->sentMs = nowMs;
   return true;
+}
+
+bool MapSync::addRuns(uint32_t& i, uint32_t end, MapDeltaWriter& writer, Slot& slot) {
+  const uint8_t* cells = grid_.cells().data();
+  uint8_t* shadow = shadow_.data();
+  const uint32_t w = static_cast<uint32_t>(grid_.cells().width());
+  while (true) {
+    i = nextPending(i, end);
+    if (i >= end) return true;
+    if (slot.runCount == kRunsPerSlot) return false;
+    // A run from i along the row (and inside [i, end)): up to kMaxRunCells cells, bridging
+    // gaps of up to kMaxGap, and no more than the payload can take.
+    const uint32_t rowEnd = (i & ~(w - 1u)) + w;  // w is a power of two (no division on the ARM7)
+    uint32_t limit = rowEnd < end ? rowEnd : end;
+    if (limit - i > kMaxRunCells) limit = i + kMaxRunCells;
+    const size_t room = writer.cellsThatFit();
+    if (limit - i > room) limit = i + static_cast<uint32_t>(room);
+    if (limit == i) return false;  // payload full
+    uint32_t last = i;
+    uint32_t j = i + 1;
+    for (; j < limit && j - last <= kMaxGap; ++j) {
+      if (cellDiffers(shadow, cells, j)) last = j;
+    }
+    work_.cellsExamined += j - i;
+    const uint32_t base = i;
+    const uint32_t count = last - i + 1;
+    uint8_t packed[(kMaxRunCells + 3) / 4];
+    extractCells(cells, base, count, packed);
+    if (!writer.addPackedRun(static_cast<uint16_t>(base), static_cast<uint8_t>(count), packed)) return false;
+    copyCells(cells, shadow, base, count);
+    slot.runIndex[slot.runCount] = static_cast<uint16_t>(base);
+    slot.runCells[slot.runCount] = static_cast<uint8_t>(count);
+    ++slot.runCount;
+    i = base + count;
+  }
 }
 
 void MapSync::acknowledge(uint16_t ack, uint16_t ackMask, uint32_t nowMs) {
@@ -134,7 +164,7 @@ void MapSync::acknowledge(uint16_t ack, uint16_t ackMask, uint32_t nowMs) {
       measured_ = true;
       const uint32_t rto = 2 * srttMs_ + kRtoMarginMs;
       rtoMs_ = rto < kMinRtoMs ? kMinRtoMs : (rto > retransmitMs_ ? retransmitMs_ : rto);
-      payloadLimit_ = payloadLimit_ + kGrowBytes > kMaxPayload ? kMaxPayload : payloadLimit_ + kGrowBytes;
+      payloadLimit_ = static_cast<uint16_t>(payloadLimit_ + kGrowBytes > kMaxPayload ? kMaxPayload : payloadLimit_ + kGrowBytes);
     }
   }
 }
@@ -144,7 +174,7 @@ int MapSync::expire(uint32_t nowMs) {
   for (Slot& s : slots_) {
     if (s.used && nowMs - s.sentMs >= rtoMs_) {
       forget(s);
-      payloadLimit_ = payloadLimit_ / 2 < kMinDeltaPayload ? kMinDeltaPayload : payloadLimit_ / 2;
+      payloadLimit_ = static_cast<uint16_t>(payloadLimit_ / 2 < kMinDeltaPayload ? kMinDeltaPayload : payloadLimit_ / 2);
       ++n;
     }
   }
@@ -153,7 +183,7 @@ int MapSync::expire(uint32_t nowMs) {
 
 void MapSync::forget(Slot& s) {
   for (uint8_t r = 0; r < s.runCount; ++r) {
-    for (uint8_t k = 0; k < s.runCells[r]; ++k) shadow_.setIndex(static_cast<uint32_t>(s.runIndex[r]) + k, kMustSend);
+    setCells(shadow_.data(), s.runIndex[r], s.runCells[r], kMustSend);
   }
   if (s.runCount == 0) announce_ = true;  // an epoch announcement was lost: send it again
   s.used = false;

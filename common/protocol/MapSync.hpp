@@ -27,10 +27,24 @@ namespace nxtmap::protocol {
 // small frames get through where large ones would almost never (5 % bad bytes: a 128-byte frame
 // arrives intact 0.1 % of the time, a 32-byte one 19 %).
 //
+// Cost (the brick runs this inside its 1 ms step): the grid is compared with the shadow 4 bytes
+// at a time (PackedDiff) and only differing bytes are decoded, so a scan that finds nothing
+// reads the two 1 KiB tori once; a delta decodes only the cells it sends plus the gaps its runs
+// bridge. A full delta remembers where it stopped and the next scan resumes there (wrapping
+// round), so changes late in the grid are not starved by changes early in it.
+//
 // Memory: the shadow is caller-owned (packedBytes(w, h, 2), 1 KiB for 64 x 64) plus
 // kSlots records of kRunsPerSlot runs (about 0.5 KiB).
 class MapSync {
  public:
+  // Work done by the scans since construction (for benchmarks): scans (buildDelta and pending
+  // calls), bytes compared, cells decoded one by one.
+  struct Work {
+    uint32_t scans = 0;
+    uint32_t bytesCompared = 0;
+    uint32_t cellsExamined = 0;
+  };
+
   static constexpr int kSlots = 6;
   static constexpr int kRunsPerSlot = 25;  // a payload holds at most (112 - 12) / 4 = 25 runs
   static constexpr uint8_t kMaxGap = 8;    // unchanged cells a run may bridge (cheaper than a new run)
@@ -58,8 +72,14 @@ class MapSync {
   // Returns how many records timed out.
   int expire(uint32_t nowMs);
 
-  // Whether any cell is pending (scans the grid: about 1 KiB of byte compares).
+  // Whether any cell is pending (compares the grid with the shadow, 4 bytes at a time).
   bool pending() const;
+  // The first pending cell (torus index) in [from, end), or `end` when there is none.
+  uint32_t nextPending(uint32_t from, uint32_t end) const;
+  // Where the next delta's scan starts (torus index, a multiple of 4): after a full delta, the
+  // first cell of the byte holding the first pending cell it left out; 0 after restart().
+  uint32_t resumeIndex() const { return resume_; }
+  const Work& work() const { return work_; }
   int inFlight() const;
   uint16_t epoch() const { return epoch_; }
   uint32_t retransmitMs() const { return retransmitMs_; }
@@ -79,6 +99,9 @@ class MapSync {
   };
 
   bool cellPending(uint32_t index) const;
+  // Adds runs of the pending cells in [i, end) to the delta. Returns false when the delta is
+  // full; `i` is then the first pending cell left out.
+  bool addRuns(uint32_t& i, uint32_t end, MapDeltaWriter& writer, Slot& slot);
   void forget(Slot& s);  // cells of the record become pending; the record is dropped
   Slot* freeSlot();
   // Detects a grid restructured or cleared behind our back: the window no longer contains the old one.
@@ -87,13 +110,15 @@ class MapSync {
   const RoomGrid& grid_;
   PackedCells<2> shadow_;
   uint32_t retransmitMs_;
-  uint16_t epoch_ = 0;
-  bool announce_ = true;  // the epoch's first delta is still to be sent
-  size_t payloadLimit_ = kMaxPayload;
   uint32_t srttMs_ = 0;  // smoothed round trip, valid once measured_
-  bool measured_ = false;
   uint32_t rtoMs_;
   Bounds lastWindow_{};
+  mutable Work work_;
+  uint16_t epoch_ = 0;
+  uint16_t payloadLimit_ = kMaxPayload;  // kMinDeltaPayload .. kMaxPayload bytes
+  uint16_t resume_ = 0;                  // torus index where the next scan starts
+  bool announce_ = true;  // the epoch's first delta is still to be sent
+  bool measured_ = false;
   Slot slots_[kSlots] = {};
 };
 

@@ -189,6 +189,25 @@ class MapDeltaWriter {
     out_.bytes[kDeltaHeaderSize - 1] = runs_;
     return true;
   }
+  // Adds a run whose states are already packed as the run carries them (see extractCells).
+  bool addPackedRun(uint16_t index, uint8_t count, const uint8_t* packed) {
+    if (count == 0 || count > kMaxRunCells || !fits(count)) return false;
+    uint8_t* b = out_.bytes + out_.size;
+    b[0] = static_cast<uint8_t>(index);
+    b[1] = static_cast<uint8_t>(index >> 8);
+    b[2] = count;
+    const size_t n = (count + 3u) / 4u;
+    for (size_t i = 0; i < n; ++i) b[3 + i] = packed[i];
+    out_.size += kRunHeaderSize + n;
+    ++runs_;
+    out_.bytes[kDeltaHeaderSize - 1] = runs_;
+    return true;
+  }
+  // The most cells one more run can carry (0 when none fits); fits(n) holds for n <= this.
+  size_t cellsThatFit() const {
+    if (runs_ == 255 || out_.size + kRunHeaderSize >= limit_) return 0;
+    return (limit_ - out_.size - kRunHeaderSize) * 4u;
+  }
   uint8_t runs() const { return runs_; }
 
  private:

@@ -212,6 +212,10 @@ int main(int argc, char** argv) {
   try {
     if (argc > 1 && std::string(argv[1]) == "plan") return nxtmap::bench::runPlanBench();  // that section alone
     if (argc > 1 && std::string(argv[1]) == "house") return nxtmap::bench::runHouseBench();  // that section alone
+    if (argc > 1 && std::string(argv[1]) == "link") {  // that section alone
+      nxtmap::bench::printLinkBench(scenarioDir(1, argv) + "/occupancy-120.map", 1, 20);
+      return 0;
+    }
     return run(argc, argv);
   } catch (const nxtmap::cli::CliError& e) {
     nxtmap::cli::printError(std::string("bench: ") + e.what());
