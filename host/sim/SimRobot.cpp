@@ -103,6 +103,15 @@ MoveResult SimRobot::move(int cells) {
     return MoveResult{steps * dir, false};
 }
 
+bool SimRobot::setPose(double xCm, double yCm, double headingDeg) {
+    if (world_->blocked(static_cast<int>(std::floor(xCm / cellCm_)), static_cast<int>(std::floor(yCm / cellCm_))))
+        return false;
+    x_ = xCm;
+    y_ = yCm;
+    setHeading(headingDeg);
+    return true;
+}
+
 void SimRobot::turn(int eighths) { setHeading(heading_ + 45.0 * eighths + gaussian(noise_.turnSigmaDeg)); }
 
 }  // namespace nxtmap::sim

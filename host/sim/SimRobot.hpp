@@ -34,6 +34,9 @@ public:
     MoveResult move(int cells);
     // Turns by eighths of a full turn, + = clockwise (2 = 90 degrees right).
     void turn(int eighths);
+    // Continuous motion (the emulated brick's wheels): puts the centre at (xCm, yCm) facing headingDeg,
+    // unless that point lies in a blocked cell; then returns false and the pose is unchanged.
+    bool setPose(double xCm, double yCm, double headingDeg);
 
     double xCm() const { return x_; }
     double yCm() const { return y_; }

@@ -1,0 +1,85 @@
+#include "host/emu/Aic.hpp"
+
+namespace nxtmap::emu {
+
+void Aic::connect(int id, std::function<bool()> line) { lines_[static_cast<size_t>(id)].push_back(std::move(line)); }
+
+void Aic::sample() {
+    uint32_t level = 0;
+    for (int id = 0; id < 32; ++id)
+        for (const auto& l : lines_[static_cast<size_t>(id)])
+            if (l()) { level |= 1u << id; break; }
+    for (int id = 0; id < 32; ++id)
+        if (edge(id) && (level & ~lastLevel_ & (1u << id))) edgeLatch_ |= 1u << id;
+    lastLevel_ = level;
+}
+
+uint32_t Aic::pending() {
+    sample();
+    uint32_t p = soft_ | edgeLatch_;
+    for (int id = 0; id < 32; ++id)
+        if (!edge(id) && (lastLevel_ & (1u << id))) p |= 1u << id;
+    return p;
+}
+
+int Aic::bestPending() {
+    const uint32_t p = pending() & imr_ & ~1u;  // source 0 is FIQ, not routed to nIRQ
+    const int current = inService_.empty() ? -1 : inService_.back().prio;
+    int best = -1;
+    int bestPrio = current;
+    for (int id = 1; id < 32; ++id) {
+        if (!(p & (1u << id))) continue;
+        const int prio = static_cast<int>(smr_[id] & 7);
+        if (prio > bestPrio) { best = id; bestPrio = prio; }
+    }
+    return best;
+}
+
+bool Aic::irqAsserted() { return bestPending() >= 0; }
+bool Aic::wakeAsserted() { return (pending() & imr_) != 0; }
+
+bool Aic::read(uint32_t off, uint32_t& v) {
+    if (off < 0x80) { v = smr_[off / 4]; return true; }
+    if (off < 0x100) { v = svr_[(off - 0x80) / 4]; return true; }
+    switch (off) {
+        case 0x100: {  // IVR: acknowledge the best source, push it in service
+            const int id = bestPending();
+            if (id < 0) { v = spu_; return true; }
+            inService_.push_back(Level{id, static_cast<int>(smr_[id] & 7)});
+            isr_ = static_cast<uint32_t>(id);
+            if (edge(id)) { edgeLatch_ &= ~(1u << id); soft_ &= ~(1u << id); }
+            ++irqsTaken_;
+            v = svr_[static_cast<size_t>(id)];
+            return true;
+        }
+        case 0x104: v = spu_; return true;  // FVR: FIQ not used
+        case 0x108: v = isr_; return true;
+        case 0x10C: v = pending(); return true;
+        case 0x110: v = imr_; return true;
+        case 0x114: v = irqAsserted() ? 1u : 0u; return true;  // CISR: NIRQ bit 1 in real chip; bit 0 NFIQ
+        case 0x134: v = spu_; return true;
+        case 0x138: v = dcr_; return true;
+        case 0x148: v = 0; return true;  // FFSR
+        default: return false;
+    }
+}
+
+bool Aic::write(uint32_t off, uint32_t v) {
+    if (off < 0x80) { smr_[off / 4] = v & 0x67; return true; }
+    if (off < 0x100) { svr_[(off - 0x80) / 4] = v; return true; }
+    switch (off) {
+        case 0x100: return true;  // IVR write (protect mode acknowledge): accepted, no effect here
+        case 0x104: return true;
+        case 0x120: imr_ |= v; return true;
+        case 0x124: imr_ &= ~v; return true;
+        case 0x128: soft_ &= ~v; edgeLatch_ &= ~v; return true;
+        case 0x12C: soft_ |= v; return true;
+        case 0x130: if (!inService_.empty()) inService_.pop_back(); return true;
+        case 0x134: spu_ = v; return true;
+        case 0x138: dcr_ = v & 3; return true;
+        case 0x140: case 0x144: return true;  // FFER/FFDR: fast forcing unused
+        default: return false;
+    }
+}
+
+}  // namespace nxtmap::emu
