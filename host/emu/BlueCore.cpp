@@ -100,19 +100,19 @@ uint64_t BlueCore::nextEventAt() const {
 void BlueCore::pollLink() {
     if (!link_) return;
     const bool pc = link_->connected();
-    if (pc && !pcWasConnected_ && portOpen_ && !requested_) {
+    if (pc && portOpen_ && !announced_) {  // once per PC connection, as soon as the port is open
+        announced_ = true;
         requested_ = true;
         std::vector<uint8_t> p = kBdAddr;
         reply(0x16, p);  // REQUEST_CONNECTION
     }
     if (!pc && pcWasConnected_) {
-        connected_ = requested_ = streamOpen_ = false;
+        connected_ = requested_ = streamOpen_ = announced_ = false;
         reply(0x1A, {1, 1});  // the PC hung up
     }
     pcWasConnected_ = pc;
     const size_t before = pcIn_.size();
-    link_->receive(pcIn_);
-    if (!connected_) pcIn_.clear();  // bytes before the connection is accepted are lost
+    if (connected_) link_->receive(pcIn_);  // until the brick accepts, the PC's bytes wait on its side
     if (pcIn_.size() != before) clock_.poke();
 }
 

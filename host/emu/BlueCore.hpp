@@ -56,6 +56,7 @@ private:
     std::deque<uint8_t> pcIn_;     // stream bytes waiting for the ARM
     bool portOpen_ = false, requested_ = false, connected_ = false, streamOpen_ = false;
     bool pcWasConnected_ = false;
+    bool announced_ = false;       // REQUEST_CONNECTION sent for the current PC connection
     uint64_t nextPoll_ = 0;
     uint64_t commands_ = 0, bad_ = 0;
     std::vector<uint8_t> unknown_;

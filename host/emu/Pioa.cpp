@@ -48,7 +48,11 @@ bool Pioa::read(uint32_t off, uint32_t& v) {
         case 0x38: v = odsr_; return true;
         case 0x3C: v = levels_; return true;
         case 0x48: v = imr_; return true;
-        case 0x4C: v = isr_; isr_ = 0; clock_.poke(); return true;
+        case 0x4C:
+            v = isr_;
+            if (irqLine()) clock_.poke();
+            isr_ = 0;
+            return true;
         case 0x58: v = mdsr_; return true;
         case 0x68: v = puSr_; return true;
         case 0x78: v = absr_; return true;

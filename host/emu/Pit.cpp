@@ -25,8 +25,8 @@ bool Pit::read(uint32_t off, uint32_t& v) {
         case 0x4: v = periodsUnread() > 0 ? 1u : 0u; return true;
         case 0x8:  // PIVR: read acknowledges
             v = valueRegister();
+            if (irqLine()) clock_.poke();  // the interrupt line drops: re-plan
             periodsRead_ = periods();
-            clock_.poke();
             return true;
         case 0xC: v = valueRegister(); return true;
         default: return false;

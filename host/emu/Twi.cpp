@@ -68,7 +68,11 @@ bool Twi::read(uint32_t off, uint32_t& v) {
             sr_ &= ~(kOvre | kNack);  // cleared on read
             return true;
         case 0x2C: v = imr_; return true;
-        case 0x30: v = rhr_; sr_ &= ~kRxrdy; clock_.poke(); return true;
+        case 0x30:
+            v = rhr_;
+            if (irqLine()) clock_.poke();
+            sr_ &= ~kRxrdy;
+            return true;
         default: return false;
     }
 }

@@ -101,7 +101,11 @@ bool Usart::read(uint32_t off, uint32_t& v) {
         case 0x04: v = mr_; return true;
         case 0x10: v = imr_; return true;
         case 0x14: v = status(); return true;
-        case 0x18: v = rhr_; rxrdy_ = false; clock_.poke(); return true;
+        case 0x18:
+            v = rhr_;
+            if (rxrdy_ && (irqLine() || (mr_ & 0xF) == 2)) clock_.poke();  // line drops / handshake frees
+            rxrdy_ = false;
+            return true;
         case 0x20: v = brgr_; return true;
         case 0x24: v = rtor_; return true;
         case 0x28: v = ttgr_; return true;
