@@ -1,6 +1,7 @@
 # nxtmap: the front door. Every target installs what it needs first (see scripts/deps.sh).
 #   make demo   - one mapping run in the simulator with the live display
-#   make test   - every test (host build with sanitizers + ARM7TDMI cross-build of common/)
+#   make test   - every test (host build with sanitizers + ARM7TDMI cross-build of common/ + make size)
+#   make firmware / make size - the brick image and its enforced budgets
 #   make bench  - speed and quality targets, measured against their targets
 SHELL := /bin/bash
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
@@ -8,9 +9,10 @@ BUILD ?= build
 HOST_DIR  := $(BUILD)/host
 SAN_DIR   := $(BUILD)/host-san
 ARM_DIR   := $(BUILD)/arm-common
+FW_DIR    := $(BUILD)/firmware
 CMAKE_GEN := -G Ninja
 
-.PHONY: all deps host host-san arm-common test demo bench clean help
+.PHONY: all deps host host-san arm-common firmware size test demo bench clean help
 
 all: host
 
@@ -18,6 +20,8 @@ help:
 	@echo "make demo   - run one mapping in the simulator, live"
 	@echo "make test   - build with sanitizers, run all tests, cross-build common/ for the ARM7TDMI"
 	@echo "make bench  - benchmarks, measured against their targets"
+	@echo "make firmware - the brick image: build/firmware/nxtmap.{elf,bin} (flash) and nxtmap-ram.{elf,bin} (fwexec)"
+	@echo "make size   - the brick image's flash/RAM budgets, enforced"
 	@echo "make deps   - install missing Debian packages (quick when all is present)"
 
 deps:
@@ -33,6 +37,15 @@ $(ARM_DIR)/build.ninja: | deps
 	cmake -S toolchain/arm-check -B $(ARM_DIR) $(CMAKE_GEN) \
 	  -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/toolchain/arm-none-eabi.cmake
 
+$(FW_DIR)/build.ninja: | deps
+	cmake -S firmware -B $(FW_DIR) $(CMAKE_GEN) -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/toolchain/arm-none-eabi.cmake
+
+firmware: deps $(FW_DIR)/build.ninja
+	cmake --build $(FW_DIR) -j $(JOBS)
+
+size: firmware
+	@bash toolchain/fw-size.sh $(FW_DIR)
+
 host: deps $(HOST_DIR)/build.ninja
 	cmake --build $(HOST_DIR) -j $(JOBS)
 
@@ -43,7 +56,7 @@ arm-common: deps $(ARM_DIR)/build.ninja
 	cmake --build $(ARM_DIR) -j $(JOBS)
 	@echo "common/ cross-compiled for the ARM7TDMI (-mcpu=arm7tdmi -mthumb, freestanding): OK"
 
-test: host-san arm-common
+test: host-san arm-common size
 	cd $(SAN_DIR) && ctest --output-on-failure -j $(JOBS)
 
 demo: host

@@ -1,0 +1,168 @@
+#include <gtest/gtest.h>
+
+#include <deque>
+#include <vector>
+
+#include "firmware/drivers/BlueCore.hpp"
+#include "tests/firmware/FakeBus.hpp"
+
+namespace nxtmap::fw::test {
+namespace {
+using namespace reg;
+
+// USART1 + PDC + the BC4 module at register level. The module answers OPEN_PORT, ACCEPT_CONNECTION
+// and OPEN_STREAM (raising its CMD line, read through ADC channel 6), checks the ARM's checksum rule,
+// and in stream mode exchanges raw bytes.
+struct Bc4 {
+  FakeBus bus;
+  std::deque<uint8_t> toArm;
+  std::vector<uint8_t> fromArm;          // raw bytes received (stream mode)
+  std::vector<std::vector<uint8_t>> commands;  // command frames received (command mode)
+  bool cmdLine = false, resetHeld = true, badChecksum = false, indicateReset = true;
+  std::vector<uint8_t> pinAnswer;
+
+  Bc4() {
+    bus.onRead = [this](uint32_t a, uint32_t& v) {
+      if (a == kUs1Csr) { v = toArm.empty() ? 0u : kUsCsrRxrdy; return true; }
+      if (a == kUs1Rhr) { v = toArm.front(); toArm.pop_front(); return true; }
+      if (a == kAdcCdr6) { v = cmdLine ? 0x3A0u : 0x010u; return true; }
+      return false;
+    };
+    bus.onWrite = [this](uint32_t a, uint32_t v) {
+      if (a == kPioCodr && (v & kPinBtReset)) resetHeld = true;
+      if (a == kPioSodr && (v & kPinBtReset) && resetHeld) {
+        resetHeld = false;
+        if (indicateReset) reply(0x14, {});  // RESET_INDICATION
+      }
+      if (a == kUs1Ptcr && (v & (1u << 8))) {  // TXTEN: the PDC sends TCR bytes from TPR at once
+        const uint8_t* p = bus.pointer(bus.regs[kUs1Tpr]);
+        for (uint32_t i = 0; i < bus.regs[kUs1Tcr]; ++i) received(p[i]);
+        bus.regs[kUs1Tcr] = 0;
+      }
+    };
+  }
+  void reply(uint8_t code, std::vector<uint8_t> payload) {
+    std::vector<uint8_t> f{static_cast<uint8_t>(payload.size() + 3), code};
+    f.insert(f.end(), payload.begin(), payload.end());
+    uint16_t sum = 0;
+    for (uint8_t b : f) sum = static_cast<uint16_t>(sum + b);  // includes the length byte
+    sum = static_cast<uint16_t>(0u - sum);
+    f.push_back(static_cast<uint8_t>(sum >> 8));
+    f.push_back(static_cast<uint8_t>(sum));
+    toArm.insert(toArm.end(), f.begin(), f.end());
+  }
+  std::vector<uint8_t> partial;
+  void received(uint8_t b) {
+    if (cmdLine) { fromArm.push_back(b); return; }
+    partial.push_back(b);
+    if (partial.size() < 2 || partial.size() < static_cast<size_t>(partial[0]) + 1) return;
+    std::vector<uint8_t> f;
+    f.swap(partial);
+    uint16_t sum = 0;
+    for (size_t i = 1; i + 2 < f.size(); ++i) sum = static_cast<uint16_t>(sum + f[i]);  // length excluded
+    const uint16_t got = static_cast<uint16_t>((f[f.size() - 2] << 8) | f.back());
+    if (static_cast<uint16_t>(sum + got) != 0) { badChecksum = true; return; }
+    commands.push_back(f);
+    const uint8_t code = f[1];
+    if (code == 0x03) reply(0x1B, {0x01, 0x00});               // PORT_OPEN_RESULT: open
+    if (code == 0x09 && f[2] == 1) reply(0x13, {0x01, 0x05});  // CONNECT_RESULT: ok, handle 5
+    if (code == 0x0B && f[2] == 5) cmdLine = true;             // OPEN_STREAM(5)
+    if (code == 0x0A) pinAnswer.assign(f.begin() + 2, f.end() - 2);
+  }
+  void requestConnection() { reply(0x16, {1, 2, 3, 4, 5, 6, 0}); }
+  bool sawCommand(uint8_t code) const {
+    for (const auto& c : commands) if (c[1] == code) return true;
+    return false;
+  }
+};
+
+template <class Bt>
+void runMs(Bc4& m, Bt& bt, uint32_t& now, uint32_t ms) {
+  for (uint32_t i = 0; i < ms; ++i, ++now) {
+    while (!m.toArm.empty()) bt.onInterrupt();
+    bt.poll(now);
+  }
+}
+
+TEST(BlueCore, UartSetupUsesHardwareHandshakeAndLeavesPa23Alone) {
+  Bc4 m;
+  BlueCore<FakeBus> bt(m.bus);
+  bt.init(kMck, 0);
+  EXPECT_EQ(m.bus.regs[kUs1Mr], 0x000808C2u);  // USMODE 2, CHRL 8 bit, PAR none (4), OVER
+  EXPECT_EQ(m.bus.regs[kUs1Brgr], 13u);
+  for (uint32_t v : m.bus.writesTo(kPioPdr)) EXPECT_EQ(v & pin(23), 0u);
+  EXPECT_EQ(m.bus.regs[kPioPdr], kPinBtRxd | kPinBtTxd | kPinBtRts | kPinBtCts);
+}
+
+TEST(BlueCore, FromResetToStreamModeOnAnIncomingConnection) {
+  Bc4 m;
+  BlueCore<FakeBus> bt(m.bus);
+  uint32_t now = 0;
+  bt.init(kMck, now);
+  runMs(m, bt, now, 50);
+  EXPECT_TRUE(m.resetHeld);  // reset held low for 100 ms
+  runMs(m, bt, now, 100);
+  EXPECT_FALSE(m.resetHeld);
+  runMs(m, bt, now, 10);
+  EXPECT_TRUE(m.sawCommand(0x03));  // OPEN_PORT after RESET_INDICATION
+  EXPECT_EQ(bt.state(), BlueCore<FakeBus>::State::Listening);
+  m.requestConnection();
+  runMs(m, bt, now, 10);
+  EXPECT_TRUE(m.sawCommand(0x09));  // ACCEPT_CONNECTION
+  EXPECT_TRUE(m.sawCommand(0x0B));  // OPEN_STREAM(handle)
+  EXPECT_TRUE(bt.streaming());
+  EXPECT_FALSE(m.badChecksum);
+  // ARM7_CMD (PA27) went high to enter data mode.
+  EXPECT_NE(m.bus.writesTo(kPioSodr).back() & kPinBtArm7Cmd, 0u);
+
+  // Stream mode: raw bytes both ways.
+  const uint8_t hello[] = {0x02, 0x00, 0xAB, 0xCD};
+  ASSERT_TRUE(bt.write(hello, 4));
+  EXPECT_EQ(m.fromArm, (std::vector<uint8_t>{0x02, 0x00, 0xAB, 0xCD}));
+  m.toArm.insert(m.toArm.end(), {0x01, 0x00, 0x7E});
+  while (!m.toArm.empty()) bt.onInterrupt();
+  std::vector<uint8_t> got;
+  uint8_t b;
+  while (bt.readByte(b)) got.push_back(b);
+  EXPECT_EQ(got, (std::vector<uint8_t>{0x01, 0x00, 0x7E}));
+
+  // The PC goes away: CMD line low -> command mode, port opened again.
+  m.cmdLine = false;
+  m.commands.clear();
+  runMs(m, bt, now, 5);
+  EXPECT_FALSE(bt.streaming());
+  EXPECT_EQ(bt.linkEpoch(), 1u);
+  EXPECT_NE(m.bus.writesTo(kPioCodr).back() & kPinBtArm7Cmd, 0u);
+  EXPECT_TRUE(m.sawCommand(0x03));
+  EXPECT_FALSE(bt.write(hello, 4));
+}
+
+TEST(BlueCore, AnswersAPinRequestWith1234) {
+  Bc4 m;
+  BlueCore<FakeBus> bt(m.bus);
+  uint32_t now = 0;
+  bt.init(kMck, now);
+  runMs(m, bt, now, 120);
+  m.reply(0x15, {9, 8, 7, 6, 5, 4, 0});  // REQUEST_PIN_CODE
+  runMs(m, bt, now, 2);
+  ASSERT_EQ(m.pinAnswer.size(), 23u);
+  EXPECT_EQ(m.pinAnswer[0], 9);
+  EXPECT_EQ(m.pinAnswer[7], '1');
+  EXPECT_EQ(m.pinAnswer[10], '4');
+  EXPECT_EQ(m.pinAnswer[11], 0);
+}
+
+TEST(BlueCore, WithoutResetIndicationItOpensThePortAfterFiveSeconds) {
+  Bc4 m;
+  BlueCore<FakeBus> bt(m.bus);
+  uint32_t now = 0;
+  m.indicateReset = false;  // the indication gets lost
+  bt.init(kMck, now);
+  runMs(m, bt, now, 4000);
+  EXPECT_FALSE(m.sawCommand(0x03));
+  runMs(m, bt, now, 1200);  // 5 s after the reset was released at 100 ms
+  EXPECT_TRUE(m.sawCommand(0x03));
+}
+
+}  // namespace
+}  // namespace nxtmap::fw::test
