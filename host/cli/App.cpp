@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "host/cli/Args.hpp"
+#include "host/cli/EmulateCommand.hpp"
 #include "host/cli/Errors.hpp"
 #include "host/cli/ExperimentsCommand.hpp"
 #include "host/cli/SimCommand.hpp"
@@ -19,14 +20,17 @@ int runCli(int argc, char** argv) {
   ExperimentsOptions experimentsOptions;
   CLI::App* sim = addSimCommand(app, simOptions);
   CLI::App* experiments = addExperimentsCommand(app, experimentsOptions);
+  EmulateOptions emulateOptions;
+  CLI::App* emulate = addEmulateCommand(app, emulateOptions);
   app.footer("Examples:\n  nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live\n"
+             "  nxtmap emulate worlds/seed-appendix-a/occupancy-120.map --start 1,20 --listen tcp:127.0.0.1:5555\n"
              "  nxtmap experiments worlds/seed-appendix-a --strategy both --csv results.csv --plots plots");
 
   try {
     if (argc > 1 && argv[1][0] != '-') {
       const std::string command = argv[1];
-      if (command != sim->get_name() && command != experiments->get_name()) {
-        throw CliError("unknown command '" + command + "' (commands: sim, experiments; see nxtmap --help)");
+      if (command != sim->get_name() && command != experiments->get_name() && command != emulate->get_name()) {
+        throw CliError("unknown command '" + command + "' (commands: sim, experiments, emulate; see nxtmap --help)");
       }
     }
     try {
@@ -36,10 +40,12 @@ int runCli(int argc, char** argv) {
       std::string where;
       if (sim->parsed()) where = "sim: ";
       if (experiments->parsed()) where = "experiments: ";
+      if (emulate->parsed()) where = "emulate: ";
       throw CliError(where + e.what());
     }
     if (sim->parsed()) return runSim(simOptions);
     if (experiments->parsed()) return runExperiments(experimentsOptions);
+    if (emulate->parsed()) return runEmulate(emulateOptions);
     std::cout << app.help();
     throw CliError("no command given: use 'sim' or 'experiments' (see nxtmap --help)");
   } catch (const CliError& e) {

@@ -9,7 +9,7 @@ constexpr uint64_t kCrosstalkWindow = kMckHz / 1000 * 30;  // pings within 30 ms
 }
 
 Brick::Brick(const ElfImage& image, const sim::World& world, const BrickConfig& c)
-    : robot_(world, c.startCol, c.startRow, c.heading, c.noise, c.seed),
+    : robot_(world, c.startCol, c.startRow, c.heading, c.noise, c.seed, 255.0, c.mountOffsetCm),
       machine_(image, c.machine),
       pioa_(machine_.clock()),
       twi_(machine_.clock(), avr_),
@@ -17,20 +17,26 @@ Brick::Brick(const ElfImage& image, const sim::World& world, const BrickConfig& 
       bc4_(machine_.clock(), pioa_, c.link),
       usart_(machine_.clock(), machine_, bc4_),
       spi_(machine_.clock(), machine_, pioa_, lcd_),
-      adc_([this] { return bc4_.cmdSignal(); }) {
+      adc_([this] { return bc4_.cmdSignal(); }),
+      tc_(machine_.clock()),
+      buttons_(avr_, c.pressEnterAtS < 0 ? kNever : static_cast<uint64_t>(c.pressEnterAtS * kMckHz),
+               cyclesFromMs(300)) {
     machine_.attach(Pioa::kBase, Pioa::kSize, pioa_);
     machine_.attach(Twi::kBase, Twi::kSize, twi_);
     machine_.attach(Usart::kBase1, Usart::kSize, usart_);
     machine_.attach(Spi::kBase, Spi::kSize, spi_);
     machine_.attach(Adc::kBase, Adc::kSize, adc_);
+    machine_.attach(TimerCounter::kBase, TimerCounter::kSize, tc_);
     machine_.addTimeSource(drive_);
     machine_.addTimeSource(bc4_);
+    machine_.addTimeSource(buttons_);
     Aic& aic = machine_.aic();
     aic.connect(Aic::kIdPioa, [this] { return pioa_.irqLine(); });
     aic.connect(Aic::kIdTwi, [this] { return twi_.irqLine(); });
     aic.connect(Aic::kIdUs1, [this] { return usart_.irqLine(); });
     aic.connect(Aic::kIdSpi, [this] { return spi_.irqLine(); });
     aic.connect(Aic::kIdAdc, [this] { return adc_.irqLine(); });
+    for (int ch = 0; ch < 3; ++ch) aic.connect(12 + ch, [this, ch] { return tc_.irqLine(ch); });
     for (int p = 0; p < 4; ++p)
         sensors_[static_cast<size_t>(p)] = std::make_unique<UltrasonicSensor>(
             machine_.clock(), pioa_, avr_, robot_, p, c.portFacing[static_cast<size_t>(p)],

@@ -7,12 +7,14 @@
 #include "host/emu/Adc.hpp"
 #include "host/emu/AvrModel.hpp"
 #include "host/emu/BlueCore.hpp"
+#include "host/emu/ButtonScript.hpp"
 #include "host/emu/DriveModel.hpp"
 #include "host/emu/Lcd.hpp"
 #include "host/emu/Machine.hpp"
 #include "host/emu/Pioa.hpp"
 #include "host/emu/Spi.hpp"
 #include "host/emu/TestPort.hpp"
+#include "host/emu/TimerCounter.hpp"
 #include "host/emu/Twi.hpp"
 #include "host/emu/UltrasonicSensor.hpp"
 #include "host/emu/Usart.hpp"
@@ -31,8 +33,10 @@ struct BrickConfig {
     sim::NoiseProfile noise;
     uint64_t seed = 1;
     DriveGeometry drive;
+    double mountOffsetCm = 0.0;     // sensors ahead of the robot's centre, cm (as the firmware's mountCm)
     std::array<int, 4> portFacing{0, 1, 2, 3};  // sensor port 1..4 -> 0 front, 1 right, 2 back, 3 left
     MachineOptions machine;
+    double pressEnterAtS = -1.0;    // press Enter at this emulated second for 0.3 s (< 0: never)
     bool testPort = false;          // tests only: the TestPort device at 0xFFFE8000
     LinkEndpoint* link = nullptr;   // PC side of the Bluetooth link (may be null)
 };
@@ -73,6 +77,8 @@ private:
     Lcd lcd_;
     Spi spi_;
     Adc adc_;
+    TimerCounter tc_;
+    ButtonScript buttons_;
     std::array<std::unique_ptr<UltrasonicSensor>, 4> sensors_;
     std::unique_ptr<TestPort> testPort_;
 };

@@ -1,5 +1,7 @@
 #include "host/emu/Machine.hpp"
 
+#include "host/emu/UnicornFastPath.hpp"
+
 #include <unicorn/unicorn.h>
 
 #include <algorithm>
@@ -45,6 +47,7 @@ struct Machine::Hooks {
         }
         if (m->clock_.now >= m->clock_.stopAt) {
             uc_emu_stop(uc);  // before the block: PC == address, the block does not run
+            m->stoppedAt_ = static_cast<uint32_t>(address);
             return;
         }
         uint32_t cpsr = 0;
@@ -169,6 +172,8 @@ Machine::Machine(const ElfImage& image, const MachineOptions& options)
       }),
       mc_([this] { applyRemap(); }) {  // immediate, as on the chip (safe inside the MMIO callback)
     trace_ = std::getenv("NXTMAP_EMU_TRACE") != nullptr;  // debugging aid: every block on stderr
+    if (std::getenv("NXTMAP_EMU_NOALIGN")) options_.checkAlignment = false;
+    if (std::getenv("NXTMAP_EMU_SLOW_STORES")) setUnicornFastStores(false);
     flash_ = static_cast<uint8_t*>(std::aligned_alloc(4096, kFlashSize));
     ram_ = static_cast<uint8_t*>(std::aligned_alloc(4096, kRamSize));
     if (!flash_ || !ram_) throw std::bad_alloc();
@@ -364,7 +369,17 @@ bool Machine::run(uint64_t until, const std::function<bool()>& stop) {
         uint32_t pc = 0;
         uc_reg_read(uc_, UC_ARM_REG_PC, &pc);
         const uint64_t begin = pc | ((cpsr & kCpsrT) ? 1u : 0u);
+        stoppedAt_ = 0;
         const uc_err e = uc_emu_start(uc_, begin, 0xFFFFFFF0ull, 0, 0);
+        if (stoppedAt_ != 0 && !fault_) {
+            // Stopped by the block hook before that block ran. Unicorn 2.0.1 sometimes leaves PC past the
+            // block's first instructions (seen on a chained Thumb cmp/beq block); the block did not execute,
+            // so resume exactly at it.
+            uint32_t now = 0;
+            uc_reg_read(uc_, UC_ARM_REG_CPSR, &now);
+            const uint32_t pcT = stoppedAt_ | ((now & kCpsrT) ? 1u : 0u);  // writing PC sets the T bit from bit 0
+            uc_reg_write(uc_, UC_ARM_REG_PC, &pcT);
+        }
         if (e != UC_ERR_OK && !fault_) setFault(FaultKind::BadMemory, 0, std::string("unicorn: ") + uc_strerror(e));
         paceToWall();
     }

@@ -121,6 +121,7 @@ private:
     uint64_t maxBusy_ = 0;
     uint64_t irqs_ = 0;
     uint32_t lastBlock_ = 0;
+    uint32_t stoppedAt_ = 0;     // block at which the block hook stopped the CPU (0 = none)
     uint32_t guardLow_ = 0, stackLimit_ = 0;
     uint32_t timedEntry_ = 0;
     uint32_t timedReturn_ = 0;   // 0 = not inside a timed call
