@@ -18,7 +18,7 @@ struct DriveGeometry {
     int leftMotor = 0;               // 0 = A, 1 = B, 2 = C
     int rightMotor = 1;
     double wheelDiameterCm = 5.6;    // NXT 56 x 26 tyre
-    double trackCm = 12.0;           // wheel centre to wheel centre
+    double trackCm = 11.2;           // wheel centre to wheel centre (firmware MotionGeometry 112 mm)
     double degPerSecPerPercent = 8;  // motor speed: 100 % = 800 deg/s
 };
 

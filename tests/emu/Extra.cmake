@@ -11,3 +11,17 @@ ExternalProject_Add(emu_probes
   INSTALL_COMMAND "")
 add_dependencies(test_emu emu_probes)
 target_compile_definitions(test_emu PRIVATE NXTMAP_EMU_PROBE_DIR="${NXTMAP_EMU_PROBE_DIR}")
+
+# The real firmware image (firmware/, when present), cross-built the same way for the end-to-end tests.
+if(EXISTS ${PROJECT_SOURCE_DIR}/firmware/CMakeLists.txt)
+  set(NXTMAP_EMU_FIRMWARE_DIR ${CMAKE_BINARY_DIR}/emu-firmware)
+  ExternalProject_Add(emu_firmware
+    SOURCE_DIR ${PROJECT_SOURCE_DIR}/firmware
+    BINARY_DIR ${NXTMAP_EMU_FIRMWARE_DIR}
+    CMAKE_GENERATOR Ninja
+    CMAKE_ARGS -DCMAKE_TOOLCHAIN_FILE=${PROJECT_SOURCE_DIR}/toolchain/arm-none-eabi.cmake
+    BUILD_ALWAYS ON
+    INSTALL_COMMAND "")
+  add_dependencies(test_emu emu_firmware)
+  target_compile_definitions(test_emu PRIVATE NXTMAP_EMU_FIRMWARE_DIR="${NXTMAP_EMU_FIRMWARE_DIR}")
+endif()

@@ -76,7 +76,7 @@ TEST(Drive, MotorsTurnTheRobotAndTachoEdgesCountDegrees) {
     EXPECT_NEAR(b, r.brick->drive().wheelDeg(1), 1.0);
     // Left forward, right back: a clockwise turn on the spot of a/2 * d / track * ... degrees.
     const double arcCm = a * 3.14159265358979 * 5.6 / 360.0;
-    const double turnDeg = 2.0 * arcCm / 12.0 * 180.0 / 3.14159265358979;
+    const double turnDeg = 2.0 * arcCm / 11.2 * 180.0 / 3.14159265358979;
     EXPECT_NEAR(r.brick->robot().headingDeg(), turnDeg, 2.0);
     EXPECT_NEAR(r.brick->robot().xCm(), 55.0, 0.01);
     EXPECT_NEAR(r.brick->robot().yCm(), 65.0, 0.01);
