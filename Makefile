@@ -62,7 +62,7 @@ test: host-san arm-common size
 demo: host
 	$(HOST_DIR)/host/cli/nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live --delay-ms 40
 
-bench: host
+bench: host firmware
 	$(HOST_DIR)/host/bench/nxtmap-bench
 
 clean:

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "host/bench/EmuBench.hpp"
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
 #include "host/cli/ExperimentRunner.hpp"
@@ -194,6 +195,7 @@ int run(int argc, char** argv) {
               "");
   }
   table.print();
+  nxtmap::bench::runEmuBench(dir);  // the emulated brick's budgets on the real firmware
   return 0;
 }
 }  // namespace
