@@ -32,6 +32,39 @@ std::optional<uint32_t> EmulatedRun::readSymbolWord(const std::string& name) con
     return v;
 }
 
+uint8_t ExportedMap::at(int x, int y) const {
+    const int i = x - minX, j = y - minY;
+    if (i < 0 || j < 0 || i >= width || j >= height) return 0;
+    return states[static_cast<size_t>(j * width + i)];
+}
+
+std::optional<ExportedMap> EmulatedRun::exportedMap() const {
+    constexpr uint32_t kMagic = 0x3150414D;  // "MAP1"
+    constexpr int kMaxSide = 64;
+    const auto at = image_.symbol("g_mapExport");
+    if (!at) return std::nullopt;
+    auto byte = [&](uint32_t off) {
+        uint8_t b = 0;
+        brick_->machine().readByte(*at + off, b);
+        return b;
+    };
+    auto i16 = [&](uint32_t off) { return static_cast<int16_t>(byte(off) | (byte(off + 1) << 8)); };
+    const uint32_t magic = static_cast<uint32_t>(byte(0)) | (static_cast<uint32_t>(byte(1)) << 8) |
+                           (static_cast<uint32_t>(byte(2)) << 16) | (static_cast<uint32_t>(byte(3)) << 24);
+    if (magic != kMagic) return std::nullopt;
+    ExportedMap m;
+    m.minX = i16(4);
+    m.minY = i16(6);
+    m.width = i16(8);
+    m.height = i16(10);
+    if (m.width < 0 || m.height < 0 || m.width > kMaxSide || m.height > kMaxSide) return std::nullopt;
+    const int n = m.width * m.height;
+    m.states.resize(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i)
+        m.states[static_cast<size_t>(i)] = static_cast<uint8_t>((byte(12 + static_cast<uint32_t>(i / 4)) >> (2 * (i % 4))) & 3u);
+    return m;
+}
+
 EmulatedRunReport EmulatedRun::run() {
     EmulatedRunReport r;
     const bool hasDone = image_.symbol("g_explorerDone").has_value();

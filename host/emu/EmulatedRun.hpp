@@ -11,8 +11,18 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace nxtmap::emu {
+
+// The firmware's map as it exports it when done (symbol g_mapExport, layout in /work notes and below):
+// uint32 magic "MAP1", int16 minX, minY, width, height, then 2-bit CellState values, row-major.
+struct ExportedMap {
+    int minX = 0, minY = 0, width = 0, height = 0;
+    std::vector<uint8_t> states;  // width * height CellState values
+    // The state of explorer cell (x, y); Unknown (0) outside the exported window.
+    uint8_t at(int x, int y) const;
+};
 
 struct EmulatedRunOptions {
     BrickConfig brick;              // start, heading, noise, seed, link, realtime (brick.machine.realtime)
@@ -48,6 +58,8 @@ public:
     // Reads a little-endian word of guest memory by symbol; nullopt if the symbol is missing.
     std::optional<uint32_t> readSymbolWord(const std::string& name) const;
     std::optional<uint8_t> readSymbolByte(const std::string& name) const;
+    // The exported map, if the image has g_mapExport and it carries the magic.
+    std::optional<ExportedMap> exportedMap() const;
 
 private:
     const ElfImage& image_;
