@@ -90,6 +90,9 @@ int runEmulate(const EmulateOptions& o) {
       << "sensor updates   " << r.sensorUpdates << ", at most " << r.maxPerUpdate << " instructions each\n"
       << "longest busy     " << r.maxBusy << " instructions between idles\n"
       << "AVR frames       " << r.avrGood << " good, " << r.avrBad << " bad; sonar pings " << r.pings << "\n"
+      << "bluetooth        port " << (r.btPortOpen ? "open" : "closed") << ", PC "
+      << (r.btConnected ? "connected" : "not connected") << (r.btStreaming ? ", stream mode" : "") << ", "
+      << r.btToPc << " bytes to the PC, " << r.btFromPc << " from it\n"
       << "robot            x " << num(r.xCm) << " cm, y " << num(r.yCm) << " cm, heading " << num(r.headingDeg)
       << " deg, driven " << num(r.drivenCm) << " cm\n";
   std::cout << out.str() << std::flush;

@@ -31,7 +31,10 @@ void BlueCore::reply(uint8_t cmd, const std::vector<uint8_t>& payload) {
 void BlueCore::fromArm(uint8_t b) {
     if (!running_) return;
     if (streaming()) {
-        if (link_ && connected_) link_->send(&b, 1);
+        if (link_ && connected_) {
+            link_->send(&b, 1);
+            ++toPc_;
+        }
         return;
     }
     frame_.push_back(b);
@@ -84,6 +87,7 @@ bool BlueCore::hasByteForArm() const {
 }
 
 uint8_t BlueCore::takeByteForArm() {
+    if (toArm_.empty()) ++fromPc_;
     std::deque<uint8_t>& q = !toArm_.empty() ? toArm_ : pcIn_;
     const uint8_t b = q.front();
     q.pop_front();

@@ -40,6 +40,9 @@ public:
     uint64_t badFrames() const { return bad_; }
     const std::vector<uint8_t>& unknownCommands() const { return unknown_; }
     bool portOpen() const { return portOpen_; }
+    bool connected() const { return connected_; }
+    uint64_t bytesToPc() const { return toPc_; }
+    uint64_t bytesFromPc() const { return fromPc_; }
 
 private:
     void command(const std::vector<uint8_t>& f);  // [cmd][payload...] of a checked frame
@@ -58,7 +61,7 @@ private:
     bool pcWasConnected_ = false;
     bool announced_ = false;       // REQUEST_CONNECTION sent for the current PC connection
     uint64_t nextPoll_ = 0;
-    uint64_t commands_ = 0, bad_ = 0;
+    uint64_t commands_ = 0, bad_ = 0, toPc_ = 0, fromPc_ = 0;
     std::vector<uint8_t> unknown_;
 };
 

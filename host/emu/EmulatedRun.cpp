@@ -95,6 +95,12 @@ EmulatedRunReport EmulatedRun::run() {
     r.avrBad = brick_->avr().badFrames();
     for (int p = 0; p < 4; ++p) r.pings += brick_->sensor(p).pings();
     r.drivenCm = brick_->drive().drivenCm();
+    const BlueCore& bc = brick_->blueCore();
+    r.btPortOpen = bc.portOpen();
+    r.btConnected = bc.connected();
+    r.btStreaming = bc.streaming();
+    r.btToPc = bc.bytesToPc();
+    r.btFromPc = bc.bytesFromPc();
     r.xCm = brick_->robot().xCm();
     r.yCm = brick_->robot().yCm();
     r.headingDeg = brick_->robot().headingDeg();

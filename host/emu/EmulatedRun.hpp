@@ -45,6 +45,8 @@ struct EmulatedRunReport {
     uint64_t maxBusy = 0;           // longest stretch between two idles
     uint64_t avrGood = 0, avrBad = 0, pings = 0;
     double drivenCm = 0.0;
+    bool btPortOpen = false, btConnected = false, btStreaming = false;
+    uint64_t btToPc = 0, btFromPc = 0;
     double xCm = 0.0, yCm = 0.0, headingDeg = 0.0;
 };
 
