@@ -43,7 +43,7 @@ TEST(EmulateCli, FirmwareFaultEndsWithTheReportAndExitCode1) {
 TEST(EmulateCli, RealFirmwareRunPrintsMeasurementsAndLcd) {
   TempDir dir("emucli");
   const std::string png = dir.path("lcd.png");
-  const RunOutput r = runCli("emulate " + kRoom + " --start 1,20 --seconds 3 --firmware " +
+  const RunOutput r = runCli("emulate " + kRoom + " --start 1,20 --seconds 2 --firmware " +
                              shellQuote(std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap.elf") + " --lcd " +
                              shellQuote(png));
   EXPECT_EQ(r.exitCode, 0) << r.err;

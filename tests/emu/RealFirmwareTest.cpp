@@ -32,13 +32,13 @@ TEST(RealFirmware, BootsLinksAvrExploresAndNeverFaults) {
     EmulatedRunOptions o;
     o.brick.startCol = 2;
     o.brick.startRow = 5;
-    o.maxSeconds = 12.0;
+    o.maxSeconds = 6.0;
     o.pressEnterAtS = 1.0;
     EmulatedRun run(image, world, o);
     const EmulatedRunReport r = run.run();
     ASSERT_FALSE(r.fault) << r.fault.describe();
-    EXPECT_NEAR(r.emulatedSeconds, 12.0, 0.01);
-    EXPECT_GT(r.avrGood, 4000u);  // one 9-byte and one 13-byte frame every 2 ms
+    EXPECT_NEAR(r.emulatedSeconds, 6.0, 0.01);
+    EXPECT_GT(r.avrGood, 2000u);  // one 9-byte and one 13-byte frame every 2 ms
     EXPECT_EQ(r.avrBad, 0u);
     for (int p = 0; p < 4; ++p) EXPECT_GT(run.brick().sensor(p).pings(), 0u) << "port " << p + 1;
     EXPECT_GT(r.sensorUpdates, 0u);
