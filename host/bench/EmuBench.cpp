@@ -16,7 +16,7 @@ namespace {
 constexpr uint32_t kRamTarget = 24 * 1024;
 constexpr uint64_t kUpdateTarget = 48000;
 constexpr double kSpeedTarget = 20.0;
-constexpr double kLimitS = 600.0;  // emulated seconds per room at most
+constexpr double kDefaultLimitS = 120.0;  // emulated seconds per room at most (NXTMAP_EMU_BENCH_SECONDS)
 
 struct Room {
   std::string map;
@@ -35,6 +35,8 @@ int runEmuBench(const std::string& scenarioDir) {
     return 1;
   }
   const emu::ElfImage& image = *load.image;
+  const char* limitEnv = std::getenv("NXTMAP_EMU_BENCH_SECONDS");
+  const double kLimitS = limitEnv && std::atof(limitEnv) > 0 ? std::atof(limitEnv) : kDefaultLimitS;
   // The firmware explores in 0.20 m cells: the published rooms' layouts at that cell size.
   const double cellM = 0.20;
   const std::vector<Room> rooms = {{"occupancy-089.map", 1, 20}, {"occupancy-139.map", 1, 20}};
