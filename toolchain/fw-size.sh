@@ -20,13 +20,13 @@ ELF=$DIR/nxtmap.elf; RAMELF=$DIR/nxtmap-ram.elf; BIN=$DIR/nxtmap.bin
 for f in "$ELF" "$RAMELF" "$BIN" "$DIR/nxtmap-ram.bin"; do [ -f "$f" ] || { echo "size: missing $f (run make firmware)"; exit 1; }; done
 
 flash=$(( $(hex "$(sym "$ELF" __image_end)") - 0x100000 ))
-ram=$(( $(hex "$(sym "$ELF" __ram_used_end)") - 0x200000 ))
+ram=$(( $(hex "$(sym "$ELF" __static_ram)") ))
 bss=$(( $(hex "$(sym "$ELF" _ebss)") - $(hex "$(sym "$ELF" __data_start)") ))
 stacks=$(( $(hex "$(sym "$ELF" __stack_end__)") - $(hex "$(sym "$ELF" __stack_start__)") ))
-ramrun=$(( $(hex "$(sym "$RAMELF" __ram_used_end)") - 0x202000 ))
+ramrun=$(( $(hex "$(sym "$RAMELF" _ebss)") - 0x202000 + $(hex "$(sym "$RAMELF" __stack_end__)") - $(hex "$(sym "$RAMELF" __stack_start__)") ))
 echo "nxtmap firmware (ARM7TDMI, $(arm-none-eabi-gcc -dumpversion)):"
 check "flash: code + rodata + .data image" "$flash" "$FLASH_LIMIT"
-check "static RAM: vectors + data/bss ($bss) + stacks ($stacks)" "$ram" "$RAM_LIMIT"
+check "static RAM (64x64 grid): data/bss ($bss) + stacks ($stacks)" "$ram" "$RAM_LIMIT"
 check "RAM-run image at 0x202000 incl. bss + stacks" "$ramrun" "$RAMRUN_LIMIT"
 
 binsize=$(stat -c %s "$BIN")

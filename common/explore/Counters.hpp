@@ -10,9 +10,11 @@ struct Counters {
   uint32_t cellsMoved = 0;      // one per cell travelled
   uint32_t turnEighths = 0;     // 2 per 90 deg turn, 1 per 45 deg
   uint32_t blockedMoves = 0;    // moves the wheels could not complete
+  uint32_t correctionMrad = 0;  // small steering rotations that keep the robot on the grid, mrad
 
-  // Time in half cell units: one unit per cell moved and per 90 deg turn (half for 45 deg).
-  constexpr uint32_t timeHalfUnits() const { return 2 * cellsMoved + turnEighths; }
+  // Time in half cell units: one unit per cell moved and per 90 deg turn (half for 45 deg);
+  // steering corrections count by their angle (785 mrad = 45 deg = one half unit).
+  constexpr uint32_t timeHalfUnits() const { return 2 * cellsMoved + turnEighths + correctionMrad / 785; }
 };
 
 }  // namespace nxtmap

@@ -11,6 +11,7 @@ RayMarkResult markRay(MapLayers& map, const RangeGeometry& geometry, Cell from, 
     case RangeStatus::Good:
       hitAt = geometry.hitCell(reading.cm);
       freeUpTo = static_cast<int16_t>(hitAt - 1);
+      if (!geometry.sureHit(reading.cm)) hitAt = 0;  // may come from beside the axis
       break;
     case RangeStatus::TooNear:
       hitAt = 1;

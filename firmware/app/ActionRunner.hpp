@@ -1,8 +1,8 @@
 #pragma once
 #include <cstdint>
 
-#include "common/explore/Action.hpp"
-#include "common/explore/Event.hpp"
+#include "common/motion/DriveAction.hpp"
+#include "common/motion/DriveEvent.hpp"
 #include "common/sensing/RangeFilter.hpp"
 #include "firmware/drivers/MotionController.hpp"
 #include "firmware/drivers/MotionGeometry.hpp"
@@ -10,11 +10,12 @@
 
 namespace nxtmap::fw {
 
-// Carries out one explorer Action on the robot without blocking, and produces the Event that
-// answers it. Read: raw samples of the sensor's port through the SonarSequencer into a RangeFilter
-// until it is done. Move: the wheels travel the cell's counts; if the motion is blocked, the robot
-// drives back to where the move started and answers Blocked. Turn: a spin on the spot (left wheel
-// forward for clockwise). Pure logic: wheel counts and time in, wheel power out.
+// Carries out one DriveAction (from the Pilot, or from path following) on the robot without
+// blocking, and produces the DriveEvent that answers it. Read: raw samples of the sensor's port
+// through the SonarSequencer into a RangeFilter until it is done. Drive (mm): both wheels the
+// same counts; if the motion is blocked, the robot drives back to where it started and answers
+// driven(blocked). Rotate (mrad, + clockwise): a spin on the spot, left wheel forward for
+// clockwise. Pure logic: wheel counts and time in, wheel power out.
 class ActionRunner {
  public:
   struct Wheels {
@@ -29,44 +30,47 @@ class ActionRunner {
   }
 
   bool busy() const { return phase_ != Phase::Idle; }
-  uint32_t failedTurns() const { return failedTurns_; }
+  uint32_t failedRotations() const { return failedRotations_; }
 
-  void begin(const Action& a, Wheels now, uint32_t nowMs) {
+  void begin(const DriveAction& a, Wheels now, uint32_t nowMs) {
     action_ = a;
     start_ = now;
+    target_ = now;
     switch (a.kind) {
-      case Action::Kind::Read:
+      case DriveAction::Kind::Read:
         filter_.reset();
         phase_ = Phase::Reading;
         break;
-      case Action::Kind::Move: {
-        const int32_t c = drive_.countsForCells(a.amount);
+      case DriveAction::Kind::Drive: {
+        const int32_t c = drive_.countsForMm(a.value);
+        target_ = Wheels{now.left + c, now.right + c};
         motion_.start(now.left, now.right, c, c, nowMs);
-        phase_ = Phase::Moving;
+        phase_ = Phase::Driving;
         break;
       }
-      case Action::Kind::Turn: {
-        const int32_t c = drive_.countsForTurn(a.amount);
+      case DriveAction::Kind::Rotate: {
+        const int32_t c = drive_.countsForMrad(a.value);
+        target_ = Wheels{now.left + c, now.right - c};
         motion_.start(now.left, now.right, c, -c, nowMs);
-        phase_ = Phase::Turning;
+        phase_ = Phase::Rotating;
         break;
       }
-      case Action::Kind::Done:
+      case DriveAction::Kind::Done:
         phase_ = Phase::Idle;
         break;
     }
   }
 
   // Advances the action; true (with `out` set) when it is over.
-  bool poll(Wheels now, uint32_t nowMs, Event& out) {
+  bool poll(Wheels now, uint32_t nowMs, DriveEvent& out) {
     switch (phase_) {
       case Phase::Idle:
         return false;
       case Phase::Reading:
         return pollRead(nowMs, out);
-      case Phase::Moving: {
+      case Phase::Driving: {
         const MotionController::Status s = motion_.update(now.left, now.right, nowMs);
-        if (s == MotionController::Status::Done) return finish(Event::moved(action_.amount), out);
+        if (s == MotionController::Status::Done) return finish(DriveEvent::driven(false), out);
         if (s == MotionController::Status::Blocked) {
           motion_.start(now.left, now.right, start_.left - now.left, start_.right - now.right, nowMs);
           phase_ = Phase::Backing;
@@ -76,40 +80,65 @@ class ActionRunner {
       case Phase::Backing: {
         const MotionController::Status s = motion_.update(now.left, now.right, nowMs);
         if (s == MotionController::Status::Done || s == MotionController::Status::Blocked)
-          return finish(Event::blocked(), out);
+          return finish(DriveEvent::driven(true), out);
         return false;
       }
-      case Phase::Turning: {
+      case Phase::Rotating: {
         const MotionController::Status s = motion_.update(now.left, now.right, nowMs);
-        if (s == MotionController::Status::Blocked) ++failedTurns_;
+        if (s == MotionController::Status::Blocked) ++failedRotations_;
         if (s == MotionController::Status::Done || s == MotionController::Status::Blocked)
-          return finish(Event::turned(action_.amount), out);
+          return finish(DriveEvent::rotated(), out);
         return false;
       }
     }
     return false;
   }
 
-  // Stops whatever runs (motors to 0); no event.
+  // Stops whatever runs (motors to 0); no event. resume() can carry the same action on.
   void abort() {
     motion_.stop();
+    if (phase_ != Phase::Idle) interrupted_ = phase_;
     phase_ = Phase::Idle;
+  }
+  // Carries on an aborted action: a drive or rotation to the wheel counts it was aiming at (not
+  // its whole distance again), a reading from scratch; a drive that was already returning from
+  // an obstacle returns to its start. False when nothing was interrupted.
+  bool resume(Wheels now, uint32_t nowMs) {
+    const Phase p = interrupted_;
+    interrupted_ = Phase::Idle;
+    switch (p) {
+      case Phase::Idle:
+        return false;
+      case Phase::Reading:
+        filter_.reset();
+        break;
+      case Phase::Driving:
+      case Phase::Rotating:
+        motion_.start(now.left, now.right, target_.left - now.left, target_.right - now.right, nowMs);
+        break;
+      case Phase::Backing:
+        motion_.start(now.left, now.right, start_.left - now.left, start_.right - now.right, nowMs);
+        break;
+    }
+    phase_ = p;
+    return true;
   }
   int8_t power(int wheel) const { return motion_.power(wheel); }
 
  private:
-  enum class Phase : uint8_t { Idle, Reading, Moving, Backing, Turning };
+  enum class Phase : uint8_t { Idle, Reading, Driving, Backing, Rotating };
 
-  bool pollRead(uint32_t nowMs, Event& out) {
+  bool pollRead(uint32_t nowMs, DriveEvent& out) {
     sonar_.poll(nowMs);
     if (sonar_.ready()) filter_.add(sonar_.take());
-    if (filter_.done()) return finish(Event::range(action_.sensor, filter_.result()), out);
+    if (filter_.done()) return finish(DriveEvent::range(action_.sensor, filter_.result()), out);
     if (!sonar_.busy()) sonar_.request(ports_[static_cast<int>(action_.sensor)]);
     return false;
   }
-  bool finish(const Event& e, Event& out) {
+  bool finish(const DriveEvent& e, DriveEvent& out) {
     motion_.stop();
     phase_ = Phase::Idle;
+    interrupted_ = Phase::Idle;
     out = e;
     return true;
   }
@@ -119,10 +148,12 @@ class ActionRunner {
   MotionGeometry drive_;
   RangeFilter filter_;
   uint8_t ports_[4] = {0, 1, 2, 3};
-  Action action_{};
+  DriveAction action_{};
   Wheels start_{0, 0};
-  uint32_t failedTurns_ = 0;
+  Wheels target_{0, 0};
+  uint32_t failedRotations_ = 0;
   Phase phase_ = Phase::Idle;
+  Phase interrupted_ = Phase::Idle;
 };
 
 }  // namespace nxtmap::fw

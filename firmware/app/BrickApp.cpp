@@ -4,22 +4,35 @@
 
 #include "common/check/Check.hpp"
 #include "firmware/app/Isr.hpp"
+#include "firmware/app/MapExport.hpp"
 
 namespace nxtmap::fw {
 namespace {
 constexpr TachoDecoder::Pins kTachoPins[TachoDecoder::kMotors] = {
     {reg::kPinTachoA, reg::kPinDirA}, {reg::kPinTachoB, reg::kPinDirB}, {reg::kPinTachoC, reg::kPinDirC}};
-constexpr uint32_t kDrawPeriodMs = 250;
+constexpr uint32_t kBlinkMs = 500;      // robot pixel blink and status refresh
+constexpr uint32_t kMapRedrawMs = 500;   // the map is redrawn at most this often, and only when it changed
 constexpr uint32_t kButtonStableMs = 50;
 constexpr uint16_t kAvrSilentTripMs = 100;
 constexpr uint32_t kSoftI2cTickRc = reg::kMck / 2 / 28800;  // 3 ticks per bit at 9600 bit/s
 }  // namespace
 
 // Counts filtered readings fed to the explorer; the emulator times nxtmapSensorUpdate.
+// Run-end markers for the emulator: g_explorerDone turns 1 when the explorer reports Done, after
+// (in the NXTMAP_SIM_GEOMETRY image) the final map was copied to g_mapExport.
+extern "C" {
+volatile uint8_t g_explorerDone = 0;
+#if defined(NXTMAP_SIM_GEOMETRY)
+MapExport g_mapExport;
+#endif
+}
+
+// One sensor update: a filtered reading through the pilot into the explorer (marking rules and
+// the explorer's next decision).
 extern "C" {
 volatile uint32_t g_sensorUpdates = 0;
-__attribute__((noinline)) Action nxtmapSensorUpdate(Explorer* explorer, const Event* e) {
-  const Action a = explorer->step(*e);
+__attribute__((noinline)) DriveAction nxtmapSensorUpdate(Pilot* pilot, const DriveEvent* e) {
+  const DriveAction a = pilot->step(*e);
   g_sensorUpdates = g_sensorUpdates + 1;
   return a;
 }
@@ -32,6 +45,7 @@ BrickApp::BrickApp()
       map_(storage_.map.view(), BrickExplorerStorage::kWidth(), BrickExplorerStorage::kHeight()),
       planner_(storage_.travel.view(), BrickExplorerStorage::kWidth(), BrickExplorerStorage::kHeight()),
       explorerConfig_(config_.explorer()),
+      link_(map_.grid(), shadow_, protocol::BrickLinkConfig{}),
       runner_(motion_, sonar_, config_.drive, explorerConfig_.geometry, config_.sensorPorts) {}
 
 void BrickApp::init() {
@@ -112,56 +126,136 @@ ActionRunner::Wheels BrickApp::wheels() const {
   return ActionRunner::Wheels{tacho_.count(config_.leftMotor), tacho_.count(config_.rightMotor)};
 }
 
-void BrickApp::startExploring(Strategy s) {
+Pose BrickApp::pose() const {
+  if (poseFromPath_) return follower_.pose();
+  if (explorer_ != nullptr) return explorer_->pose();
+  return restPose_;
+}
+
+protocol::BrickReport BrickApp::report() const {
+  protocol::BrickReport r;
+  r.mode = mode_;
+  r.pose = pose();
+  if (pilot_ != nullptr) r.counters = pilot_->counters();
+  r.batteryMillivolts = static_cast<uint16_t>(batteryMillivolts(avr_.status().batteryRaw));
+  r.roomId = roomId_;
+  r.roomEntry = Cell{0, 0};
+  r.path = follower_.progress();
+  return r;
+}
+
+void BrickApp::startExploring(Strategy s, uint32_t now) {
   if (mode_ == Mode::Exploring) return;
   safety_.clear();
   tacho_.clearFault();
-  if (explorer_ == nullptr || explorer_->finished()) {
+  follower_.abort();
+  if (pilot_ != nullptr && !pilot_->finished() && !poseFromPath_) {
+    // Resume a stopped run: the action that was cut short carries on to where it was going.
+    if (!runner_.resume(wheels(), now)) runner_.begin(pending_, wheels(), now);
+  } else {
+    // A new run maps from where the robot stands: that spot is the new map's origin.
     map_.clear();
+    link_.mapRestarted();
+    poseFromPath_ = false;
     if (s == Strategy::Frontier) explorer_ = new (explorerBuf_) FrontierExplorer(map_, planner_, explorerConfig_);
     else explorer_ = new (explorerBuf_) PropagationExplorer(map_, planner_, explorerConfig_);
-    runner_.begin(explorer_->step(Event::start()), wheels(), ms_);
-  } else if (!runner_.busy()) {
-    // Resume after a stop: redo the interrupted action from scratch is not possible (the explorer
-    // waits for its answer), so a stopped run resumes by re-reading the front sensor.
-    runner_.begin(Action::read(Sensor::Front), wheels(), ms_);
+    pilot_ = new (pilotBuf_) Pilot(*explorer_, PilotConfig{});
+    pending_ = pilot_->step(DriveEvent::start());
+    runner_.begin(pending_, wheels(), now);
   }
+  mapDirty_ = true;
   mode_ = Mode::Exploring;
+}
+
+void BrickApp::followPath(const protocol::PathMsg& path, uint32_t now) {
+  if (mode_ == Mode::Exploring) stop();
+  safety_.clear();
+  tacho_.clearFault();
+  const Pose here = pose();
+  if (!follower_.start(path, here, config_.drive.cellMm)) return;  // not from where the robot stands
+  poseFromPath_ = true;
+  DriveAction first;
+  if (follower_.next(nullptr, first)) {
+    pending_ = first;
+    runner_.begin(first, wheels(), now);
+    mode_ = Mode::Following;
+  }
+}
+
+void BrickApp::takeMapChunk(const protocol::MapChunkMsg& chunk) {
+  if (mode_ == Mode::Exploring || mode_ == Mode::Following) stop();
+  if (chunk.chunkIndex == 0) {
+    map_.clear();
+    explorer_ = nullptr;  // the map now comes from the PC; a new run starts a new map
+    pilot_ = nullptr;
+    restPose_ = Pose{};
+    poseFromPath_ = false;
+  }
+  for (uint16_t i = 0; i < chunk.count; ++i) {
+    const CellState st = chunk.state(i);
+    if (st == CellState::Free) (void)map_.markVisited(chunk.cellOf(i));
+    else if (st == CellState::Occupied) (void)map_.markBlocked(chunk.cellOf(i));
+  }
+  if (chunk.chunkIndex + 1 >= chunk.chunkCount) link_.mapRestarted();
+  mapDirty_ = true;
 }
 
 void BrickApp::stop() {
   runner_.abort();
-  if (mode_ == Mode::Exploring) mode_ = Mode::Idle;
+  follower_.abort();
+  if (mode_ == Mode::Exploring || mode_ == Mode::Following) mode_ = Mode::Idle;
 }
 
 void BrickApp::newRoom() {
   stop();
+  restPose_ = Pose{};
+  poseFromPath_ = false;
   explorer_ = nullptr;
+  pilot_ = nullptr;
   map_.clear();
+  link_.mapRestarted();
+  ++roomId_;
   mode_ = Mode::Idle;
+  mapDirty_ = true;
 }
 
-Action BrickApp::feed(const Event& e) {
-  if (e.kind == Event::Kind::Range) return nxtmapSensorUpdate(explorer_, &e);
-  return explorer_->step(e);
-}
-
-void BrickApp::driveExplorer(uint32_t now) {
-  Event e;
-  if (!runner_.poll(wheels(), now, e)) return;
-  const Action next = feed(e);
-  if (next.kind == Action::Kind::Done || explorer_->finished()) {
-    mode_ = Mode::Done;
-    return;
+void BrickApp::carryOut(const protocol::Command& c, uint32_t now) {
+  switch (c.kind) {
+    case protocol::CommandKind::Explore: startExploring(Strategy::Frontier, now); break;
+    case protocol::CommandKind::Stop: stop(); break;
+    case protocol::CommandKind::FollowPath: followPath(c.path, now); break;
+    case protocol::CommandKind::MapChunk: takeMapChunk(c.chunk); break;
   }
-  runner_.begin(next, wheels(), now);
+}
+
+void BrickApp::driveRobot(uint32_t now) {
+  DriveEvent e;
+  if (!runner_.poll(wheels(), now, e)) return;
+  driveMotors();  // the action is over: motors to rest before a possibly long explorer decision
+  if (mode_ == Mode::Exploring) {
+    pending_ = e.kind == DriveEvent::Kind::Range ? nxtmapSensorUpdate(pilot_, &e) : pilot_->step(e);
+    mapDirty_ = true;
+    if (pending_.kind == DriveAction::Kind::Done || pilot_->finished()) {
+      mode_ = Mode::Done;
+#if defined(NXTMAP_SIM_GEOMETRY)
+      g_mapExport.fill(map_.grid());
+#endif
+      g_explorerDone = 1;
+      return;
+    }
+    runner_.begin(pending_, wheels(), now);
+  } else if (mode_ == Mode::Following) {
+    if (follower_.next(&e, pending_)) runner_.begin(pending_, wheels(), now);
+    else mode_ = Mode::Idle;
+  }
 }
 
 void BrickApp::driveMotors() {
   AvrCommand& cmd = avr_.command();
   if (safety_.tripped()) return;  // the tick holds them at 0 with the brake on
-  const int8_t left = mode_ == Mode::Exploring ? runner_.power(0) : 0;
-  const int8_t right = mode_ == Mode::Exploring ? runner_.power(1) : 0;
+  const bool moving = mode_ == Mode::Exploring || mode_ == Mode::Following;
+  const int8_t left = moving ? runner_.power(0) : 0;
+  const int8_t right = moving ? runner_.power(1) : 0;
   cmd.pwm[config_.leftMotor] = left;
   cmd.pwm[config_.rightMotor] = right;
   uint8_t brake = 0x07;
@@ -180,19 +274,40 @@ void BrickApp::readButtons(uint32_t now) {
   }
   if (now - candidateSince_ < kButtonStableMs || b == lastButton_) return;
   lastButton_ = b;
-  if (b == Button::Enter) startExploring(Strategy::Propagation);
-  else if (b == Button::Right) startExploring(Strategy::Frontier);
+  if (b == Button::Enter) startExploring(Strategy::Propagation, now);
+  else if (b == Button::Right) startExploring(Strategy::Frontier, now);
   else if (b == Button::Exit) stop();
+  else if (b == Button::Left) newRoom();
+}
+
+void BrickApp::serveRadio(uint32_t now) {
+  const uint32_t epoch = bt_.linkEpoch();
+  bt_.poll(now);
+  if (bt_.linkEpoch() != epoch) link_.linkLost();
+  uint8_t b;
+  while (bt_.readByte(b)) link_.receive(b);
+  protocol::Command c;
+  while (link_.nextCommand(c)) carryOut(c, now);
+  if (!bt_.streaming()) return;
+  const protocol::BrickReport r = report();
+  protocol::Frame f;
+  while (bt_.txSpace() >= protocol::kMaxFrame && link_.transmit(now, r, f)) (void)bt_.write(f.bytes, f.size);
 }
 
 void BrickApp::draw(uint32_t now) {
-  if (now - lastDrawMs_ < kDrawPeriodMs) return;
+  if (now - lastDrawMs_ < kBlinkMs) return;
   lastDrawMs_ = now;
   blink_ = !blink_;
-  const Pose pose = explorer_ != nullptr ? explorer_->pose() : Pose{};
-  screen_.drawMap(map_.grid(), pose.cell, pose.heading, blink_);
+  const Pose p = pose();
+  if (mapDirty_ && mapPage_ < 0 && now - lastMapDrawMs_ >= kMapRedrawMs) {
+    mapDirty_ = false;
+    lastMapDrawMs_ = now;
+    mapPage_ = 0;  // drawMapPages() draws one band per loop pass
+  } else if (mapPage_ < 0) {
+    screen_.drawRobot(map_.grid(), p.cell, blink_);
+  }
   const int x = Screen::kTextX;
-  static const char* const kModes[] = {"IDLE", "RUN", "DONE", "STOP"};
+  static const char* const kModes[] = {"IDLE", "MAP", "PATH", "DONE", "STOP"};
   screen_.clearLine(0);
   screen_.text(x, 0, kModes[static_cast<int>(mode_)]);
   screen_.clearLine(7);
@@ -205,53 +320,69 @@ void BrickApp::draw(uint32_t now) {
   screen_.clearLine(14);
   screen_.text(x, 14, kBt[static_cast<int>(bt_.state())]);
   screen_.clearLine(21);
-  screen_.text(x, 21, avr_.up() ? "AVR OK" : "AVR --");
-  if (explorer_ != nullptr) {
-    const Counters& c = explorer_->counters();
+  screen_.text(x, 21, link_.connected() ? "PC OK" : (avr_.up() ? "AVR OK" : "AVR --"));
+  if (pilot_ != nullptr) {
+    const Counters c = pilot_->counters();
     screen_.clearLine(30);
     screen_.text(screen_.number(x, 30, c.cellsMoved), 30, " C");
     screen_.clearLine(37);
     screen_.text(screen_.number(x, 37, c.sensorRequests), 37, " R");
   }
+  screen_.clearLine(44);
+  screen_.text(screen_.number(x + 8, 44, roomId_), 44, "");
+  screen_.text(x, 44, "R");
   if (safety_.tripped()) {
     static const char* const kWhy[] = {"", "CHECK", "ENCODER", "AVR", "SILENT"};
-    screen_.clearLine(50);
-    screen_.text(x, 50, kWhy[static_cast<int>(safety_.reason())]);
+    screen_.clearLine(52);
+    screen_.text(x, 52, kWhy[static_cast<int>(safety_.reason())]);
   }
   lcd_.refresh();
+}
+
+void BrickApp::drawMapPages() {
+  if (mapPage_ < 0) return;
+  const Pose p = pose();
+  screen_.drawMapPage(map_.grid(), p.cell, p.heading, blink_, mapPage_);
+  if (++mapPage_ == Screen::kMapSize / 8) {
+    mapPage_ = -1;
+    lcd_.refresh();
+  }
 }
 
 void BrickApp::loopOnce() {
   const uint32_t now = ms_;
   safety_.feed(now);
   if (tacho_.fault()) safety_.trip(MotorSafety::Reason::Encoder);
-  if (mode_ == Mode::Exploring && avr_.silentMs() > kAvrSilentTripMs) safety_.trip(MotorSafety::Reason::AvrLink);
-  if (safety_.tripped() && mode_ == Mode::Exploring) {
+  const bool moving = mode_ == Mode::Exploring || mode_ == Mode::Following;
+  if (moving && avr_.silentMs() > kAvrSilentTripMs) safety_.trip(MotorSafety::Reason::AvrLink);
+  if (safety_.tripped() && moving) {
     runner_.abort();
+    follower_.abort();
     mode_ = Mode::Fault;
   }
-
-  const uint32_t epoch = bt_.linkEpoch();
-  bt_.poll(now);
-  if (bt_.linkEpoch() != epoch) radio_.linkLost();
-  uint8_t b;
-  while (bt_.readByte(b)) radio_.receive(b);
-
+  serveRadio(now);
   readButtons(now);
-  if (mode_ == Mode::Exploring) driveExplorer(now);
+  if (mode_ == Mode::Exploring || mode_ == Mode::Following) driveRobot(now);
   startSonarClock();
   driveMotors();
   draw(now);
+  drawMapPages();
   lcd_.pump(now);
 }
 
 void BrickApp::run() {
   nxtmapIrqEnable();
+  uint32_t last = ms_ - 1;
   for (;;) {
-    const uint32_t before = ms_;
-    loopOnce();
-    // Nothing new happened during the pass: stop the processor clock until the next interrupt.
-    if (ms_ == before) bus_.write(reg::kPmcScdr, 1u);
+    // One pass per millisecond tick, or sooner when radio bytes wait; the byte-by-byte TWI and
+    // soft-I2C interrupts in between need no pass.
+    const uint32_t now = ms_;
+    if (now != last || bt_.rxPending()) {
+      last = now;
+      loopOnce();
+    }
+    // Nothing new: stop the processor clock until the next interrupt.
+    if (ms_ == last && !bt_.rxPending()) bus_.write(reg::kPmcScdr, 1u);
   }
 }
 

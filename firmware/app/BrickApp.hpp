@@ -4,9 +4,11 @@
 #include "common/explore/ExplorerStorage.hpp"
 #include "common/explore/FrontierExplorer.hpp"
 #include "common/explore/PropagationExplorer.hpp"
+#include "common/motion/Pilot.hpp"
+#include "common/protocol/BrickLink.hpp"
 #include "firmware/app/ActionRunner.hpp"
 #include "firmware/app/BrickConfig.hpp"
-#include "firmware/app/RadioSeam.hpp"
+#include "firmware/app/PathFollower.hpp"
 #include "firmware/app/Screen.hpp"
 #include "firmware/board/Aic.hpp"
 #include "firmware/board/Mmio.hpp"
@@ -19,12 +21,17 @@
 
 namespace nxtmap::fw {
 
-// The brick application: owns every driver and the explorer, runs the main loop, and serves the
-// interrupts (each ISR in main.cpp calls one on*() member). One static instance.
+static_assert(BrickExplorerStorage::kWidth() == 64 && BrickExplorerStorage::kHeight() == 64,
+              "the brick's RAM budget (make size) is measured with a 64 x 64-cell room grid");
+
+// The brick application: owns every driver, the explorer with its pilot, and the radio link;
+// runs the main loop and serves the interrupts (each ISR in main.cpp calls one on*() member).
+// Commands come from the buttons (Enter: explore with the published method, Right: explore with
+// the frontier explorer, Exit: stop, Left: new room) and from the PC (protocol::Command).
 class BrickApp {
  public:
-  enum class Mode : uint8_t { Idle, Exploring, Done, Fault };
   enum class Strategy : uint8_t { Propagation, Frontier };
+  using Mode = protocol::BrickMode;
 
   BrickApp();
   BrickApp(const BrickApp&) = delete;
@@ -45,23 +52,24 @@ class BrickApp {
   // link alive so the motors stay stopped).
   [[noreturn]] void checkFailed(const char* file, int line, const char* what);
 
-  // Commands (from the buttons or the radio).
-  void startExploring(Strategy s);
-  void stop();
-  void newRoom();
-
-  Mode mode() const { return mode_; }
-  const Explorer* explorer() const { return explorer_; }
-
  private:
   void loopOnce();
-  void driveExplorer(uint32_t now);
+  void serveRadio(uint32_t now);
+  void carryOut(const protocol::Command& c, uint32_t now);
+  void startExploring(Strategy s, uint32_t now);
+  void followPath(const protocol::PathMsg& path, uint32_t now);
+  void takeMapChunk(const protocol::MapChunkMsg& chunk);
+  void stop();
+  void newRoom();
+  void driveRobot(uint32_t now);
   void driveMotors();
   void readButtons(uint32_t now);
   void startSonarClock();
   void draw(uint32_t now);
+  void drawMapPages();
+  Pose pose() const;
+  protocol::BrickReport report() const;
   ActionRunner::Wheels wheels() const;
-  Action feed(const Event& e);
 
   Mmio bus_{};
   BrickConfig config_{};
@@ -76,7 +84,6 @@ class BrickApp {
   MotionController motion_{};
   MotorSafety safety_{};
   BlueCore<Mmio> bt_{bus_};
-  RadioSeam radio_{};
   Screen::Frame frame_ = {};
   Lcd<Mmio> lcd_{bus_, frame_};
   Screen screen_{frame_};
@@ -85,18 +92,29 @@ class BrickApp {
   MapLayers map_;
   TravelPlanner planner_;
   ExplorerConfig explorerConfig_;
+  uint8_t shadow_[packedBytes(BrickExplorerStorage::kWidth(), BrickExplorerStorage::kHeight(), 2)] = {};
+  protocol::BrickLink link_;
   alignas(PropagationExplorer) alignas(FrontierExplorer) uint8_t explorerBuf_[
       sizeof(PropagationExplorer) > sizeof(FrontierExplorer) ? sizeof(PropagationExplorer)
                                                              : sizeof(FrontierExplorer)];
+  alignas(Pilot) uint8_t pilotBuf_[sizeof(Pilot)];
   Explorer* explorer_ = nullptr;
+  Pilot* pilot_ = nullptr;
   ActionRunner runner_;
+  PathFollower follower_{};
+  DriveAction pending_{};  // the action being carried out
+  Pose restPose_{};  // where the robot stands when neither the explorer nor a path moved it last
+  bool poseFromPath_ = false;
 
   volatile uint32_t ms_ = 0;
   Mode mode_ = Mode::Idle;
+  uint16_t roomId_ = 0;
   Button lastButton_ = Button::None;
   Button candidate_ = Button::None;
   uint32_t candidateSince_ = 0;
-  uint32_t lastDrawMs_ = 0;
+  uint32_t lastDrawMs_ = 0, lastMapDrawMs_ = 0;
+  bool mapDirty_ = true;
+  int8_t mapPage_ = -1;  // next map band to draw, -1 = none pending
   bool blink_ = false;
 };
 

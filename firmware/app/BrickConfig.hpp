@@ -6,21 +6,32 @@
 
 namespace nxtmap::fw {
 
-// The robot as built: which port holds what, and its dimensions. One place to change.
+// The robot as built: which port holds what, its dimensions and the sensor range it trusts.
+// One place to change. The NXTMAP_SIM_GEOMETRY build (nxtmap-sim.elf) uses the simulator's
+// published-experiment geometry instead (10 cm cells, 5 cm - 1 m, sensors at the centre), so an
+// emulated run can be compared cell by cell with the host's MappingRun.
 struct BrickConfig {
   // Sensor port (0 = port 1) of each Sensor (Front, Right, Back, Left).
   uint8_t sensorPorts[4] = {0, 1, 2, 3};
   // Output (0 = A) of each wheel; positive power drives forward.
   uint8_t leftMotor = 0;
   uint8_t rightMotor = 1;
+#if defined(NXTMAP_SIM_GEOMETRY)
+  MotionGeometry drive{56, 112, 100, 360};  // 10 cm cells
+  int16_t minCm = 5, maxCm = 100, mountCm = 0;
+#else
   MotionGeometry drive{};  // 56 mm wheels, 112 mm track, 200 mm cells
+  int16_t minCm = 7;       // the LEGO sensor is unreliable closer than this
+  int16_t maxCm = 120;     // and beyond this
+  int16_t mountCm = 6;     // sensor faces ahead of the robot's centre
+#endif
 
   ExplorerConfig explorer() const {
     ExplorerConfig c;
     c.geometry.cellCm = static_cast<int16_t>(drive.cellMm / 10);
-    c.geometry.minCm = 7;     // the LEGO sensor is unreliable closer than this
-    c.geometry.maxCm = 120;   // and beyond this
-    c.geometry.mountCm = 6;   // sensor faces ahead of the robot's centre
+    c.geometry.minCm = minCm;
+    c.geometry.maxCm = maxCm;
+    c.geometry.mountCm = mountCm;
     return c;
   }
 };

@@ -59,29 +59,47 @@ class Screen {
 
   // The room map: the grid's window (or the robot's neighbourhood while empty), north up.
   void drawMap(const RoomGrid& grid, Cell robot, Dir heading, bool blinkOn) {
+    for (int page = 0; page < kMapSize / 8; ++page) drawMapPage(grid, robot, heading, blinkOn, page);
+  }
+  // One 8-row band of the map (page 0..7), so a redraw can be spread over several loop passes;
+  // the robot and the separator column are drawn with the band that holds them.
+  void drawMapPage(const RoomGrid& grid, Cell robot, Dir heading, bool blinkOn, int page) {
     const Bounds w = grid.window();
-    const int16_t minX = w.empty() ? static_cast<int16_t>(robot.x - kMapSize / 2) : w.minX;
-    const int16_t minY = w.empty() ? static_cast<int16_t>(robot.y - kMapSize / 2) : w.minY;
-    for (int py = 0; py < kMapSize; ++py) {
-      for (int px = 0; px < kMapSize; ++px) {
+    const int16_t minX = originX(w, robot), minY = originY(w, robot);
+    for (int px = 0; px < kMapSize; ++px) {
+      uint8_t column = 0;
+      for (int bit = 0; bit < 8; ++bit) {
+        const int py = page * 8 + bit;
         const Cell c{static_cast<int16_t>(minX + px), static_cast<int16_t>(minY + (kMapSize - 1 - py))};
-        bool dark = false;
-        if (w.contains(c)) {
-          const CellState s = grid.at(c);
-          dark = s == CellState::Occupied || (s == CellState::Unknown && (px & 1) == 0 && (py & 1) == 0);
-        }
-        pixel(px, py, dark);
+        if (!w.contains(c)) continue;
+        const CellState st = grid.at(c);
+        if (st == CellState::Occupied || (st == CellState::Unknown && (px & 1) == 0 && (py & 1) == 0))
+          column = static_cast<uint8_t>(column | (1u << bit));
       }
+      f_[page][px] = column;
     }
+    f_[page][kMapSize] = 0xFF;  // separator
     const int rx = robot.x - minX, ry = kMapSize - 1 - (robot.y - minY);
-    if (rx >= 0 && rx < kMapSize && ry >= 0 && ry < kMapSize) {
-      pixel(rx, ry, blinkOn);
-      pixel(rx + dx(heading), ry - dy(heading), true);
-    }
-    for (int y = 0; y < kHeight; ++y) pixel(kMapSize, y, true);  // separator
+    if (rx < 0 || rx >= kMapSize || ry < 0 || ry >= kMapSize) return;
+    if (ry / 8 == page) pixel(rx, ry, blinkOn);
+    const int hx = rx + dx(heading), hy = ry - dy(heading);
+    if (hx >= 0 && hx < kMapSize && hy >= 0 && hy / 8 == page) pixel(hx, hy, true);
+  }
+  // Only the robot's blinking pixel (cheap; between map redraws).
+  void drawRobot(const RoomGrid& grid, Cell robot, bool blinkOn) {
+    const Bounds w = grid.window();
+    const int rx = robot.x - originX(w, robot), ry = kMapSize - 1 - (robot.y - originY(w, robot));
+    if (rx >= 0 && rx < kMapSize && ry >= 0 && ry < kMapSize) pixel(rx, ry, blinkOn);
   }
 
  private:
+  static int16_t originX(const Bounds& w, Cell robot) {
+    return w.empty() ? static_cast<int16_t>(robot.x - kMapSize / 2) : w.minX;
+  }
+  static int16_t originY(const Bounds& w, Cell robot) {
+    return w.empty() ? static_cast<int16_t>(robot.y - kMapSize / 2) : w.minY;
+  }
+
   Frame& f_;
 };
 

@@ -7,7 +7,7 @@ namespace nxtmap::fw::reg {
 
 // Peripheral identifiers (AIC source numbers, PMC_PCER bits).
 enum PeripheralId : uint32_t {
-  kIdSys = 1, kIdPioa = 2, kIdSpi = 5, kIdUsart1 = 7, kIdTwi = 9, kIdTc0 = 12,
+  kIdSys = 1, kIdPioa = 2, kIdAdc = 4, kIdSpi = 5, kIdUsart1 = 7, kIdTwi = 9, kIdTc0 = 12,
 };
 
 // AIC

@@ -30,7 +30,7 @@ class BlueCore {
 
   void init(uint32_t mck, uint32_t nowMs) {
     using namespace reg;
-    bus_.write(kPmcPcer, (1u << kIdUsart1) | (1u << kIdPioa));
+    bus_.write(kPmcPcer, (1u << kIdUsart1) | (1u << kIdPioa) | (1u << kIdAdc));
     // Control pins: PA11 reset (low = held in reset), PA27 ARM7_CMD (low = command mode), PA31 CS high.
     bus_.write(kPioPer, kPinBtReset | kPinBtArm7Cmd | kPinBtCs);
     bus_.write(kPioPpudr, kPinBtArm7Cmd);
@@ -99,6 +99,8 @@ class BlueCore {
     return true;
   }
   uint16_t txSpace() const { return tx_.space(); }
+  // Received bytes wait in the ring.
+  bool rxPending() const { return rx_.size() != 0; }
   // Counts stream sessions that ended (the PC must be treated as gone).
   uint32_t linkEpoch() const { return linkEpoch_; }
 

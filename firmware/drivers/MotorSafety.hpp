@@ -9,7 +9,9 @@ namespace nxtmap::fw {
 // quiet, so the ARM must stop them itself: the 1 ms tick (which owns the AVR link) calls enforce()
 // on every outgoing command. Motors are forced to 0 % with the brake on while a fault is latched
 // (check failure, encoder fault, AVR link lost while driving) or when the control loop in the main
-// loop has not called feed() for kSilenceMs (it hung or stalls). A latched fault stays until clear().
+// loop has not called feed() for kSilenceMs while a motor is driven (it hung or stalls with the
+// wheels turning; a long explorer decision with the motors at rest is not a fault). A latched fault
+// stays until clear().
 class MotorSafety {
  public:
   enum class Reason : uint8_t { None, Check, Encoder, AvrLink, ControlSilent };
@@ -25,10 +27,11 @@ class MotorSafety {
   Reason reason() const { return reason_; }
   bool tripped() const { return reason_ != Reason::None; }
 
-  // 1 ms tick: latches ControlSilent when the loop went quiet, then zeroes and brakes the motors of
-  // `cmd` if anything is latched. Returns true when the motors were forced off.
+  // 1 ms tick: latches ControlSilent when the loop went quiet with a motor driven, then zeroes and
+  // brakes the motors of `cmd` if anything is latched. Returns true when the motors were forced off.
   bool enforce(AvrCommand& cmd, uint32_t nowMs) {
-    if (fed_ && nowMs - lastFeedMs_ > kSilenceMs) trip(Reason::ControlSilent);
+    const bool driven = cmd.pwm[0] != 0 || cmd.pwm[1] != 0 || cmd.pwm[2] != 0 || cmd.pwm[3] != 0;
+    if (fed_ && driven && nowMs - lastFeedMs_ > kSilenceMs) trip(Reason::ControlSilent);
     if (!tripped()) return false;
     for (int m = 0; m < 4; ++m) cmd.pwm[m] = 0;
     cmd.brakeMask = 0x07;

@@ -51,7 +51,7 @@ mapping::RunConfig scenarioConfig(const report::Scenario& s, mapping::Strategy s
 
 report::RunResult resultOf(const mapping::MappingRun& run) {
   const mapping::MapScore s = mapping::scoreRun(run);
-  const Counters& c = run.counters();
+  const Counters c = run.counters();
   report::RunResult r;
   r.actualFree = s.actualFree;
   r.foundFree = s.foundFree;

@@ -4,12 +4,14 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <thread>
 
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
+#include "host/mapio/MapFiles.hpp"
 #include "host/mapping/MapScore.hpp"
 #include "host/mapping/MappingRun.hpp"
 #include "host/report/ExperimentTable.hpp"
@@ -39,7 +41,7 @@ const char* endName(ExplorerEnd e) {
 
 std::string statusLine(const mapping::MappingRun& run) {
   std::ostringstream o;
-  const Counters& c = run.counters();
+  const Counters c = run.counters();
   o << mapping::strategyName(run.config().strategy);
   if (const PropagationExplorer* p = run.propagation()) {
     o << " | ";
@@ -59,6 +61,20 @@ std::string statusLine(const mapping::MappingRun& run) {
   o << " | time " << report::formatNumber(c.timeHalfUnits() / 2.0, 1) << " | sensor reads " << c.sensorRequests
     << " | cells " << c.cellsMoved;
   return o.str();
+}
+
+// The run's belief over the whole world, in the world's frame (same size, resolution, origin 0).
+mapio::OccupancyMap exploredMap(const mapping::MappingRun& run) {
+  const sim::World& w = run.world();
+  mapio::OccupancyMap map(w.width(), w.height(), mapio::Occupancy::Unknown, w.resolutionM());
+  for (int r = 0; r < w.height(); ++r) {
+    for (int c = 0; c < w.width(); ++c) {
+      const CellState s = run.belief(c, r);
+      if (s == CellState::Free) map.set(c, r, mapio::Occupancy::Free);
+      if (s == CellState::Occupied) map.set(c, r, mapio::Occupancy::Occupied);
+    }
+  }
+  return map;
 }
 
 void drawFrame(const mapping::MappingRun& run, const report::MapTextOptions& textOptions, bool first) {
@@ -81,6 +97,7 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
   sim->add_option("--strategy", o.strategy, "exploration strategy: propagation, frontier (default propagation)");
   sim->add_option("--show", o.show, "display: live, final, none (default final)");
   sim->add_option("--delay-ms", o.delayMs, "live mode: delay per frame in ms (default 30)");
+  sim->add_option("--save", o.save, "save the explored map as ROS map_server FILE.yaml + FILE.pgm (world frame)");
   sim->add_option("--png", o.png, "write a PNG of the final map (missed obstacles light red, wrong cells orange)");
   return sim;
 }
@@ -99,6 +116,10 @@ int runSim(const SimOptions& o) {
   if (o.delayMs < 0 || o.delayMs > 10000) {
     throw CliError("--delay-ms must lie in 0..10000, not " + std::to_string(o.delayMs));
   }
+  if (!o.save.empty()) {
+    const std::string ext = std::filesystem::path(o.save).extension().string();
+    if (ext != ".yaml" && ext != ".yml") throw CliError("--save must name a .yaml file, not '" + o.save + "'");
+  }
   const sim::World world = loadWorld(o.world);
   checkStart(world, config.startCol, config.startRow, "");
 
@@ -108,10 +129,11 @@ int runSim(const SimOptions& o) {
   if (show == Show::Live) {
     drawFrame(run, textOptions, true);
     while (!run.finished()) {
-      const Action::Kind kind = run.lastAction().kind;
+      const DriveAction done = run.lastAction();
       run.step();
-      // Redraw when the robot moved or turned (reads alone would make the display crawl).
-      if (kind == Action::Kind::Move || kind == Action::Kind::Turn || run.finished()) {
+      // Redraw when the robot moved or turned (reads and steering alone would make the display crawl).
+      const bool turned = done.kind == DriveAction::Kind::Rotate && (done.value > 700 || done.value < -700);
+      if (done.kind == DriveAction::Kind::Drive || turned || run.finished()) {
         drawFrame(run, textOptions, false);
         if (o.delayMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(o.delayMs));
       }
@@ -123,7 +145,7 @@ int runSim(const SimOptions& o) {
     }
   }
 
-  const Counters& c = run.counters();
+  const Counters c = run.counters();
   const mapping::MapScore s = mapping::scoreRun(run);
   auto num = [](double v) { return report::formatNumber(v, 1); };
   std::ostringstream out;
@@ -151,6 +173,11 @@ int runSim(const SimOptions& o) {
     std::string error;
     if (!report::writeMapPng(o.png, run, report::MapImageOptions{}, error)) throw CliError(error);
     std::cout << "wrote " << o.png << "\n";
+  }
+  if (!o.save.empty()) {
+    std::string error;
+    if (!mapio::saveRosMap(exploredMap(run), o.save, error)) throw CliError(error);
+    std::cout << "wrote " << o.save << " and " << mapio::pgmNameFor(o.save) << "\n";
   }
   return kExitOk;
 }

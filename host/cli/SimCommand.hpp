@@ -21,6 +21,7 @@ struct SimOptions {
   std::string show = "final";  // live | final | none
   int delayMs = 30;            // live frame delay
   std::string png;             // optional PNG of the final map
+  std::string save;            // optional ROS map_server YAML (+PGM) of the explored map, world frame
 };
 
 // Registers the subcommand; the options are filled in by CLI11.

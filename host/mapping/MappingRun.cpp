@@ -1,5 +1,6 @@
 #include "host/mapping/MappingRun.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace nxtmap::mapping {
@@ -10,6 +11,11 @@ ExplorerConfig explorerConfigFor(const sim::World& world, const RunConfig& c) {
   e.geometry.minCm = static_cast<int16_t>(std::lround(c.minRangeM * 100.0));
   e.geometry.maxCm = static_cast<int16_t>(std::lround(c.rangeM * 100.0));
   e.geometry.mountCm = 0;
+  const double beam = c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.coneHalfAngleDeg;
+  if (beam > 0.0) {
+    const double sure = 0.5 * e.geometry.cellCm / std::tan(beam * 3.141592653589793 / 180.0) - e.geometry.mountCm;
+    if (sure < e.geometry.maxCm) e.geometry.sureCm = static_cast<int16_t>(std::max(e.geometry.minCm + 1.0, std::floor(sure)));
+  }
   return e;
 }
 }  // namespace
@@ -21,8 +27,7 @@ MappingRun::MappingRun(const sim::World& world, const RunConfig& config)
       frame_(config.startCol, config.startRow, config.heading),
       robot_(world, config.startCol, config.startRow, config.heading, config.noise, config.seed,
              config.sensorReachCm, 0.0),
-      storage_(std::make_unique<Storage>()),
-      filter_(explorerConfig_.geometry) {
+      storage_(std::make_unique<Storage>()) {
   map_ = std::make_unique<MapLayers>(storage_->map.view(), Storage::kWidth(), Storage::kHeight());
   planner_ = std::make_unique<TravelPlanner>(storage_->travel.view(), Storage::kWidth(), Storage::kHeight());
   if (config.strategy == Strategy::Propagation) {
@@ -32,40 +37,40 @@ MappingRun::MappingRun(const sim::World& world, const RunConfig& config)
     frontier_ = std::make_unique<FrontierExplorer>(*map_, *planner_, explorerConfig_);
     explorer_ = frontier_.get();
   }
-  last_ = explorer_->step(Event::start());
+  PilotConfig pilot;
+  pilot.correct = config.poseCorrection;
+  pilot_ = std::make_unique<Pilot>(*explorer_, pilot);
+  last_ = pilot_->step(DriveEvent::start());
 }
 
 MappingRun::~MappingRun() = default;
 
 const PropagationExplorer* MappingRun::propagation() const { return propagation_.get(); }
 
-Event MappingRun::carryOut(const Action& a) {
+DriveEvent MappingRun::carryOut(const DriveAction& a) {
   switch (a.kind) {
-    case Action::Kind::Read: {
-      filter_.reset();
-      while (!filter_.done()) {
-        filter_.add(static_cast<uint8_t>(robot_.ping(static_cast<int>(a.sensor))));
+    case DriveAction::Kind::Read: {
+      RangeFilter filter(explorerConfig_.geometry);
+      while (!filter.done()) {
+        filter.add(static_cast<uint8_t>(robot_.ping(static_cast<int>(a.sensor))));
       }
-      return Event::range(a.sensor, filter_.result());
+      return DriveEvent::range(a.sensor, filter.result());
     }
-    case Action::Kind::Move: {
-      const sim::MoveResult r = robot_.move(a.amount);
-      if (r.blocked) return Event::blocked();
-      return Event::moved(static_cast<int8_t>(r.cellsMoved));
-    }
-    case Action::Kind::Turn:
-      robot_.turn(a.amount);
-      return Event::turned(a.amount);
-    case Action::Kind::Done:
+    case DriveAction::Kind::Rotate:
+      robot_.rotate(a.value * (180.0 / 3141.592653589793));
+      return DriveEvent::rotated();
+    case DriveAction::Kind::Drive:
+      return DriveEvent::driven(!robot_.drive(a.value / 10.0));
+    case DriveAction::Kind::Done:
       break;
   }
-  return Event::start();
+  return DriveEvent::start();
 }
 
 bool MappingRun::step() {
-  if (explorer_->finished()) return false;
-  last_ = explorer_->step(carryOut(last_));
-  return !explorer_->finished();
+  if (pilot_->finished()) return false;
+  last_ = pilot_->step(carryOut(last_));
+  return !pilot_->finished();
 }
 
 uint64_t MappingRun::runToEnd() {

@@ -6,6 +6,7 @@
 #include "common/explore/ExplorerStorage.hpp"
 #include "common/explore/FrontierExplorer.hpp"
 #include "common/explore/PropagationExplorer.hpp"
+#include "common/motion/Pilot.hpp"
 #include "common/sensing/RangeFilter.hpp"
 #include "host/mapping/FrameTransform.hpp"
 #include "host/mapping/Strategy.hpp"
@@ -24,10 +25,12 @@ struct RunConfig {
   sim::NoiseProfile noise;                // see sim::noiseProfileByName
   uint64_t seed = 1;
   Strategy strategy = Strategy::Propagation;
+  double beamHalfAngleDeg = -1.0;         // the robot's sonar beam, known to it (< 0: the noise profile's cone)
+  bool poseCorrection = true;             // the pilot keeps the robot on the grid (off: dead reckoning)
 };
 
-// One mapping run: the common core's explorer driven by the simulated robot, exactly as the
-// firmware drives it with the real drivers (read -> filter samples -> event, move, turn).
+// One mapping run: the common core's explorer and pilot driven by the simulated robot, exactly as
+// the firmware drives them with the real drivers (read -> filter samples -> event, rotate, drive).
 class MappingRun {
  public:
   // Host capacity: rooms up to 128 x 128 cells.
@@ -43,9 +46,10 @@ class MappingRun {
 
   const Explorer& explorer() const { return *explorer_; }
   const PropagationExplorer* propagation() const;
-  const Counters& counters() const { return explorer_->counters(); }
-  bool finished() const { return explorer_->finished(); }
-  const Action& lastAction() const { return last_; }
+  Counters counters() const { return pilot_->counters(); }
+  bool finished() const { return pilot_->finished(); }
+  const DriveAction& lastAction() const { return last_; }
+  const Pilot& pilot() const { return *pilot_; }
   const sim::SimRobot& robot() const { return robot_; }
   const sim::World& world() const { return world_; }
   const RunConfig& config() const { return config_; }
@@ -59,7 +63,7 @@ class MappingRun {
   sim::Heading believedHeading() const;
 
  private:
-  Event carryOut(const Action& a);
+  DriveEvent carryOut(const DriveAction& a);
 
   const sim::World& world_;
   RunConfig config_;
@@ -72,8 +76,8 @@ class MappingRun {
   std::unique_ptr<PropagationExplorer> propagation_;
   std::unique_ptr<FrontierExplorer> frontier_;
   Explorer* explorer_ = nullptr;
-  RangeFilter filter_;
-  Action last_;
+  std::unique_ptr<Pilot> pilot_;
+  DriveAction last_;
 };
 
 }  // namespace nxtmap::mapping

@@ -112,6 +112,28 @@ bool SimRobot::setPose(double xCm, double yCm, double headingDeg) {
     return true;
 }
 
+void SimRobot::rotate(double deg) {
+    const double scale = std::max(0.25, std::abs(deg) / 90.0);
+    setHeading(heading_ + deg + gaussian(noise_.turnSigmaDeg * scale));
+}
+
+bool SimRobot::drive(double cm) {
+    const double dist = cm * (1.0 + gaussian(noise_.slipSigma));
+    double dx = 0.0;
+    double dy = 0.0;
+    directionVector(heading_, dx, dy);
+    const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(dist))));  // 1 cm or finer
+    for (int i = 1; i <= steps; ++i) {
+        const double f = dist * i / steps;
+        const int c = static_cast<int>(std::floor((x_ + f * dx) / cellCm_));
+        const int r = static_cast<int>(std::floor((y_ + f * dy) / cellCm_));
+        if (world_->blocked(c, r)) return false;
+    }
+    x_ += dist * dx;
+    y_ += dist * dy;
+    return true;
+}
+
 void SimRobot::turn(int eighths) { setHeading(heading_ + 45.0 * eighths + gaussian(noise_.turnSigmaDeg)); }
 
 }  // namespace nxtmap::sim

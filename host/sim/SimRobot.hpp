@@ -37,6 +37,12 @@ public:
     // Continuous motion (the emulated brick's wheels): puts the centre at (xCm, yCm) facing headingDeg,
     // unless that point lies in a blocked cell; then returns false and the pose is unchanged.
     bool setPose(double xCm, double yCm, double headingDeg);
+    // Turns in place by any angle, + = clockwise. The error grows with the angle: turnSigmaDeg per
+    // 90 degrees, with a floor of a quarter of it for small corrections (backlash, wheel scrub).
+    void rotate(double deg);
+    // Drives straight by cm (+ forward, - backward) with slip. If the centre would enter a blocked
+    // cell on the way, the wheels stall and the robot backs off to where it started: returns false.
+    bool drive(double cm);
 
     double xCm() const { return x_; }
     double yCm() const { return y_; }

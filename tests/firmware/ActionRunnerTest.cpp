@@ -25,9 +25,9 @@ struct Robot {
   Robot() { sonar.powered(0); }
   ActionRunner::Wheels wheels() const { return {count[0], count[1]}; }
   // Runs until the runner answers; returns the event.
-  Event carryOut(const Action& a, uint32_t limitMs = 20000) {
+  DriveEvent carryOut(const DriveAction& a, uint32_t limitMs = 20000) {
     runner.begin(a, wheels(), now);
-    Event e;
+    DriveEvent e;
     for (uint32_t i = 0; i < limitMs; ++i, ++now) {
       if (runner.poll(wheels(), now, e)) return e;
       for (int w = 0; w < 2; ++w) {
@@ -45,48 +45,83 @@ struct Robot {
   }
 };
 
-TEST(ActionRunner, MoveOneCellForwardAndBack) {
+TEST(ActionRunner, DriveOneCellForwardAndBack) {
   Robot r;
-  Event e = r.carryOut(Action::move(1));
-  EXPECT_EQ(e.kind, Event::Kind::Moved);
-  EXPECT_EQ(e.amount, 1);
+  DriveEvent e = r.carryOut(DriveAction::drive(200));
+  EXPECT_EQ(e.kind, DriveEvent::Kind::Driven);
+  EXPECT_FALSE(e.blocked);
   EXPECT_NEAR(r.count[0], 409, 3);
   EXPECT_NEAR(r.count[1], 409, 3);
-  e = r.carryOut(Action::move(-1));
-  EXPECT_EQ(e.kind, Event::Kind::Moved);
-  EXPECT_EQ(e.amount, -1);
+  e = r.carryOut(DriveAction::drive(-200));
+  EXPECT_EQ(e.kind, DriveEvent::Kind::Driven);
   EXPECT_NEAR(r.count[0], 0, 3);
   EXPECT_EQ(r.runner.power(0), 0);
 }
 
-TEST(ActionRunner, TurnsSpinTheWheelsOppositeWays) {
+TEST(ActionRunner, RotationsSpinTheWheelsOppositeWays) {
   Robot r;
-  Event e = r.carryOut(Action::turn(2));
-  EXPECT_EQ(e.kind, Event::Kind::Turned);
-  EXPECT_EQ(e.amount, 2);
+  DriveEvent e = r.carryOut(DriveAction::rotate(1571));  // 90 deg clockwise
+  EXPECT_EQ(e.kind, DriveEvent::Kind::Rotated);
   EXPECT_NEAR(r.count[0], 180, 3);
   EXPECT_NEAR(r.count[1], -180, 3);
-  e = r.carryOut(Action::turn(-1));
+  e = r.carryOut(DriveAction::rotate(-785));
   EXPECT_NEAR(r.count[0], 90, 3);
   EXPECT_NEAR(r.count[1], -90, 3);
-  EXPECT_EQ(r.runner.failedTurns(), 0u);
+  EXPECT_EQ(r.runner.failedRotations(), 0u);
 }
 
-TEST(ActionRunner, ABlockedMoveReturnsToItsStartAndAnswersBlocked) {
+TEST(ActionRunner, ABlockedDriveReturnsToItsStartAndSaysSo) {
   Robot r;
   r.wallAt = 150;
-  const Event e = r.carryOut(Action::move(1));
-  EXPECT_EQ(e.kind, Event::Kind::Blocked);
+  const DriveEvent e = r.carryOut(DriveAction::drive(200));
+  EXPECT_EQ(e.kind, DriveEvent::Kind::Driven);
+  EXPECT_TRUE(e.blocked);
   EXPECT_NEAR(r.count[0], 0, 3);  // back where the move began
   EXPECT_NEAR(r.count[1], 0, 3);
+}
+
+TEST(ActionRunner, AStoppedDriveResumesToItsOriginalTarget) {
+  Robot r;
+  r.runner.begin(DriveAction::drive(200), r.wheels(), r.now);
+  DriveEvent e;
+  // Drive part of the way, then stop.
+  for (int i = 0; i < 2000 && r.count[0] < 150; ++i, ++r.now) {
+    ASSERT_FALSE(r.runner.poll(r.wheels(), r.now, e));
+    for (int w = 0; w < 2; ++w) {
+      r.acc[w] += r.runner.power(w) * 8;
+      r.count[w] += r.acc[w] / 1000;
+      r.acc[w] %= 1000;
+    }
+  }
+  r.runner.abort();
+  EXPECT_EQ(r.runner.power(0), 0);
+  EXPECT_FALSE(r.runner.busy());
+  const int32_t stoppedAt = r.count[0];
+  EXPECT_GE(stoppedAt, 150);
+  ASSERT_TRUE(r.runner.resume(r.wheels(), r.now));
+  bool done = false;
+  for (int i = 0; i < 20000 && !done; ++i, ++r.now) {
+    done = r.runner.poll(r.wheels(), r.now, e);
+    for (int w = 0; w < 2; ++w) {
+      r.acc[w] += r.runner.power(w) * 8;
+      r.count[w] += r.acc[w] / 1000;
+      r.acc[w] %= 1000;
+    }
+  }
+  ASSERT_TRUE(done);
+  EXPECT_EQ(e.kind, DriveEvent::Kind::Driven);
+  EXPECT_FALSE(e.blocked);
+  EXPECT_NEAR(r.count[0], 409, 3);  // one cell in all, not 150 + one cell
+  EXPECT_NEAR(r.count[1], 409, 3);
+  EXPECT_FALSE(r.runner.resume(r.wheels(), r.now));  // nothing left to resume
 }
 
 TEST(ActionRunner, AReadFiltersSamplesOfTheSensorsPort) {
   Robot r;
   r.sensors[3].regs[0x42] = 55;  // Left = port 4
   r.sensors[0].regs[0x42] = 200;
-  const Event e = r.carryOut(Action::read(Sensor::Left));
-  ASSERT_EQ(e.kind, Event::Kind::Range);
+  const DriveEvent e = r.carryOut(DriveAction::read(Sensor::Left));
+  ASSERT_EQ(e.kind, DriveEvent::Kind::Range);
   EXPECT_EQ(e.sensor, Sensor::Left);
   EXPECT_EQ(e.reading.status, RangeStatus::Good);
   EXPECT_EQ(e.reading.cm, 55);
@@ -98,8 +133,8 @@ TEST(ActionRunner, AReadFiltersSamplesOfTheSensorsPort) {
 TEST(ActionRunner, ASilentSensorGivesNoEcho) {
   Robot r;
   for (auto& s : r.sensors) s.present = false;
-  const Event e = r.carryOut(Action::read(Sensor::Front));
-  ASSERT_EQ(e.kind, Event::Kind::Range);
+  const DriveEvent e = r.carryOut(DriveAction::read(Sensor::Front));
+  ASSERT_EQ(e.kind, DriveEvent::Kind::Range);
   EXPECT_EQ(e.reading.status, RangeStatus::NoEcho);
 }
 

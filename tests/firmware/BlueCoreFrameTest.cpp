@@ -1,10 +1,8 @@
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <vector>
 
 #include "firmware/drivers/BlueCoreFrame.hpp"
-#include "firmware/drivers/StreamFramer.hpp"
 
 namespace nxtmap::fw {
 namespace {
@@ -64,36 +62,6 @@ TEST(BlueCoreFrame, ImplausibleLengthBytesAreSkipped) {
   EXPECT_TRUE(done);
   EXPECT_EQ(p.code(), bc::kResetIndication);
   EXPECT_EQ(p.badMessages(), 3u);
-}
-
-TEST(StreamFramer, TwoByteLittleEndianLengthBeforeEachTelegram) {
-  const uint8_t telegram[] = {0x80, 0x09, 0x00, 0x03, 'h', 'i', 0};
-  uint8_t out[kStreamMaxTelegram + 2];
-  ASSERT_EQ(encodeStreamFrame(telegram, 7, out), 9);
-  EXPECT_EQ(out[0], 7);
-  EXPECT_EQ(out[1], 0);
-  StreamDecoder d;
-  int complete = 0;
-  for (int i = 0; i < 9; ++i) complete += d.push(out[i]) ? 1 : 0;
-  EXPECT_EQ(complete, 1);
-  ASSERT_EQ(d.length(), 7);
-  EXPECT_EQ(0, std::memcmp(d.telegram(), telegram, 7));
-}
-
-TEST(StreamFramer, OversizedTelegramsAreSkippedWhole) {
-  StreamDecoder d;
-  const uint16_t big = kStreamMaxTelegram + 10;
-  EXPECT_FALSE(d.push(static_cast<uint8_t>(big & 0xFF)));
-  EXPECT_FALSE(d.push(static_cast<uint8_t>(big >> 8)));
-  for (int i = 0; i < big; ++i) EXPECT_FALSE(d.push(0x55));
-  EXPECT_EQ(d.oversized(), 1u);
-  // The next telegram decodes normally.
-  EXPECT_FALSE(d.push(1));
-  EXPECT_FALSE(d.push(0));
-  EXPECT_TRUE(d.push(0x42));
-  EXPECT_EQ(d.telegram()[0], 0x42);
-  uint8_t out[4];
-  EXPECT_EQ(encodeStreamFrame(out, 0, out), 0);
 }
 
 }  // namespace

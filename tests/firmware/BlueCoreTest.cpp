@@ -92,6 +92,8 @@ TEST(BlueCore, UartSetupUsesHardwareHandshakeAndLeavesPa23Alone) {
   EXPECT_EQ(m.bus.regs[kUs1Brgr], 13u);
   for (uint32_t v : m.bus.writesTo(kPioPdr)) EXPECT_EQ(v & pin(23), 0u);
   EXPECT_EQ(m.bus.regs[kPioPdr], kPinBtRxd | kPinBtTxd | kPinBtRts | kPinBtCts);
+  // Clocks for the USART, the PIO and the ADC that reads the module's CMD line.
+  EXPECT_EQ(m.bus.regs[kPmcPcer], (1u << kIdUsart1) | (1u << kIdPioa) | (1u << kIdAdc));
 }
 
 TEST(BlueCore, FromResetToStreamModeOnAnIncomingConnection) {

@@ -40,6 +40,18 @@ TEST(MotorSafety, SilenceOfTheControlLoopStopsAndBrakesTheMotors) {
   EXPECT_EQ(c.inputPower, 0xF0);  // the sensors keep their supply
 }
 
+TEST(MotorSafety, SilenceWithTheMotorsAtRestIsNoFault) {
+  MotorSafety s;
+  AvrCommand c;  // all motors at 0 %
+  s.feed(100);
+  EXPECT_FALSE(s.enforce(c, 100 + 10 * MotorSafety::kSilenceMs));  // e.g. a long explorer decision
+  EXPECT_FALSE(s.tripped());
+  c.pwm[1] = 40;  // still silent, but now a wheel is driven
+  EXPECT_TRUE(s.enforce(c, 101 + 10 * MotorSafety::kSilenceMs));
+  EXPECT_EQ(s.reason(), MotorSafety::Reason::ControlSilent);
+  EXPECT_EQ(c.pwm[1], 0);
+}
+
 TEST(MotorSafety, AFaultStaysLatchedUntilCleared) {
   MotorSafety s;
   s.trip(MotorSafety::Reason::Encoder);

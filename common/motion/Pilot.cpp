@@ -1,0 +1,185 @@
+#include "common/motion/Pilot.hpp"
+
+#include "common/check/Check.hpp"
+
+namespace nxtmap {
+namespace {
+constexpr int32_t kQuarterMrad = 1571;
+constexpr int32_t abs32(int32_t v) { return v < 0 ? -v : v; }
+constexpr int32_t clamp32(int32_t v, int32_t lim) { return v < -lim ? -lim : (v > lim ? lim : v); }
+// Integer square root of a non-negative 64-bit value.
+int64_t isqrt(int64_t v) {
+  int64_t r = 0;
+  int64_t bit = int64_t{1} << 62;
+  while (bit > v) bit >>= 2;
+  while (bit != 0) {
+    if (v >= r + bit) {
+      v -= r + bit;
+      r = (r >> 1) + bit;
+    } else {
+      r >>= 1;
+    }
+    bit >>= 2;
+  }
+  return r;
+}
+constexpr uint8_t bitOf(Dir d) { return static_cast<uint8_t>(1u << static_cast<int>(d)); }
+}  // namespace
+
+Pilot::Pilot(Explorer& explorer, const PilotConfig& config)
+    : explorer_(explorer),
+      config_(config),
+      tracker_(config.noise),
+      cellMm_(static_cast<int32_t>(explorer.config().geometry.cellCm) * 10) {}
+
+Counters Pilot::counters() const {
+  Counters c = explorer_.counters();
+  c.sensorRequests += poseReads_;
+  c.rawSamples += poseSamples_;
+  c.correctionMrad += correctionMrad_;
+  return c;
+}
+
+bool Pilot::knownWall(Dir d, int32_t& faceMm) const {
+  const MapLayers& map = explorer_.map();
+  const RangeGeometry& g = explorer_.config().geometry;
+  const Cell at = explorer_.pose().cell;
+  for (int16_t k = 1; k <= g.hitCells(); ++k) {
+    const Cell c = advance(at, d, k);
+    const CellState st = map.at(c);
+    if (st == CellState::Free) continue;
+    if (st != CellState::Occupied || map.evidence(c) < config_.minWallEvidence) return false;
+    faceMm = (2 * k - 1) * cellMm_ / 2 - static_cast<int32_t>(g.mountCm) * 10;
+    return true;
+  }
+  return false;
+}
+
+void Pilot::observe(Sensor s, const RangeReading& r) {
+  const Dir d = sensorDir(explorer_.pose().heading, s);
+  readHere_ |= bitOf(d);
+  if (!config_.correct || r.status != RangeStatus::Good) return;
+  int32_t faceMm = 0;
+  if (!knownWall(d, faceMm)) return;
+  (void)tracker_.measure(d, faceMm - static_cast<int32_t>(r.cm) * 10);
+}
+
+bool Pilot::poseReadWanted(Sensor& s) const {
+  const int64_t limit = static_cast<int64_t>(config_.readAboveMm) * config_.readAboveMm;
+  int64_t worst = limit;
+  bool found = false;
+  for (int i = 0; i < kSensorCount; ++i) {
+    const Sensor cand = static_cast<Sensor>(i);
+    const Dir d = sensorDir(explorer_.pose().heading, cand);
+    if (readHere_ & bitOf(d)) continue;
+    const int64_t v = tracker_.varianceAlong(d);
+    int32_t faceMm = 0;
+    if (v > worst && knownWall(d, faceMm)) {
+      worst = v;
+      s = cand;
+      found = true;
+    }
+  }
+  return found;
+}
+
+DriveAction Pilot::begin(const Action& a) {
+  pending_ = a;
+  switch (a.kind) {
+    case Action::Kind::Read:
+      phase_ = Phase::ExplorerRead;
+      return DriveAction::read(a.sensor);
+    case Action::Kind::Turn: {
+      NXTMAP_CHECK(a.amount % 2 == 0);  // explorers keep to the axis grid
+      phase_ = Phase::Turn;
+      commandMrad_ = (a.amount / 2) * kQuarterMrad - (config_.correct ? tracker_.thetaMrad() : 0);
+      return DriveAction::rotate(commandMrad_);
+    }
+    case Action::Kind::Move:
+      return beginMove();
+    case Action::Kind::Done:
+      break;
+  }
+  phase_ = Phase::Done;
+  return DriveAction::done();
+}
+
+DriveAction Pilot::beginMove() {
+  if (!config_.correct) {
+    phase_ = Phase::Drive;
+    driveMm_ = pending_.amount * cellMm_;
+    return DriveAction::drive(driveMm_);
+  }
+  Sensor s;
+  if (poseReadWanted(s)) {
+    phase_ = Phase::PoseRead;
+    return DriveAction::read(s);
+  }
+  // Aim at the centre of the target cell: T = n * cell * f - offset, in (forward, right) parts.
+  const Dir heading = explorer_.pose().heading;
+  const int32_t tf = pending_.amount * cellMm_ - tracker_.along(heading);
+  const int32_t tr = -tracker_.along(rotate(heading, 1));
+  if (tf * pending_.amount <= 0) return driveToCentre();  // the target is behind: nothing to aim at
+  const int32_t want = clamp32(static_cast<int32_t>(static_cast<int64_t>(tr) * 1000 / tf), config_.maxSteerMrad);
+  const int32_t turn = want - tracker_.thetaMrad();
+  if (abs32(turn) >= config_.minRotateMrad) {
+    phase_ = Phase::Steer;
+    commandMrad_ = turn;
+    correctionMrad_ += static_cast<uint32_t>(abs32(turn));
+    return DriveAction::rotate(turn);
+  }
+  return driveToCentre();
+}
+
+DriveAction Pilot::driveToCentre() {
+  const Dir heading = explorer_.pose().heading;
+  const int64_t tf = pending_.amount * cellMm_ - tracker_.along(heading);
+  const int64_t tr = -tracker_.along(rotate(heading, 1));
+  const int32_t length = static_cast<int32_t>(isqrt(tf * tf + tr * tr));
+  phase_ = Phase::Drive;
+  driveMm_ = pending_.amount > 0 ? length : -length;
+  return DriveAction::drive(driveMm_);
+}
+
+DriveAction Pilot::step(const DriveEvent& e) {
+  switch (e.kind) {
+    case DriveEvent::Kind::Start:
+      tracker_.reset();
+      readHere_ = 0;
+      return begin(explorer_.step(Event::start()));
+    case DriveEvent::Kind::Range:
+      observe(e.sensor, e.reading);
+      if (phase_ == Phase::PoseRead) {
+        ++poseReads_;
+        poseSamples_ += e.reading.samples;
+        return beginMove();
+      }
+      if (phase_ == Phase::ExplorerRead) return begin(explorer_.step(Event::range(e.sensor, e.reading)));
+      break;
+    case DriveEvent::Kind::Rotated:
+      if (phase_ == Phase::Steer) {
+        tracker_.rotated(commandMrad_, 0);
+        return driveToCentre();
+      }
+      if (phase_ == Phase::Turn) {
+        tracker_.rotated(commandMrad_, pending_.amount / 2);
+        return begin(explorer_.step(Event::turned(pending_.amount)));
+      }
+      break;
+    case DriveEvent::Kind::Driven:
+      if (phase_ != Phase::Drive) break;
+      if (e.blocked) return begin(explorer_.step(Event::blocked()));
+      {
+        const Dir heading = explorer_.pose().heading;
+        tracker_.drove(driveMm_, heading);
+        tracker_.rebase(heading, pending_.amount, cellMm_);
+        readHere_ = 0;
+      }
+      return begin(explorer_.step(Event::moved(pending_.amount)));
+  }
+  // An event that does not answer the action in progress: a caller's mistake.
+  NXTMAP_CHECK(phase_ == Phase::Done);
+  return DriveAction::done();
+}
+
+}  // namespace nxtmap

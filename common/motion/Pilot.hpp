@@ -1,0 +1,67 @@
+#pragma once
+#include <cstdint>
+
+#include "common/explore/Counters.hpp"
+#include "common/explore/Explorer.hpp"
+#include "common/motion/DriveAction.hpp"
+#include "common/motion/DriveEvent.hpp"
+#include "common/motion/PoseTracker.hpp"
+
+namespace nxtmap {
+
+struct PilotConfig {
+  PoseNoise noise{};
+  bool correct = true;          // false: plain conversion, no steering and no pose readings
+  int32_t readAboveMm = 8;      // read a known wall when the offset along its axis is this uncertain (1 sigma)
+  int32_t maxSteerMrad = 150;   // steering towards the next cell's centre is limited to this
+  int32_t minRotateMrad = 4;    // smaller corrections are not worth a rotation
+  int8_t minWallEvidence = 1;   // a wall cell is "known" for pose readings from this evidence up
+};
+
+// Pilot: between the explorer (cells, quarter turns) and the wheels (mm, mrad). It carries out
+// the explorer's actions while keeping the robot on the cell grid: a PoseTracker follows the
+// robot's real offset and heading error; every echo from a wall the map already knows (cell faces)
+// corrects them; each move steers towards the centre of the next cell and each turn takes the
+// heading error out. When the offset grows uncertain it reads a known wall itself (counted as a
+// sensor request, like every other reading). Never blocks; the explorer is owned by the caller.
+// Limits: the reference is the cell face, so walls off the cell edges bias the offset (up to half
+// a cell), and in open space with no known wall in range the heading still drifts.
+class Pilot {
+ public:
+  Pilot(Explorer& explorer, const PilotConfig& config);
+  Pilot(const Pilot&) = delete;
+  Pilot& operator=(const Pilot&) = delete;
+
+  // Feeds one event (DriveEvent::start() first) and returns what to do next.
+  DriveAction step(const DriveEvent& e);
+  bool finished() const { return phase_ == Phase::Done; }
+
+  // The explorer's counters plus the pilot's own pose readings and correction rotations.
+  Counters counters() const;
+  const PoseTracker& tracker() const { return tracker_; }
+  const Explorer& explorer() const { return explorer_; }
+  uint32_t poseReadings() const { return poseReads_; }
+
+ private:
+  enum class Phase : uint8_t { Idle, ExplorerRead, PoseRead, Turn, Steer, Drive, Done };
+
+  DriveAction begin(const Action& a);
+  DriveAction beginMove();
+  DriveAction driveToCentre();
+  bool knownWall(Dir d, int32_t& faceMm) const;
+  bool poseReadWanted(Sensor& s) const;
+  void observe(Sensor s, const RangeReading& r);
+
+  Explorer& explorer_;
+  PilotConfig config_;
+  PoseTracker tracker_;
+  int32_t cellMm_;
+  Phase phase_ = Phase::Idle;
+  Action pending_;            // the explorer's action being carried out
+  int32_t commandMrad_ = 0;   // rotation in progress
+  int32_t driveMm_ = 0;       // drive in progress
+  uint8_t readHere_ = 0;      // bit per Dir: read since the robot last moved
+  uint32_t poseReads_ = 0, poseSamples_ = 0, correctionMrad_ = 0;
+};
+
+}  // namespace nxtmap

@@ -1,0 +1,89 @@
+#include "common/motion/PoseTracker.hpp"
+
+namespace nxtmap {
+namespace {
+constexpr int64_t kQuarterMrad = 1571;  // pi/2 in mrad
+constexpr int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
+// Rounded division (ties away from zero); d > 0.
+constexpr int64_t divRound(int64_t n, int64_t d) { return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d); }
+// Believed quarter turns in mrad: 1571 per quarter.
+constexpr int64_t quartersMrad(int q) { return q * kQuarterMrad; }
+}  // namespace
+
+void PoseTracker::reset() {
+  x_ = y_ = t_ = 0;
+  for (auto& row : p_)
+    for (auto& v : row) v = 0;
+}
+
+void PoseTracker::rotated(int32_t mrad, int quarters) {
+  t_ += mrad - quartersMrad(quarters);
+  // Turn error grows with the angle turned, with a floor for small corrections.
+  int64_t scaled = abs64(mrad) * 1000 / kQuarterMrad;  // per mille of a quarter
+  if (scaled < 250) scaled = 250;
+  const int64_t sigma = divRound(noise_.turnMradPerQuarter * scaled, 1000);
+  p_[2][2] += sigma * sigma;
+}
+
+void PoseTracker::drove(int32_t mm, Dir heading) {
+  // Forward unit f and right unit r (clockwise of f) of the believed heading.
+  const int64_t fx = dx(heading), fy = dy(heading);
+  const Dir right = rotate(heading, 1);
+  const int64_t rx = dx(right), ry = dy(right);
+  // Displacement = mm * (f + theta/1000 * r).
+  const int64_t side = divRound(static_cast<int64_t>(mm) * t_, 1000);
+  x_ += mm * fx + side * rx;
+  y_ += mm * fy + side * ry;
+  // Covariance: F = I + a * e_theta in the position rows, a_i = mm * r_i / 1000.
+  const int64_t a[2] = {mm * rx, mm * ry};  // x1000
+  int64_t n[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) n[i][j] = p_[i][j];
+  for (int i = 0; i < 2; ++i) {
+    n[i][2] = p_[i][2] + divRound(a[i] * p_[2][2], 1000);
+    n[2][i] = n[i][2];
+  }
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      n[i][j] = p_[i][j] + divRound(a[i] * p_[2][j] + a[j] * p_[i][2], 1000) +
+                divRound(a[i] * a[j] * p_[2][2], 1000000);
+  // Process noise: slip along the track, heading picked up per cell (100 mm nominal).
+  const int64_t slip = divRound(abs64(mm) * noise_.slipPerMille, 1000);
+  const int64_t slipVar = slip * slip;
+  n[0][0] += slipVar * fx * fx;
+  n[1][1] += slipVar * fy * fy;
+  const int64_t drift = divRound(noise_.driveMradPerCell * abs64(mm), 100);
+  n[2][2] += drift * drift;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) p_[i][j] = n[i][j];
+}
+
+void PoseTracker::rebase(Dir d, int cells, int32_t cellMm) {
+  x_ -= static_cast<int64_t>(dx(d)) * cells * cellMm;
+  y_ -= static_cast<int64_t>(dy(d)) * cells * cellMm;
+}
+
+bool PoseTracker::measure(Dir d, int32_t offsetMm, int32_t extraVarianceMm2) {
+  const int k = isVertical(d) ? 1 : 0;
+  const int64_t s = isVertical(d) ? dy(d) : dx(d);  // +1 or -1
+  const int64_t predicted = s * (k == 0 ? x_ : y_);
+  const int64_t innovation = offsetMm - predicted;
+  const int64_t r = static_cast<int64_t>(noise_.readingMm) * noise_.readingMm + extraVarianceMm2;
+  const int64_t spread = p_[k][k] + r;  // innovation variance, mm^2
+  // Gate: within 3 sigma of the prediction and within the absolute gate.
+  if (innovation * innovation > 9 * spread || abs64(innovation) > noise_.gateMm) {
+    ++rejected_;
+    return false;
+  }
+  // In the measured axis' sign convention the state component is s * state[k].
+  int64_t pk[3];
+  for (int i = 0; i < 3; ++i) pk[i] = p_[i][k];
+  int64_t* state[3] = {&x_, &y_, &t_};
+  for (int i = 0; i < 3; ++i) *state[i] += divRound(s * pk[i] * innovation, spread);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) p_[i][j] -= divRound(pk[i] * pk[j], spread);
+  ++accepted_;
+  return true;
+}
+
+}  // namespace nxtmap

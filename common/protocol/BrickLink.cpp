@@ -1,0 +1,249 @@
+#include "common/protocol/BrickLink.hpp"
+
+#include "common/protocol/LegoCommands.hpp"
+#include "common/protocol/Packet.hpp"
+
+namespace nxtmap::protocol {
+namespace {
+bool samePath(const PathProgressMsg& a, const PathProgressMsg& b) {
+  return a.pathId == b.pathId && a.reached == b.reached && a.state == b.state && a.at == b.at;
+}
+bool samePose(const Pose& a, const Pose& b) { return a.cell == b.cell && a.heading == b.heading; }
+}  // namespace
+
+BrickLink::BrickLink(const RoomGrid& grid, uint8_t* shadow, const BrickLinkConfig& config)
+    : config_(config), sync_(grid, shadow, config.retransmitMs) {}
+
+void BrickLink::receive(uint8_t byte) {
+  decoder_.push(byte);
+  Telegram t;
+  while (decoder_.pop(t)) handle(t);
+  counters_.bytesSkipped = decoder_.counters().skipped;
+}
+
+void BrickLink::handle(const Telegram& t) {
+  ++counters_.telegramsIn;
+  if (t.type() == kTypeDirect || t.type() == kTypeDirectNoReply) {
+    if (t.opcode() == kLegoGetBatteryLevel || t.opcode() == kLegoKeepAlive) {
+      // Answered in transmit(), where the battery level is known.
+      if (t.type() == kTypeDirect) legoPending_ = t.opcode();
+      return;
+    }
+    // Mailbox commands take effect now; the reply waits for transmit().
+    legoReplyReady_ = answerDirectCommand(t, boxes_, 0, config_.sleepLimitMs, legoReply_);
+    return;
+  }
+  if (t.type() == kTypeNxtmap) handlePacket(t);
+}
+
+void BrickLink::handlePacket(const Telegram& t) {
+  PacketView v;
+  if (!parsePacket(t, v)) return;
+  if (v.header.op == Op::Hello) {
+    handleHello(v.payload, v.payloadSize);
+    return;
+  }
+  if (v.header.version != kProtocolVersion || !connected_) return;
+  sync_.acknowledge(v.header.ack, v.header.ackMask);
+  switch (v.header.op) {
+    case Op::Explore:
+    case Op::Stop:
+    case Op::FollowPath:
+    case Op::RequestMap:
+    case Op::MapChunk:
+      handleCommand(v.header, v.payload, v.payloadSize);
+      break;
+    case Op::BatteryRequest:
+      batteryDue_ = true;
+      break;
+    default:
+      break;  // Ack (already applied) and anything the brick does not take
+  }
+}
+
+void BrickLink::handleHello(const uint8_t* p, size_t n) {
+  HelloMsg hello;
+  if (!decodeHello(p, n, hello)) return;
+  helloReplyDue_ = true;
+  if (hello.version != kProtocolVersion) {
+    connected_ = false;  // answer with our version so the PC can say why it gives up
+    return;
+  }
+  if (!hasSession_ || hello.session != session_) {
+    // A PC we have not talked to since power-on: fresh duplicate tracking, the whole map.
+    hasSession_ = true;
+    session_ = hello.session;
+    commands_.reset();
+    sync_.restart();
+  } else if (hello.wantMap) {
+    sync_.restart();
+  } else {
+    sync_.linkLost();  // whatever was in flight before the reconnect goes again
+  }
+  connected_ = true;
+  stateDue_ = true;
+  statusSent_ = false;
+}
+
+void BrickLink::handleCommand(const PacketHeader& h, const uint8_t* p, size_t n) {
+  if (!h.reliable() || h.seq == 0) return;
+  if (commands_.seen(h.seq)) {
+    ++counters_.duplicates;
+    ackDue_ = true;
+    return;
+  }
+  Command c;
+  c.seq = h.seq;
+  bool valid = n == 0;
+  switch (h.op) {
+    case Op::Explore:
+      c.kind = CommandKind::Explore;
+      break;
+    case Op::Stop:
+      c.kind = CommandKind::Stop;
+      break;
+    case Op::RequestMap:
+      if (valid) sync_.restart();
+      commands_.record(h.seq);
+      ackDue_ = true;
+      return;
+    case Op::FollowPath:
+      c.kind = CommandKind::FollowPath;
+      valid = decodePath(p, n, c.path);
+      break;
+    case Op::MapChunk:
+      c.kind = CommandKind::MapChunk;
+      valid = decodeMapChunk(p, n, c.chunk);
+      break;
+    default:
+      return;
+  }
+  if (!valid) {
+    // A well-formed packet with a malformed command: never run it, but acknowledge it so the
+    // PC does not send it forever.
+    commands_.record(h.seq);
+    ackDue_ = true;
+    return;
+  }
+  if (queueCount_ == kCommandQueue) return;  // no room: not acknowledged, the PC sends it again
+  queue_[(queueFirst_ + queueCount_) % kCommandQueue] = c;
+  ++queueCount_;
+  commands_.record(h.seq);
+  ackDue_ = true;
+}
+
+bool BrickLink::nextCommand(Command& out) {
+  if (queueCount_ == 0) return false;
+  out = queue_[queueFirst_];
+  queueFirst_ = static_cast<uint8_t>((queueFirst_ + 1) % kCommandQueue);
+  --queueCount_;
+  ++counters_.commandsRun;
+  return true;
+}
+
+void BrickLink::linkLost() {
+  connected_ = false;
+  decoder_.reset();
+  sync_.linkLost();
+  helloReplyDue_ = false;
+  ackDue_ = false;
+  batteryDue_ = false;
+  legoReplyReady_ = false;
+  legoPending_ = 0;
+}
+
+bool BrickLink::send(Op op, bool reliable, const Payload& payload, Frame& out) {
+  PacketHeader h;
+  h.op = op;
+  h.flags = reliable ? kFlagReliable : 0;
+  h.seq = reliable ? txSeq_ : 0;
+  h.ack = commands_.ack();
+  h.ackMask = commands_.ackMask();
+  ackDue_ = false;
+  return encodePacket(h, payload.bytes, payload.size, out);
+}
+
+bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out) {
+  if (legoReplyReady_) {
+    legoReplyReady_ = false;
+    out = legoReply_;
+    return true;
+  }
+  if (legoPending_ != 0) {
+    const uint8_t request[] = {kTypeDirect, legoPending_};
+    Telegram t;
+    t.bytes[0] = request[0];
+    t.bytes[1] = request[1];
+    t.size = 2;
+    legoPending_ = 0;
+    if (answerDirectCommand(t, boxes_, report.batteryMillivolts, config_.sleepLimitMs, out)) return true;
+  }
+  Payload p;
+  if (helloReplyDue_) {
+    helloReplyDue_ = false;
+    HelloReplyMsg m;
+    m.session = session_;
+    m.mapEpoch = sync_.epoch();
+    m.gridWidthLog2 = sync_.widthLog2();
+    m.gridHeightLog2 = sync_.heightLog2();
+    encodeHelloReply(m, p);
+    return send(Op::HelloReply, false, p, out);
+  }
+  if (!connected_) return false;
+  counters_.retransmits += static_cast<uint32_t>(sync_.expire(nowMs));
+
+  if (stateDue_) {  // after a Hello: pose, path and room once, whatever they are
+    stateDue_ = false;
+    posePending_ = pathPending_ = roomPending_ = true;
+  }
+  if (posePending_ || !samePose(lastPose_.pose, report.pose)) {
+    posePending_ = false;
+    lastPose_.pose = report.pose;
+    encodePose(lastPose_, p);
+    return send(Op::Pose, false, p, out);
+  }
+  if (pathPending_ || !samePath(lastPath_, report.path)) {
+    pathPending_ = false;
+    lastPath_ = report.path;
+    encodePathProgress(lastPath_, p);
+    return send(Op::PathProgress, false, p, out);
+  }
+  if (roomPending_ || lastRoom_ != report.roomId) {
+    roomPending_ = false;
+    lastRoom_ = report.roomId;
+    encodeNewRoom(NewRoomMsg{report.roomId, report.roomEntry}, p);
+    return send(Op::NewRoom, false, p, out);
+  }
+  if (batteryDue_) {
+    batteryDue_ = false;
+    encodeBattery(BatteryMsg{report.batteryMillivolts}, p);
+    return send(Op::Battery, false, p, out);
+  }
+  if (!statusSent_ || nowMs - lastStatusMs_ >= config_.statusPeriodMs) {
+    statusSent_ = true;
+    lastStatusMs_ = nowMs;
+    StatusMsg s;
+    s.mode = report.mode;
+    s.pose = report.pose;
+    s.counters = report.counters;
+    s.batteryMillivolts = report.batteryMillivolts;
+    s.mapEpoch = sync_.epoch();
+    s.roomId = report.roomId;
+    s.path = report.path;
+    s.link = counters_;
+    encodeStatus(s, p);
+    return send(Op::Status, false, p, out);
+  }
+  const uint16_t seq = nextSeq(txSeq_);
+  if (sync_.buildDelta(seq, nowMs, p)) {
+    txSeq_ = seq;
+    return send(Op::MapDelta, true, p, out);
+  }
+  if (ackDue_) {
+    p.size = 0;
+    return send(Op::Ack, false, p, out);
+  }
+  return false;
+}
+
+}  // namespace nxtmap::protocol

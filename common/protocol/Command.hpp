@@ -1,0 +1,24 @@
+#pragma once
+#include <cstdint>
+
+#include "common/protocol/Messages.hpp"
+
+namespace nxtmap::protocol {
+
+// A command from the PC for the firmware to carry out. BrickLink hands each one over exactly
+// once, in the order the PC sent them.
+enum class CommandKind : uint8_t {
+  Explore,     // start or resume exploring
+  Stop,        // stop moving, stay where you are
+  FollowPath,  // drive along `path` (cell 0 = where the robot stands); report PathProgress
+  MapChunk,    // part of a whole map from the PC (`chunk`); chunk 0 of a transfer: clear first
+};
+
+struct Command {
+  CommandKind kind = CommandKind::Stop;
+  uint16_t seq = 0;  // the PC's sequence number (for logs)
+  PathMsg path;      // FollowPath
+  MapChunkMsg chunk; // MapChunk
+};
+
+}  // namespace nxtmap::protocol

@@ -1,0 +1,81 @@
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+// The radio link's wire format, shared by the brick, the emulator bridge and the PC.
+//
+// Every frame is the NXT's Bluetooth stream framing: a 2-byte little-endian length, then a
+// telegram of that many bytes, laid out as LEGO's protocol has it: [type][opcode][...].
+//
+//  - LEGO direct commands (type 0x00 reply wanted, 0x80 no reply) and their replies (type 0x02)
+//    follow LEGO's layout exactly, so existing NXT tools (nxt-python, NXC's BT tools) work.
+//  - nxtmap packets use type kTypeNxtmap:
+//      [0x4E][opcode][version][flags][seq u16][ack u16][ackMask u16][payload...][crc32 u32]
+//    All multi-byte fields little-endian. crc32 (IEEE 802.3, reflected, as zlib's crc32) covers
+//    every telegram byte before it. seq 0 = unreliable (never acknowledged, never deduplicated);
+//    reliable packets carry seq 1..65535 (0 skipped on wrap) and are acknowledged by the peer's
+//    ack/ackMask: ack = newest reliable seq received, bit i of ackMask = seq (ack - 1 - i) received.
+namespace nxtmap::protocol {
+
+constexpr uint8_t kProtocolVersion = 1;
+
+// Sizes (bytes). LEGO's Bluetooth input buffer holds 128 bytes per message.
+constexpr size_t kLengthPrefix = 2;
+constexpr size_t kMaxTelegram = 126;
+constexpr size_t kMaxFrame = kLengthPrefix + kMaxTelegram;  // 128
+constexpr size_t kPacketHeader = 10;
+constexpr size_t kPacketTrailer = 4;  // crc32
+constexpr size_t kMaxPayload = kMaxTelegram - kPacketHeader - kPacketTrailer;  // 112
+
+// Telegram types (byte 0).
+constexpr uint8_t kTypeDirect = 0x00;         // LEGO direct command, reply wanted
+constexpr uint8_t kTypeSystem = 0x01;         // LEGO system command, reply wanted (not served)
+constexpr uint8_t kTypeReply = 0x02;          // LEGO reply
+constexpr uint8_t kTypeDirectNoReply = 0x80;  // LEGO direct command, no reply
+constexpr uint8_t kTypeSystemNoReply = 0x81;  // (not served)
+constexpr uint8_t kTypeNxtmap = 0x4E;         // 'N': an nxtmap packet
+
+// LEGO direct command opcodes served by the brick (c_cmd.iom).
+constexpr uint8_t kLegoMessageWrite = 0x09;
+constexpr uint8_t kLegoGetBatteryLevel = 0x0B;
+constexpr uint8_t kLegoKeepAlive = 0x0D;
+constexpr uint8_t kLegoMessageRead = 0x13;
+
+// LEGO reply status codes.
+constexpr uint8_t kLegoOk = 0x00;
+constexpr uint8_t kLegoMailboxEmpty = 0x40;
+constexpr uint8_t kLegoIllegalMailbox = 0xEC;  // (LEGO: "illegal mailbox queue ID")
+constexpr uint8_t kLegoQueueFull = 0xFB;       // (LEGO: "insufficient memory available")
+
+// LEGO mailboxes: 10 inboxes, messages up to 59 bytes including the terminating NUL.
+constexpr uint8_t kLegoMailboxes = 10;
+constexpr uint8_t kLegoMaxMessage = 59;
+// Telegram sizes of the served commands and replies.
+constexpr size_t kLegoBatteryCommandSize = 2, kLegoBatteryReplySize = 5;     // [02][0B][st][mV u16]
+constexpr size_t kLegoKeepAliveCommandSize = 2, kLegoKeepAliveReplySize = 7; // [02][0D][st][ms u32]
+constexpr size_t kLegoReadCommandSize = 5, kLegoReadReplySize = 64;  // [02][13][st][box][len][59]
+constexpr size_t kLegoWriteReplySize = 3;                            // [02][09][st]
+
+// nxtmap opcodes. PC -> brick:
+enum class Op : uint8_t {
+  Hello = 0x01,         // unreliable; HelloMsg
+  Explore = 0x02,       // reliable command, no payload: start (or resume) exploring
+  Stop = 0x03,          // reliable command, no payload: stop moving
+  FollowPath = 0x04,    // reliable command; PathMsg
+  RequestMap = 0x05,    // reliable command, no payload: send the whole map again (new epoch)
+  MapChunk = 0x06,      // reliable command; MapChunkMsg (whole map PC -> brick, in chunks)
+  Ack = 0x07,           // unreliable, no payload: carries only ack/ackMask
+  BatteryRequest = 0x08,// unreliable, no payload: answered by Battery
+  // brick -> PC:
+  HelloReply = 0x41,    // unreliable; HelloReplyMsg
+  Status = 0x42,        // unreliable, periodic; StatusMsg
+  MapDelta = 0x43,      // reliable; MapDeltaMsg header + runs
+  Pose = 0x44,          // unreliable, on change; PoseMsg
+  PathProgress = 0x45,  // unreliable, on change and in Status; PathProgressMsg (also "blocked")
+  NewRoom = 0x46,       // unreliable, on change and in Status; NewRoomMsg
+  Battery = 0x47,       // unreliable; BatteryMsg
+};
+
+constexpr uint8_t kFlagReliable = 0x01;
+
+}  // namespace nxtmap::protocol

@@ -1,0 +1,112 @@
+// PoseTracker: the integer Kalman filter of the robot's offset from its believed cell and its
+// heading error, from tables of motions and measurements.
+#include <gtest/gtest.h>
+
+#include "common/motion/PoseTracker.hpp"
+
+namespace nxtmap {
+namespace {
+
+TEST(PoseTracker, StartsExactlyAtTheCentre) {
+  PoseTracker t;
+  t.reset();
+  EXPECT_EQ(t.xMm(), 0);
+  EXPECT_EQ(t.yMm(), 0);
+  EXPECT_EQ(t.thetaMrad(), 0);
+  EXPECT_EQ(t.varianceAlong(Dir::North), 0);
+  EXPECT_EQ(t.thetaVariance(), 0);
+}
+
+struct Motion {
+  int32_t rotateMrad;  // rotation carried out
+  int quarters;        // believed quarter turns
+  int32_t driveMm;     // then driven
+  Dir heading;         // believed heading while driving
+  int32_t x, y, theta; // expected estimate afterwards (mm, mm, mrad)
+};
+
+class PoseTrackerMotion : public ::testing::TestWithParam<Motion> {};
+
+TEST_P(PoseTrackerMotion, DeadReckonsSmallAngles) {
+  const Motion m = GetParam();
+  PoseTracker t;
+  t.rotated(m.rotateMrad, m.quarters);
+  t.drove(m.driveMm, m.heading);
+  EXPECT_EQ(t.xMm(), m.x);
+  EXPECT_EQ(t.yMm(), m.y);
+  EXPECT_EQ(t.thetaMrad(), m.theta);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Table, PoseTrackerMotion,
+    ::testing::Values(Motion{0, 0, 100, Dir::North, 0, 100, 0},          // straight ahead
+                      Motion{0, 0, -100, Dir::North, 0, -100, 0},        // straight back
+                      Motion{20, 0, 100, Dir::North, 2, 100, 20},        // 20 mrad right: drifts east
+                      Motion{-30, 0, 200, Dir::North, -6, 200, -30},     // left: drifts west
+                      Motion{1571 + 10, 1, 100, Dir::East, 100, -1, 10}, // quarter right, a bit more: south
+                      Motion{-1571, -1, 100, Dir::West, -100, 0, 0},     // quarter left, exact
+                      Motion{3142, 2, 100, Dir::South, 0, -100, 0}));    // half turn
+
+TEST(PoseTracker, TurnsAndDrivingMakeItUncertain) {
+  PoseTracker t;
+  t.rotated(1571, 1);
+  const int64_t afterTurn = t.thetaVariance();
+  EXPECT_GT(afterTurn, 0);
+  t.drove(500, Dir::East);
+  EXPECT_GT(t.varianceAlong(Dir::East), 0);   // slip along the track
+  EXPECT_GT(t.varianceAlong(Dir::North), 0);  // heading error across it
+  EXPECT_GT(t.thetaVariance(), afterTurn);
+}
+
+TEST(PoseTracker, RebaseMovesTheReferenceCentre) {
+  PoseTracker t;
+  t.drove(103, Dir::North);
+  t.rebase(Dir::North, 1, 100);
+  EXPECT_EQ(t.yMm(), 3);
+  t.drove(-98, Dir::North);
+  t.rebase(Dir::North, -1, 100);
+  EXPECT_EQ(t.yMm(), 5);
+}
+
+TEST(PoseTracker, AReadingPullsTheOffsetAndTheHeading) {
+  PoseNoise noise;
+  noise.turnMradPerQuarter = 50;  // a poor turn: the heading is uncertain
+  for (const Dir wall : {Dir::South, Dir::North}) {
+    PoseTracker t(noise);
+    t.rotated(1571, 1);  // now facing East
+    for (int i = 0; i < 5; ++i) {
+      t.drove(100, Dir::East);
+      t.rebase(Dir::East, 1, 100);
+    }
+    // A wall says the robot is 25 mm south of where it believes: so it was heading right of East.
+    const int32_t towardsWall = wall == Dir::South ? 25 : -25;
+    ASSERT_TRUE(t.measure(wall, towardsWall));
+    EXPECT_LT(t.yMm(), -12) << "wall " << static_cast<int>(wall);
+    EXPECT_GE(t.yMm(), -25);
+    EXPECT_GT(t.thetaMrad(), 0);
+    EXPECT_EQ(t.xMm(), 0);
+  }
+}
+
+TEST(PoseTracker, GateRefusesReadingsThatCannotBeTheKnownWall) {
+  PoseTracker t;
+  t.rotated(1571, 1);
+  t.drove(300, Dir::East);
+  EXPECT_FALSE(t.measure(Dir::North, 60));   // beyond the 40 mm gate
+  EXPECT_FALSE(t.measure(Dir::North, -95));  // a cell short: another obstacle
+  EXPECT_EQ(t.rejected(), 2u);
+  EXPECT_TRUE(t.measure(Dir::North, 5));
+  EXPECT_EQ(t.accepted(), 1u);
+}
+
+TEST(PoseTracker, RepeatedReadingsConverge) {
+  PoseTracker t;
+  t.rotated(1571, 1);
+  t.drove(1000, Dir::East);
+  for (int i = 0; i < 20; ++i) ASSERT_TRUE(t.measure(Dir::South, 12));
+  EXPECT_NEAR(t.yMm(), -12, 2);
+  EXPECT_LT(t.varianceAlong(Dir::South), 64 / 4);
+}
+
+}  // namespace
+}  // namespace nxtmap

@@ -1,0 +1,243 @@
+// The brick's end of the link, driven byte by byte as the firmware drives it.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "common/protocol/BrickLink.hpp"
+#include "common/protocol/LegoCommands.hpp"
+#include "tests/protocol/ProtocolTestSupport.hpp"
+
+namespace nxtmap::protocol {
+namespace {
+
+using Bytes = std::vector<uint8_t>;
+
+struct Received {
+  std::vector<PacketHeader> headers;
+  std::vector<Bytes> payloads;
+  std::vector<Telegram> lego;
+  size_t count(Op op) const {
+    size_t n = 0;
+    for (const PacketHeader& h : headers) n += h.op == op ? 1 : 0;
+    return n;
+  }
+  const Bytes* last(Op op) const {
+    for (size_t i = headers.size(); i-- > 0;) {
+      if (headers[i].op == op) return &payloads[i];
+    }
+    return nullptr;
+  }
+};
+
+class BrickLinkTest : public ::testing::Test {
+ protected:
+  void feed(const Bytes& b) {
+    for (uint8_t x : b) link.receive(x);
+  }
+  // Everything the brick wants to send now, decoded.
+  Received collect(uint32_t now) {
+    Received r;
+    Frame f;
+    FrameDecoder d;
+    while (link.transmit(now, report, f)) {
+      for (uint8_t i = 0; i < f.size; ++i) d.push(f.bytes[i]);
+      Telegram t;
+      while (d.pop(t)) {
+        PacketView v;
+        if (parsePacket(t, v)) {
+          r.headers.push_back(v.header);
+          r.payloads.emplace_back(v.payload, v.payload + v.payloadSize);
+          if (v.header.op == Op::MapDelta) {
+            mirror.apply(v.payload, v.payloadSize);
+            received.record(v.header.seq);
+          }
+        } else {
+          r.lego.push_back(t);
+        }
+      }
+    }
+    return r;
+  }
+  void hello(uint32_t session, bool wantMap = false) {
+    Payload p;
+    encodeHello(HelloMsg{kProtocolVersion, session, wantMap}, p);
+    feed(test::pcPacket(Op::Hello, 0, received, &p));
+  }
+  std::vector<Command> commands() {
+    std::vector<Command> out;
+    Command c;
+    while (link.nextCommand(c)) out.push_back(c);
+    return out;
+  }
+
+  test::OwnedGrid<> o;
+  BrickLink link{o.grid, o.shadow, BrickLinkConfig{}};
+  BrickReport report;
+  SeqWindow received;  // the PC's record of the brick's reliable seqs
+  test::MirrorMap mirror;
+};
+
+TEST_F(BrickLinkTest, AnswersLegoCommandsBeforeAnyHelloButNothingElse) {
+  Frame f;
+  ASSERT_TRUE(encodeGetBatteryLevel(f));
+  feed(Bytes(f.bytes, f.bytes + f.size));
+  feed(test::pcPacket(Op::Explore, 1, received));
+  report.batteryMillivolts = 7200;
+  const Received r = collect(0);
+  ASSERT_EQ(r.lego.size(), 1u);
+  uint8_t status = 0xFF;
+  uint16_t mv = 0;
+  ASSERT_TRUE(decodeBatteryReply(r.lego[0], status, mv));
+  EXPECT_EQ(mv, 7200);
+  EXPECT_TRUE(r.headers.empty());
+  EXPECT_TRUE(commands().empty());
+}
+
+TEST_F(BrickLinkTest, HelloOpensASessionAndTheWholeStateFollows) {
+  ASSERT_TRUE(o.grid.set(Cell{0, 0}, CellState::Free));
+  ASSERT_TRUE(o.grid.set(Cell{0, 1}, CellState::Occupied));
+  report.pose = Pose{Cell{0, 0}, Dir::East};
+  hello(0xC0FFEE);
+  const Received r = collect(0);
+  ASSERT_FALSE(r.headers.empty());
+  EXPECT_EQ(r.headers[0].op, Op::HelloReply);
+  HelloReplyMsg reply;
+  ASSERT_TRUE(decodeHelloReply(r.payloads[0].data(), r.payloads[0].size(), reply));
+  EXPECT_EQ(reply.session, 0xC0FFEEu);
+  EXPECT_EQ(reply.gridWidthLog2, 6);
+  EXPECT_EQ(reply.mapEpoch, link.mapEpoch());
+  for (Op op : {Op::Pose, Op::PathProgress, Op::NewRoom, Op::Status, Op::MapDelta}) EXPECT_EQ(r.count(op), 1u);
+  EXPECT_TRUE(mirror.equals(o.grid));
+  // Quiet until the next status period.
+  EXPECT_TRUE(collect(100).headers.empty());
+  EXPECT_EQ(collect(500).count(Op::Status), 1u);
+  // Pose changes are reported at once.
+  report.pose.cell = Cell{1, 0};
+  EXPECT_EQ(collect(510).count(Op::Pose), 1u);
+}
+
+TEST_F(BrickLinkTest, ARepeatedCommandRunsOnceAndIsAcknowledgedEachTime) {
+  hello(7);
+  collect(0);
+  const Bytes explore = test::pcPacket(Op::Explore, 1, received);
+  feed(explore);
+  feed(explore);  // the ack was lost: the PC sends it again
+  const Received r = collect(10);
+  const std::vector<Command> cmds = commands();
+  ASSERT_EQ(cmds.size(), 1u);
+  EXPECT_EQ(cmds[0].kind, CommandKind::Explore);
+  EXPECT_EQ(link.counters().duplicates, 1u);
+  ASSERT_FALSE(r.headers.empty());
+  EXPECT_TRUE(acknowledges(r.headers.back().ack, r.headers.back().ackMask, 1));
+  // A reconnect of the same session does not run it again either.
+  link.linkLost();
+  hello(7);
+  feed(explore);
+  collect(20);
+  EXPECT_TRUE(commands().empty());
+  // A new PC session starts afresh.
+  hello(8);
+  feed(explore);
+  EXPECT_EQ(commands().size(), 1u);
+}
+
+TEST_F(BrickLinkTest, AFullQueueLeavesTheCommandUnacknowledgedUntilThereIsRoom) {
+  hello(1);
+  collect(0);
+  feed(test::pcPacket(Op::Explore, 1, received));
+  feed(test::pcPacket(Op::Stop, 2, received));
+  Payload p;
+  PathMsg path;
+  path.pathId = 5;
+  ASSERT_TRUE(path.append(Cell{0, 0}) && path.append(Cell{1, 0}) && path.append(Cell{2, 1}));
+  encodePath(path, p);
+  const Bytes follow = test::pcPacket(Op::FollowPath, 3, received, &p);
+  feed(follow);  // queue of 2 is full: dropped, not acknowledged
+  Received r = collect(10);
+  ASSERT_FALSE(r.headers.empty());
+  EXPECT_EQ(r.headers.back().ack, 2);
+  EXPECT_EQ(commands().size(), 2u);
+  feed(follow);
+  r = collect(20);
+  EXPECT_EQ(r.headers.back().ack, 3);
+  const std::vector<Command> cmds = commands();
+  ASSERT_EQ(cmds.size(), 1u);
+  EXPECT_EQ(cmds[0].kind, CommandKind::FollowPath);
+  EXPECT_EQ(cmds[0].path.pathId, 5);
+  EXPECT_EQ(cmds[0].path.cellAt(2), (Cell{2, 1}));
+}
+
+TEST_F(BrickLinkTest, AMalformedCommandIsAcknowledgedButNeverRun) {
+  hello(1);
+  collect(0);
+  Payload p;
+  p.size = 3;  // a path of nothing
+  feed(test::pcPacket(Op::FollowPath, 1, received, &p));
+  const Received r = collect(10);
+  EXPECT_TRUE(commands().empty());
+  ASSERT_FALSE(r.headers.empty());
+  EXPECT_EQ(r.headers.back().ack, 1);
+}
+
+TEST_F(BrickLinkTest, UnacknowledgedDeltasComeAgainAndAcknowledgedOnesDoNot) {
+  hello(1);
+  collect(0);
+  feed(test::pcPacket(Op::Ack, 0, received));
+  ASSERT_TRUE(o.grid.set(Cell{3, 3}, CellState::Occupied));
+  Received r = collect(1000);
+  ASSERT_EQ(r.count(Op::MapDelta), 1u);
+  // No ack: after the retransmission time the cell goes again.
+  r = collect(1300);
+  EXPECT_EQ(r.count(Op::MapDelta), 0u);
+  r = collect(1400);
+  EXPECT_EQ(r.count(Op::MapDelta), 1u);
+  EXPECT_EQ(link.counters().retransmits, 1u);
+  feed(test::pcPacket(Op::Ack, 0, received));
+  r = collect(2000);
+  EXPECT_EQ(r.count(Op::MapDelta), 0u);
+  EXPECT_EQ(link.mapSync().inFlight(), 0);
+  EXPECT_TRUE(mirror.equals(o.grid));
+}
+
+TEST_F(BrickLinkTest, RequestMapSendsEverythingUnderANewEpoch) {
+  for (int x = 0; x < 10; ++x) ASSERT_TRUE(o.grid.set(Cell{static_cast<int16_t>(x), 0}, CellState::Free));
+  hello(1);
+  collect(0);
+  const uint16_t epoch = link.mapEpoch();
+  mirror.cells.clear();
+  feed(test::pcPacket(Op::RequestMap, 1, received));
+  const Received r = collect(10);
+  EXPECT_NE(link.mapEpoch(), epoch);
+  EXPECT_EQ(mirror.epoch, link.mapEpoch());
+  EXPECT_TRUE(mirror.equals(o.grid));
+  EXPECT_TRUE(acknowledges(r.headers.back().ack, r.headers.back().ackMask, 1));
+}
+
+TEST_F(BrickLinkTest, AHelloOfAnotherVersionGetsOurVersionAndNoSession) {
+  Payload p;
+  encodeHello(HelloMsg{static_cast<uint8_t>(kProtocolVersion + 1), 5, false}, p);
+  feed(test::pcPacket(Op::Hello, 0, received, &p));
+  const Received r = collect(0);
+  ASSERT_EQ(r.headers.size(), 1u);
+  HelloReplyMsg reply;
+  ASSERT_TRUE(decodeHelloReply(r.payloads[0].data(), r.payloads[0].size(), reply));
+  EXPECT_EQ(reply.version, kProtocolVersion);
+  EXPECT_FALSE(link.connected());
+}
+
+TEST_F(BrickLinkTest, MailboxMessagesReachTheFirmware) {
+  Frame f;
+  ASSERT_TRUE(encodeMessageWrite(1, "stop", f));
+  feed(Bytes(f.bytes, f.bytes + f.size));
+  const Received r = collect(0);
+  ASSERT_EQ(r.lego.size(), 1u);
+  uint8_t status = 0xFF;
+  ASSERT_TRUE(decodeMessageWriteReply(r.lego[0], status));
+  EXPECT_EQ(status, kLegoOk);
+  Mailboxes::Message m;
+  ASSERT_TRUE(link.mailboxes().read(1, true, m));
+  EXPECT_STREQ(reinterpret_cast<const char*>(m.bytes), "stop");
+}
+
+}  // namespace
+}  // namespace nxtmap::protocol
