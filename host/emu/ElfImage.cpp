@@ -49,6 +49,7 @@ struct ElfLoader {
                 img.flashUsed_ = std::max<uint32_t>(img.flashUsed_, static_cast<uint32_t>(hi - kFlashBase));
             } else if (lo >= kRamBase && hi <= uint64_t{kRamBase} + kRamSize) {
                 std::memcpy(img.ram_.data() + (lo - kRamBase), src, ph.p_filesz);
+                img.ramSegments_.emplace_back(static_cast<uint32_t>(lo - kRamBase), ph.p_filesz);
             } else {
                 char buf[96];
                 std::snprintf(buf, sizeof buf, "segment at 0x%08x..0x%08x is outside flash and RAM",

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace nxtmap::emu {
@@ -23,6 +24,8 @@ public:
 
     const std::vector<uint8_t>& flash() const { return flash_; }  // kFlashSize bytes, 0xFF where unused
     const std::vector<uint8_t>& ram() const { return ram_; }      // kRamSize bytes loaded into RAM (RAM-run images)
+    // The [offset, offset + size) ranges of RAM the ELF loads (offsets from kRamBase).
+    const std::vector<std::pair<uint32_t, uint32_t>>& ramSegments() const { return ramSegments_; }
     bool hasFlashCode() const { return flashUsed_ > 0; }
     uint32_t flashUsed() const { return flashUsed_; }            // bytes from kFlashBase to the end of the last segment
     uint32_t entry() const { return entry_; }
@@ -35,6 +38,7 @@ private:
     std::string path_;
     std::vector<uint8_t> flash_ = std::vector<uint8_t>(kFlashSize, 0xFF);
     std::vector<uint8_t> ram_ = std::vector<uint8_t>(kRamSize, 0x00);
+    std::vector<std::pair<uint32_t, uint32_t>> ramSegments_;
     uint32_t flashUsed_ = 0;
     uint32_t entry_ = 0;
     std::map<std::string, uint32_t> symbols_;

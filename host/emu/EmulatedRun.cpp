@@ -71,12 +71,12 @@ EmulatedRunReport EmulatedRun::run() {
     brick_->runFor(options_.maxSeconds, [&] {
         if (!hasDone) return false;
         const auto d = readSymbolByte("g_explorerDone");
-        return d && *d != 0;
+        return d && *d == 1;  // exactly 1: before start-up zeroes .bss the byte holds the 0xA5 paint
     });
     const Machine& m = brick_->machine();
     const MachineStats s = m.stats();
     r.fault = m.fault();
-    r.finished = !r.fault && hasDone && readSymbolByte("g_explorerDone").value_or(0) != 0;
+    r.finished = !r.fault && hasDone && readSymbolByte("g_explorerDone").value_or(0) == 1;
     r.emulatedSeconds = secondsFromCycles(s.cycles);
     r.wallSeconds = s.wallSeconds;
     r.executed = s.executed;

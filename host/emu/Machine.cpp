@@ -181,8 +181,8 @@ Machine::Machine(const ElfImage& image, const MachineOptions& options)
     std::memset(ram_, kPaint, kRamSize);  // stack painting for the high-water mark
     const bool ramImage = !image.hasFlashCode();
     if (ramImage) {  // RAM-run image (fwexec style): copy what the ELF loads into RAM
-        for (uint32_t i = 0; i < kRamSize; ++i)
-            if (image.ram()[i] != 0) ram_[i] = image.ram()[i];
+        for (const auto& [offset, size] : image.ramSegments())
+            std::memcpy(ram_ + offset, image.ram().data() + offset, size);
     }
 
     check(uc_open(UC_ARCH_ARM, UC_MODE_ARM, &uc_), "open");

@@ -51,6 +51,20 @@ TEST(RealFirmware, BootsLinksAvrExploresAndNeverFaults) {
     EXPECT_LT(r.ram.total(), 65536u);
     EXPECT_GT(r.ram.stackBytes, 0u);
 }
+TEST(RealFirmware, RamRunImageStartsAtItsEntry) {
+    const ElfImage image = loadFirmware("nxtmap-ram.elf");
+    ASSERT_FALSE(image.hasFlashCode());
+    const sim::World world = room20();
+    EmulatedRunOptions o;
+    o.brick.startCol = 2;
+    o.brick.startRow = 5;
+    o.maxSeconds = 2.0;
+    EmulatedRun run(image, world, o);
+    const EmulatedRunReport r = run.run();
+    ASSERT_FALSE(r.fault) << r.fault.describe();
+    EXPECT_GT(r.avrGood, 500u);
+    EXPECT_EQ(r.avrBad, 0u);
+}
 #endif
 
 }  // namespace
