@@ -46,20 +46,32 @@ TEST_P(EndToEnd, FirmwareMapsThePublishedRoomLikeTheHostRun) {
     mapping::MappingRun host(world, cli::scenarioConfig(sc, mapping::Strategy::Propagation, sim::NoiseProfile{}, 1));
     host.runToEnd();
     const mapping::FrameTransform frame(sc.startCol, sc.startRow, sim::Heading::N);
-    int differ = 0;
-    std::string first;
+    int differ = 0, fwWrong = 0, hostWrong = 0;
+    std::string first, picture;
     for (int row = 0; row < world.height(); ++row)
         for (int col = 0; col < world.width(); ++col) {
             const Cell c = frame.toExplorer(col, row);
             const auto fw = static_cast<CellState>(map->at(c.x, c.y));
             const CellState pc = host.belief(col, row);
+            const bool occ = world.blocked(col, row);
+            if (fw != CellState::Unknown && (fw == CellState::Occupied) != occ) ++fwWrong;
+            if (pc != CellState::Unknown && (pc == CellState::Occupied) != occ) ++hostWrong;
+            const char* sym = ".#?";
+            picture += fw == pc ? (fw == CellState::Occupied ? '#' : fw == CellState::Free ? '.' : ' ')
+                                : (fw == CellState::Occupied ? 'X' : fw == CellState::Free ? 'o' : '?');
+            (void)sym;
+            if (col + 1 == world.width()) picture += '\n';
             if (fw != pc) {
                 if (differ++ == 0)
                     first = "first at col " + std::to_string(col) + " row " + std::to_string(row) + ": firmware " +
                             std::to_string(static_cast<int>(fw)) + " host " + std::to_string(static_cast<int>(pc));
             }
         }
-    EXPECT_EQ(differ, 0) << sc.id << ": " << first;
+    EXPECT_EQ(fwWrong, 0) << sc.id << ": firmware cells contradicting the world";
+    EXPECT_EQ(differ, 0) << sc.id << ": " << differ << " cells differ from the host run (host wrong: " << hostWrong
+                         << "), " << first << "\n(X firmware occupied, o firmware free, ? firmware unknown where the host"
+                         << " differs)\n" << picture << "robot at x " << r.xCm << " y " << r.yCm << " heading "
+                         << r.headingDeg;
     RecordProperty("emulated_s", std::to_string(r.emulatedSeconds));
     RecordProperty("speed", std::to_string(r.speedRatio()));
 }
