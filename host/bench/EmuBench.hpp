@@ -5,7 +5,7 @@
 
 namespace nxtmap::bench {
 
-// Runs the firmware (build/firmware/nxtmap.elf, or NXTMAP_FIRMWARE) on some rooms of scenarioDir and prints
+// Runs the firmware (build/firmware/nxtmap-sim.elf, or NXTMAP_FIRMWARE) on published rooms of scenarioDir; prints
 // one line per run plus the verdicts. Returns the number of targets missed.
 int runEmuBench(const std::string& scenarioDir);
 

@@ -83,7 +83,8 @@ int runEmulate(const EmulateOptions& o) {
       << "end              "
       << (r.fault ? "FAULT" : r.finished ? "exploration done" : "time limit reached") << "\n"
       << "emulated time    " << num(r.emulatedSeconds, 2) << " s\n"
-      << "wall time        " << num(r.wallSeconds, 2) << " s (" << num(r.speedRatio()) << "x real time)\n"
+      << "wall time        " << num(r.wallSeconds, 2) << " s (" << num(r.speedRatio()) << "x real time; CPU "
+      << num(r.cpuSeconds, 2) << " s = " << num(r.cpuSpeedRatio()) << "x)\n"
       << "instructions     " << r.executed << " executed, " << r.irqs << " interrupts, " << r.idles << " idles\n"
       << "RAM high-water   " << r.ram.total() << " B (static " << r.ram.staticBytes << " + stack " << r.ram.stackBytes
       << ") of 65536\n"

@@ -79,6 +79,7 @@ EmulatedRunReport EmulatedRun::run() {
     r.finished = !r.fault && hasDone && readSymbolByte("g_explorerDone").value_or(0) == 1;
     r.emulatedSeconds = secondsFromCycles(s.cycles);
     r.wallSeconds = s.wallSeconds;
+    r.cpuSeconds = s.cpuSeconds;
     r.executed = s.executed;
     r.irqs = s.irqs;
     r.idles = s.idles;

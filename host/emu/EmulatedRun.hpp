@@ -36,7 +36,9 @@ struct EmulatedRunReport {
     EmuFault fault;
     double emulatedSeconds = 0.0;
     double wallSeconds = 0.0;
+    double cpuSeconds = 0.0;        // host CPU time (the wall time also counts other processes on a busy machine)
     double speedRatio() const { return wallSeconds > 0.0 ? emulatedSeconds / wallSeconds : 0.0; }
+    double cpuSpeedRatio() const { return cpuSeconds > 0.0 ? emulatedSeconds / cpuSeconds : 0.0; }
     uint64_t executed = 0, irqs = 0, idles = 0;
     RamUse ram;
     std::optional<uint32_t> staticRamBudget;  // the firmware's own __static_ram figure, if it has one

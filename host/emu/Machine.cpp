@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -20,6 +21,12 @@ constexpr uint64_t kMmioSize = 0x60000;
 constexpr uint32_t kCpsrT = 1u << 5, kCpsrI = 1u << 7;
 constexpr uint32_t kPaint = 0xA5;
 constexpr uint64_t kMaskedPoll = 256;  // re-check a masked pending IRQ every this many cycles
+
+double cpuNow() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+}
 
 double wallNow() {
     using namespace std::chrono;
@@ -329,6 +336,7 @@ void Machine::paceToWall() {
 
 bool Machine::run(uint64_t until, const std::function<bool()>& stop) {
     const double wallStart = wallNow();
+    const double cpuStart = cpuNow();
     if (wallOrigin_ < 0.0) wallOrigin_ = wallStart - secondsFromCycles(clock_.now);
     while (!fault_) {
         advanceModels();
@@ -384,6 +392,7 @@ bool Machine::run(uint64_t until, const std::function<bool()>& stop) {
         paceToWall();
     }
     wallSeconds_ += wallNow() - wallStart;
+    cpuSeconds_ += cpuNow() - cpuStart;
     return !fault_;
 }
 
@@ -397,6 +406,7 @@ MachineStats Machine::stats() const {
     s.timedCalls = timedCalls_;
     s.maxTimed = maxTimed_;
     s.wallSeconds = wallSeconds_;
+    s.cpuSeconds = cpuSeconds_;
     return s;
 }
 

@@ -51,6 +51,7 @@ struct MachineStats {
     uint64_t timedCalls = 0;      // calls of the timed function
     uint64_t maxTimed = 0;        // most instructions in one call of it (including interrupts taken)
     double wallSeconds = 0.0;     // host time spent in run()
+    double cpuSeconds = 0.0;      // host CPU time of the running thread spent in run() (load-independent)
 };
 
 class Machine : public GuestMemory {
@@ -132,6 +133,7 @@ private:
     std::function<bool()> externalWait_;
     bool trace_ = false;
     double wallSeconds_ = 0.0;
+    double cpuSeconds_ = 0.0;
     double wallOrigin_ = -1.0;   // realtime pacing: wall second at cycle 0
 };
 
