@@ -2,28 +2,34 @@
 
 namespace nxtmap::emu {
 
-void Aic::connect(int id, std::function<bool()> line) { lines_[static_cast<size_t>(id)].push_back(std::move(line)); }
+void Aic::connect(int id, std::function<bool()> line) { lines_.push_back(Line{id, std::move(line)}); }
 
 void Aic::sample() {
     uint32_t level = 0;
-    for (int id = 0; id < 32; ++id)
-        for (const auto& l : lines_[static_cast<size_t>(id)])
-            if (l()) { level |= 1u << id; break; }
-    for (int id = 0; id < 32; ++id)
-        if (edge(id) && (level & ~lastLevel_ & (1u << id))) edgeLatch_ |= 1u << id;
+    for (const Line& l : lines_)
+        if (!(level & (1u << l.id)) && l.asserted()) level |= 1u << l.id;
+    const uint32_t rising = level & ~lastLevel_;
+    if (rising)
+        for (int id = 0; id < 32; ++id)
+            if (edge(id) && (rising & (1u << id))) edgeLatch_ |= 1u << id;
     lastLevel_ = level;
+}
+
+uint32_t Aic::pendingFrom(uint32_t level) const {
+    uint32_t levelSources = 0;
+    for (int id = 0; id < 32; ++id)
+        if (!edge(id)) levelSources |= 1u << id;
+    return soft_ | edgeLatch_ | (level & levelSources);
 }
 
 uint32_t Aic::pending() {
     sample();
-    uint32_t p = soft_ | edgeLatch_;
-    for (int id = 0; id < 32; ++id)
-        if (!edge(id) && (lastLevel_ & (1u << id))) p |= 1u << id;
-    return p;
+    return pendingFrom(lastLevel_);
 }
 
-int Aic::bestPending() {
-    const uint32_t p = pending() & imr_ & ~1u;  // source 0 is FIQ, not routed to nIRQ
+int Aic::bestPending(bool fresh) {
+    if (fresh) sample();
+    const uint32_t p = pendingFrom(lastLevel_) & imr_ & ~1u;  // source 0 is FIQ, not routed to nIRQ
     const int current = inService_.empty() ? -1 : inService_.back().prio;
     int best = -1;
     int bestPrio = current;
@@ -35,15 +41,13 @@ int Aic::bestPending() {
     return best;
 }
 
-bool Aic::irqAsserted() { return bestPending() >= 0; }
-bool Aic::wakeAsserted() { return (pending() & imr_) != 0; }
 
 bool Aic::read(uint32_t off, uint32_t& v) {
     if (off < 0x80) { v = smr_[off / 4]; return true; }
     if (off < 0x100) { v = svr_[(off - 0x80) / 4]; return true; }
     switch (off) {
         case 0x100: {  // IVR: acknowledge the best source, push it in service
-            const int id = bestPending();
+            const int id = bestPending(true);
             if (id < 0) { v = spu_; return true; }
             inService_.push_back(Level{id, static_cast<int>(smr_[id] & 7)});
             isr_ = static_cast<uint32_t>(id);
@@ -56,7 +60,7 @@ bool Aic::read(uint32_t off, uint32_t& v) {
         case 0x108: v = isr_; return true;
         case 0x10C: v = pending(); return true;
         case 0x110: v = imr_; return true;
-        case 0x114: v = irqAsserted() ? 1u : 0u; return true;  // CISR: NIRQ bit 1 in real chip; bit 0 NFIQ
+        case 0x114: v = bestPending(true) >= 0 ? 2u : 0u; return true;  // CISR: NIRQ bit 1
         case 0x134: v = spu_; return true;
         case 0x138: v = dcr_; return true;
         case 0x148: v = 0; return true;  // FFSR

@@ -23,22 +23,25 @@ public:
 
     // A peripheral's interrupt line (true = asserting). Several lines may share one source (SYS).
     void connect(int id, std::function<bool()> line);
-    // Samples the lines (edge latches); call after models advanced.
+    // Samples the lines (edge latches); call after models advanced. The two queries below use the last
+    // sample (the run loop samples once per stop); register reads sample afresh.
     void sample();
     // nIRQ: an enabled pending source above the current in-service priority.
-    bool irqAsserted();
+    bool irqAsserted() { return bestPending(false) >= 0; }
     // Any enabled pending source at all (wakes the processor clock even when CPSR.I masks it).
-    bool wakeAsserted();
-    uint32_t pending();  // IPR
+    bool wakeAsserted() { return (pendingFrom(lastLevel_) & imr_) != 0; }
+    uint32_t pending();  // IPR, sampled now
     uint64_t irqsTaken() const { return irqsTaken_; }
 
 private:
-    int bestPending();   // highest-priority enabled pending source, -1 if none above the current level
+    int bestPending(bool fresh);  // highest-priority enabled pending source, -1 if none above the current level
+    uint32_t pendingFrom(uint32_t level) const;
     bool edge(int id) const { return ((smr_[id] >> 5) & 1) != 0; }
 
     std::array<uint32_t, 32> smr_{};
     std::array<uint32_t, 32> svr_{};
-    std::array<std::vector<std::function<bool()>>, 32> lines_;
+    struct Line { int id; std::function<bool()> asserted; };
+    std::vector<Line> lines_;
     uint32_t imr_ = 0;
     uint32_t soft_ = 0;     // set by ISCR, cleared by ICCR (and by IVR for edge sources)
     uint32_t edgeLatch_ = 0;

@@ -67,11 +67,13 @@ std::optional<ExportedMap> EmulatedRun::exportedMap() const {
 
 EmulatedRunReport EmulatedRun::run() {
     EmulatedRunReport r;
-    const bool hasDone = image_.symbol("g_explorerDone").has_value();
+    const auto doneAt = image_.symbol("g_explorerDone");
+    const bool hasDone = doneAt.has_value();
+    const Machine& machine = brick_->machine();
     brick_->runFor(options_.maxSeconds, [&] {
-        if (!hasDone) return false;
-        const auto d = readSymbolByte("g_explorerDone");
-        return d && *d == 1;  // exactly 1: before start-up zeroes .bss the byte holds the 0xA5 paint
+        uint8_t d = 0;
+        // Exactly 1: before start-up zeroes .bss the byte holds the 0xA5 paint.
+        return hasDone && machine.readByte(*doneAt, d) && d == 1;
     });
     const Machine& m = brick_->machine();
     const MachineStats s = m.stats();
