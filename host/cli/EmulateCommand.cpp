@@ -85,7 +85,8 @@ int runEmulate(const EmulateOptions& o) {
       << "emulated time    " << num(r.emulatedSeconds, 2) << " s\n"
       << "wall time        " << num(r.wallSeconds, 2) << " s (" << num(r.speedRatio()) << "x real time; CPU "
       << num(r.cpuSeconds, 2) << " s = " << num(r.cpuSpeedRatio()) << "x)\n"
-      << "instructions     " << r.executed << " executed, " << r.irqs << " interrupts, " << r.idles << " idles\n"
+      << "instructions     " << r.executed << " executed, " << r.irqs << " interrupts, " << r.idles << " idles, " << r.slices
+      << " CPU slices\n"
       << "RAM high-water   " << r.ram.total() << " B (static " << r.ram.staticBytes << " + stack " << r.ram.stackBytes
       << ") of 65536\n"
       << "sensor updates   " << r.sensorUpdates << ", at most " << r.maxPerUpdate << " instructions each\n"

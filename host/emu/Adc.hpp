@@ -46,6 +46,7 @@ public:
         }
     }
     bool irqLine() const { return (sr_ & imr_) != 0; }
+    bool writeReplans(uint32_t off) const override { return off == 0x00 || off == 0x24 || off == 0x28; }
 
 private:
     void convert() {

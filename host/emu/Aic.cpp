@@ -78,7 +78,10 @@ bool Aic::write(uint32_t off, uint32_t v) {
         case 0x124: imr_ &= ~v; return true;
         case 0x128: soft_ &= ~v; edgeLatch_ &= ~v; return true;
         case 0x12C: soft_ |= v; return true;
-        case 0x130: if (!inService_.empty()) inService_.pop_back(); return true;
+        case 0x130:  // EOICR: re-plan only if a source now waits to be delivered
+            if (!inService_.empty()) inService_.pop_back();
+            if (clock_ && bestPending(true) >= 0) clock_->poke();
+            return true;
         case 0x134: spu_ = v; return true;
         case 0x138: dcr_ = v & 3; return true;
         case 0x140: case 0x144: return true;  // FFER/FFDR: fast forcing unused

@@ -20,6 +20,8 @@ public:
     const char* name() const override { return "AIC"; }
     bool read(uint32_t offset, uint32_t& value) override;
     bool write(uint32_t offset, uint32_t value) override;
+    bool writeReplans(uint32_t off) const override { return off >= 0x120 && off <= 0x12C; }
+    void setClock(Clock* clock) { clock_ = clock; }
 
     // A peripheral's interrupt line (true = asserting). Several lines may share one source (SYS).
     void connect(int id, std::function<bool()> line);
@@ -52,6 +54,7 @@ private:
     struct Level { int id; int prio; };
     std::vector<Level> inService_;
     uint64_t irqsTaken_ = 0;
+    Clock* clock_ = nullptr;
 };
 
 }  // namespace nxtmap::emu

@@ -84,6 +84,7 @@ EmulatedRunReport EmulatedRun::run() {
     r.cpuSeconds = s.cpuSeconds;
     r.executed = s.executed;
     r.irqs = s.irqs;
+    r.slices = s.slices;
     r.idles = s.idles;
     r.ram = m.ramUse();
     r.staticRamBudget = image_.symbol("__static_ram");

@@ -39,7 +39,7 @@ struct EmulatedRunReport {
     double cpuSeconds = 0.0;        // host CPU time (the wall time also counts other processes on a busy machine)
     double speedRatio() const { return wallSeconds > 0.0 ? emulatedSeconds / wallSeconds : 0.0; }
     double cpuSpeedRatio() const { return cpuSeconds > 0.0 ? emulatedSeconds / cpuSeconds : 0.0; }
-    uint64_t executed = 0, irqs = 0, idles = 0;
+    uint64_t executed = 0, irqs = 0, idles = 0, slices = 0;
     RamUse ram;
     std::optional<uint32_t> staticRamBudget;  // the firmware's own __static_ram figure, if it has one
     uint64_t sensorUpdates = 0;     // timed-function calls (or g_sensorUpdates)

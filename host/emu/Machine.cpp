@@ -165,7 +165,7 @@ struct Machine::Hooks {
             uc_emu_stop(uc);
             return;
         }
-        m->clock_.poke();  // a write may change interrupt or timing state: re-plan at the next block
+        if (s->device->writeReplans((a - s->base) & ~3u)) m->clock_.poke();  // re-plan at the next block
     }
 };
 
@@ -201,6 +201,7 @@ Machine::Machine(const ElfImage& image, const MachineOptions& options)
     check(uc_mmio_map(uc_, kMmioBase, kMmioSize, &Hooks::mmioRead, this, &Hooks::mmioWrite, this), "map MMIO");
 
     page_.assign(kMmioSize >> 4, 0);
+    aic_.setClock(&clock_);
     attach(Aic::kBase, Aic::kSize, aic_);
     attach(Pmc::kBase, Pmc::kSize, pmc_);
     attach(ResetController::kBase, ResetController::kSize, rstc_);
@@ -378,6 +379,7 @@ bool Machine::run(uint64_t until, const std::function<bool()>& stop) {
         uc_reg_read(uc_, UC_ARM_REG_PC, &pc);
         const uint64_t begin = pc | ((cpsr & kCpsrT) ? 1u : 0u);
         stoppedAt_ = 0;
+        ++slices_;
         const uc_err e = uc_emu_start(uc_, begin, 0xFFFFFFF0ull, 0, 0);
         if (stoppedAt_ != 0 && !fault_) {
             // Stopped by the block hook before that block ran. Unicorn 2.0.1 sometimes leaves PC past the
@@ -401,6 +403,7 @@ MachineStats Machine::stats() const {
     s.cycles = clock_.now;
     s.executed = executed_;
     s.irqs = irqs_;
+    s.slices = slices_;
     s.idles = pmc_.idleRequests();
     s.maxBusy = std::max(maxBusy_, idle_ ? 0 : clock_.now - busyStart_);
     s.timedCalls = timedCalls_;

@@ -46,6 +46,7 @@ struct MachineStats {
     uint64_t cycles = 0;          // emulated cycles (= instructions executed + idle cycles skipped)
     uint64_t executed = 0;        // instructions executed
     uint64_t irqs = 0;            // IRQs entered
+    uint64_t slices = 0;          // times the CPU was (re)started: IRQs, events, pokes
     uint64_t idles = 0;           // times the processor clock was stopped
     uint64_t maxBusy = 0;         // longest stretch of instructions between two idles
     uint64_t timedCalls = 0;      // calls of the timed function
@@ -121,6 +122,7 @@ private:
     uint64_t busyStart_ = 0;
     uint64_t maxBusy_ = 0;
     uint64_t irqs_ = 0;
+    uint64_t slices_ = 0;
     uint32_t lastBlock_ = 0;
     uint32_t stoppedAt_ = 0;     // block at which the block hook stopped the CPU (0 = none)
     uint32_t guardLow_ = 0, stackLimit_ = 0;

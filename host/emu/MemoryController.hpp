@@ -15,6 +15,7 @@ public:
     static constexpr uint32_t kSize = 0x100;
     explicit MemoryController(std::function<void()> onRemapToggle) : onRemap_(std::move(onRemapToggle)) {}
     const char* name() const override { return "MC"; }
+    bool writeReplans(uint32_t) const override { return false; }
     bool read(uint32_t off, uint32_t& v) override {
         switch (off) {
             case 0x04: case 0x08: v = 0; return true;  // ASR, AASR: no abort

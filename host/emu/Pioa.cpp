@@ -50,8 +50,7 @@ bool Pioa::read(uint32_t off, uint32_t& v) {
         case 0x48: v = imr_; return true;
         case 0x4C:
             v = isr_;
-            if (irqLine()) clock_.poke();
-            isr_ = 0;
+            isr_ = 0;  // the line may drop: nothing to re-plan
             return true;
         case 0x58: v = mdsr_; return true;
         case 0x68: v = puSr_; return true;

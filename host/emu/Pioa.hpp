@@ -22,6 +22,8 @@ public:
     const char* name() const override { return "PIOA"; }
     bool read(uint32_t offset, uint32_t& value) override;
     bool write(uint32_t offset, uint32_t value) override;
+    // Level changes poke the clock themselves (update()); only the interrupt mask needs a re-plan.
+    bool writeReplans(uint32_t off) const override { return off == 0x40 || off == 0x44; }
 
     uint32_t levels() const { return levels_; }
     bool level(int pin) const { return (levels_ >> pin) & 1u; }

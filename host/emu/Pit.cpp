@@ -15,7 +15,7 @@ uint32_t Pit::valueRegister() const {
 }
 
 uint64_t Pit::nextEventAt() const {
-    if (!running_ || !(mr_ & kItEn) || periodsUnread() > 0) return kNever;
+    if (!running_ || !(mr_ & kItEn)) return kNever;  // every period boundary (also while unread: cheap, no re-plan)
     return start_ + (periods() + 1) * periodCycles();
 }
 
@@ -25,7 +25,6 @@ bool Pit::read(uint32_t off, uint32_t& v) {
         case 0x4: v = periodsUnread() > 0 ? 1u : 0u; return true;
         case 0x8:  // PIVR: read acknowledges
             v = valueRegister();
-            if (irqLine()) clock_.poke();  // the interrupt line drops: re-plan
             periodsRead_ = periods();
             return true;
         case 0xC: v = valueRegister(); return true;

@@ -18,6 +18,7 @@ public:
     const char* name() const override { return "PMC"; }
     bool read(uint32_t offset, uint32_t& value) override;
     bool write(uint32_t offset, uint32_t value) override;
+    bool writeReplans(uint32_t) const override { return false; }  // idle requests poke by themselves
 
     uint32_t peripheralClocks() const { return pcsr_; }  // PCSR: bit n = peripheral ID n clocked
     uint64_t idleRequests() const { return idles_; }

@@ -34,6 +34,7 @@ public:
     static constexpr uint32_t kBase = 0xFFFFFD60;
     static constexpr uint32_t kSize = 0x4;
     const char* name() const override { return "VREG"; }
+    bool writeReplans(uint32_t) const override { return false; }
     bool read(uint32_t off, uint32_t& v) override { if (off) return false; v = mr_; return true; }
     bool write(uint32_t off, uint32_t v) override { if (off) return false; mr_ = v & 1; return true; }
 

@@ -19,6 +19,7 @@ public:
     const char* name() const override { return "SPI"; }
     bool read(uint32_t offset, uint32_t& value) override;
     bool write(uint32_t offset, uint32_t value) override;
+    bool writeReplans(uint32_t off) const override { return off != 0x04 && (off < 0x30 || off >= 0x100); }
     uint64_t nextEventAt() const override { return shiftDoneAt_; }
     void advanceTo(uint64_t now) override;
     bool irqLine() const { return (status() & imr_) != 0; }

@@ -15,6 +15,7 @@ public:
     static constexpr uint32_t kBase = 0xFFFE8000;
     static constexpr uint32_t kSize = 0x100;
     const char* name() const override { return "TESTPORT"; }
+    bool writeReplans(uint32_t off) const override { return off == 0x10; }  // DONE: stop and look
     bool read(uint32_t off, uint32_t& v) override {
         if (off != 0x00) return false;
         v = 0;

@@ -46,7 +46,7 @@ uint64_t TimerCounter::nextEventAt() const {
     uint64_t t = kNever;
     for (const Channel& c : ch_) {
         const uint64_t div = divider(c);
-        if (!c.running || div == 0 || c.rc == 0 || !(c.imr & kCpcs) || compares(c) > c.comparesRead) continue;
+        if (!c.running || div == 0 || c.rc == 0 || !(c.imr & kCpcs)) continue;
         if (!rcTrigger(c)) continue;
         const uint64_t next = c.start + (compares(c) + 1) * c.rc * div;
         if (next < t) t = next;
@@ -69,7 +69,6 @@ bool TimerCounter::read(uint32_t off, uint32_t& v) {
         case 0x20: {
             const uint64_t n = compares(c);
             v = (n > c.comparesRead ? kCpcs : 0u) | (c.running ? kClksta : 0u);
-            if (n > c.comparesRead && (c.imr & kCpcs)) clock_.poke();
             c.comparesRead = n;
             return true;
         }

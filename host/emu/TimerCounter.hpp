@@ -19,6 +19,10 @@ public:
     const char* name() const override { return "TC"; }
     bool read(uint32_t offset, uint32_t& value) override;
     bool write(uint32_t offset, uint32_t value) override;
+    bool writeReplans(uint32_t off) const override {
+        const uint32_t r = off % 0x40;
+        return off >= 0xC0 || (r != 0x04 && r != 0x14 && r != 0x18);
+    }
     uint64_t nextEventAt() const override;
     bool irqLine(int channel) const;
 

@@ -70,8 +70,7 @@ bool Twi::read(uint32_t off, uint32_t& v) {
         case 0x2C: v = imr_; return true;
         case 0x30:
             v = rhr_;
-            if (irqLine()) clock_.poke();
-            sr_ &= ~kRxrdy;
+            sr_ &= ~kRxrdy;  // the line may drop: nothing to re-plan
             return true;
         default: return false;
     }

@@ -20,6 +20,7 @@ public:
     const char* name() const override { return "TWI"; }
     bool read(uint32_t offset, uint32_t& value) override;
     bool write(uint32_t offset, uint32_t value) override;
+    bool writeReplans(uint32_t off) const override { return off != 0x04 && off != 0x0C && off != 0x10; }
     uint64_t nextEventAt() const override { return busyUntil_; }
     void advanceTo(uint64_t now) override;
     bool irqLine() const { return (sr_ & imr_) != 0; }

@@ -103,7 +103,7 @@ bool Usart::read(uint32_t off, uint32_t& v) {
         case 0x14: v = status(); return true;
         case 0x18:
             v = rhr_;
-            if (rxrdy_ && (irqLine() || (mr_ & 0xF) == 2)) clock_.poke();  // line drops / handshake frees
+            if (rxrdy_ && (mr_ & 0xF) == 2 && peer_.hasByteForArm()) clock_.poke();  // handshake lets the next byte in
             rxrdy_ = false;
             return true;
         case 0x20: v = brgr_; return true;

@@ -18,6 +18,9 @@ public:
     const char* name() const override { return "USART1"; }
     bool read(uint32_t offset, uint32_t& value) override;
     bool write(uint32_t offset, uint32_t value) override;
+    bool writeReplans(uint32_t off) const override {
+        return off >= 0x100 || (off != 0x04 && off != 0x20 && off != 0x24 && off != 0x28);
+    }
     uint64_t nextEventAt() const override;
     void advanceTo(uint64_t now) override;
     bool irqLine() const { return (status() & imr_) != 0; }

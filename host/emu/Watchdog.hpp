@@ -13,6 +13,7 @@ public:
     explicit Watchdog(Clock& clock) : clock_(clock) {}
 
     const char* name() const override { return "WDT"; }
+    bool writeReplans(uint32_t off) const override { return off == 0x4; }  // a restart only moves the deadline later
     bool read(uint32_t offset, uint32_t& value) override;
     bool write(uint32_t offset, uint32_t value) override;
     uint64_t nextEventAt() const override;
