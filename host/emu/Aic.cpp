@@ -9,18 +9,11 @@ void Aic::sample() {
     for (const Line& l : lines_)
         if (!(level & (1u << l.id)) && l.asserted()) level |= 1u << l.id;
     const uint32_t rising = level & ~lastLevel_;
-    if (rising)
-        for (int id = 0; id < 32; ++id)
-            if (edge(id) && (rising & (1u << id))) edgeLatch_ |= 1u << id;
+    edgeLatch_ |= rising & edgeMask_;
     lastLevel_ = level;
 }
 
-uint32_t Aic::pendingFrom(uint32_t level) const {
-    uint32_t levelSources = 0;
-    for (int id = 0; id < 32; ++id)
-        if (!edge(id)) levelSources |= 1u << id;
-    return soft_ | edgeLatch_ | (level & levelSources);
-}
+uint32_t Aic::pendingFrom(uint32_t level) const { return soft_ | edgeLatch_ | (level & ~edgeMask_); }
 
 uint32_t Aic::pending() {
     sample();
@@ -30,6 +23,7 @@ uint32_t Aic::pending() {
 int Aic::bestPending(bool fresh) {
     if (fresh) sample();
     const uint32_t p = pendingFrom(lastLevel_) & imr_ & ~1u;  // source 0 is FIQ, not routed to nIRQ
+    if (p == 0) return -1;
     const int current = inService_.empty() ? -1 : inService_.back().prio;
     int best = -1;
     int bestPrio = current;
@@ -69,7 +63,12 @@ bool Aic::read(uint32_t off, uint32_t& v) {
 }
 
 bool Aic::write(uint32_t off, uint32_t v) {
-    if (off < 0x80) { smr_[off / 4] = v & 0x67; return true; }
+    if (off < 0x80) {
+        smr_[off / 4] = v & 0x67;
+        const uint32_t bit = 1u << (off / 4);
+        edgeMask_ = ((v >> 5) & 1) ? (edgeMask_ | bit) : (edgeMask_ & ~bit);
+        return true;
+    }
     if (off < 0x100) { svr_[(off - 0x80) / 4] = v; return true; }
     switch (off) {
         case 0x100: return true;  // IVR write (protect mode acknowledge): accepted, no effect here

@@ -47,6 +47,7 @@ private:
     uint32_t imr_ = 0;
     uint32_t soft_ = 0;     // set by ISCR, cleared by ICCR (and by IVR for edge sources)
     uint32_t edgeLatch_ = 0;
+    uint32_t edgeMask_ = 0;  // sources configured edge-triggered (SMR SRCTYPE bit 5)
     uint32_t lastLevel_ = 0;
     uint32_t spu_ = 0;
     uint32_t dcr_ = 0;

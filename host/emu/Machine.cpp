@@ -57,8 +57,15 @@ struct Machine::Hooks {
             m->stoppedAt_ = static_cast<uint32_t>(address);
             return;
         }
+        // ARM or Thumb: learnt once per code address (reading CPSR in every block costs ~5 %).
+        const int slot = m->modeSlot(static_cast<uint32_t>(address));
         uint32_t cpsr = 0;
-        uc_reg_read(uc, UC_ARM_REG_CPSR, &cpsr);
+        if (slot < 0 || m->modes_[static_cast<size_t>(slot)] == 0 || m->trace_) {
+            uc_reg_read(uc, UC_ARM_REG_CPSR, &cpsr);
+            if (slot >= 0) m->modes_[static_cast<size_t>(slot)] = (cpsr & kCpsrT) ? 2 : 1;
+        } else if (m->modes_[static_cast<size_t>(slot)] == 2) {
+            cpsr = kCpsrT;
+        }
         if (m->trace_) std::fprintf(stderr, "block %08x size %u cpsr %08x t=%llu\n", static_cast<unsigned>(address), size,
                                     cpsr, static_cast<unsigned long long>(m->clock_.now));
         const uint64_t n = (cpsr & kCpsrT) ? size / 2 : size / 4;
@@ -280,7 +287,15 @@ uint32_t Machine::currentPc() const {
     return pc ? pc : lastBlock_;
 }
 
+int Machine::modeSlot(uint32_t a) const {
+    if (a < kFlashSize) return static_cast<int>(a >> 1);
+    if (a - kFlashBase < kFlashSize) return static_cast<int>((kFlashSize + (a - kFlashBase)) >> 1);
+    if (a - kRamBase < kRamSize) return static_cast<int>((2 * kFlashSize + (a - kRamBase)) >> 1);
+    return -1;
+}
+
 void Machine::applyRemap() {
+    std::fill(modes_.begin(), modes_.begin() + kFlashSize / 2, 0);  // address 0 now shows other code
     remapped_ = !remapped_;  // RCB toggles (nxt-hardware.md 1.1)
     uc_mem_unmap(uc_, 0, remapped_ ? kFlashSize : kRamSize);
     if (remapped_)

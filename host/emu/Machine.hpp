@@ -124,6 +124,10 @@ private:
     uint64_t irqs_ = 0;
     uint64_t slices_ = 0;
     uint32_t lastBlock_ = 0;
+    // Per halfword of code (address 0 window, flash, RAM): 0 unknown, 1 ARM, 2 Thumb. Code at an address keeps
+    // its state; self-modifying code that switches state at an address is not supported.
+    std::vector<uint8_t> modes_ = std::vector<uint8_t>((2 * kFlashSize + kRamSize) / 2, 0);
+    int modeSlot(uint32_t address) const;  // index into modes_, -1 outside
     uint32_t stoppedAt_ = 0;     // block at which the block hook stopped the CPU (0 = none)
     uint32_t guardLow_ = 0, stackLimit_ = 0;
     uint32_t timedEntry_ = 0;
