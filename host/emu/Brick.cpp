@@ -13,7 +13,7 @@ Brick::Brick(const ElfImage& image, const sim::World& world, const BrickConfig& 
       machine_(image, c.machine),
       pioa_(machine_.clock()),
       twi_(machine_.clock(), avr_),
-      drive_(machine_.clock(), avr_, pioa_, robot_, c.drive),
+      drive_(machine_.clock(), avr_, pioa_, robot_, c.drive, c.seed),
       bc4_(machine_.clock(), pioa_, c.link),
       usart_(machine_.clock(), machine_, bc4_),
       spi_(machine_.clock(), machine_, pioa_, lcd_),

@@ -13,8 +13,9 @@ constexpr uint64_t kMaxStep = kMckHz / 2000;              // integrate motion in
 constexpr double kPi = 3.14159265358979323846;
 }
 
-DriveModel::DriveModel(Clock& clock, const AvrModel& avr, Pioa& pio, sim::SimRobot& robot, const DriveGeometry& g)
-    : clock_(clock), avr_(avr), pio_(pio), robot_(robot), geo_(g) {
+DriveModel::DriveModel(Clock& clock, const AvrModel& avr, Pioa& pio, sim::SimRobot& robot, const DriveGeometry& g,
+                       uint64_t seed)
+    : clock_(clock), avr_(avr), pio_(pio), robot_(robot), geo_(g), rng_(seed ^ 0x5D1F7ULL) {
     publishPins();
 }
 
@@ -35,6 +36,12 @@ uint64_t DriveModel::nextEventAt() const {
 }
 
 void DriveModel::advanceTo(uint64_t now) {
+    std::array<int, 3> power{avr_.motorPower(0), avr_.motorPower(1), avr_.motorPower(2)};
+    if (power != lastPower_) {  // a new stretch of motion: a new slip factor
+        lastPower_ = power;
+        const double sigma = robot_.noise().slipSigma;
+        slip_ = sigma > 0.0 ? 1.0 + std::normal_distribution<double>(0.0, sigma)(rng_) : 1.0;
+    }
     while (last_ < now) {
         const uint64_t step = std::min(now - last_, kMaxStep);
         const double dt = static_cast<double>(step) / static_cast<double>(kMckHz);
@@ -47,8 +54,8 @@ void DriveModel::advanceTo(uint64_t now) {
         }
         if (!moving) { last_ = now; break; }
         const double cmPerDeg = kPi * geo_.wheelDiameterCm / 360.0;
-        const double dl = d[static_cast<size_t>(geo_.leftMotor)] * cmPerDeg;
-        const double dr = d[static_cast<size_t>(geo_.rightMotor)] * cmPerDeg;
+        const double dl = d[static_cast<size_t>(geo_.leftMotor)] * cmPerDeg * slip_;
+        const double dr = d[static_cast<size_t>(geo_.rightMotor)] * cmPerDeg * slip_;
         const double ds = (dl + dr) / 2.0;
         const double dHeading = (dl - dr) / geo_.trackCm * 180.0 / kPi;  // clockwise positive
         const double midHeading = robot_.headingDeg() + dHeading / 2.0;

@@ -11,6 +11,7 @@
 #include "host/sim/SimRobot.hpp"
 
 #include <array>
+#include <random>
 
 namespace nxtmap::emu {
 
@@ -27,7 +28,10 @@ public:
     static constexpr std::array<int, 3> kPulsePin{15, 26, 0};  // motors A, B, C
     static constexpr std::array<int, 3> kDirPin{1, 9, 8};
 
-    DriveModel(Clock& clock, const AvrModel& avr, Pioa& pio, sim::SimRobot& robot, const DriveGeometry& g);
+    // Wheel slip from the robot's noise profile (slipSigma): each stretch of constant motor power moves the
+    // robot by the wheels' arc times a factor drawn from N(1, slipSigma) (seeded: same seed, same run).
+    DriveModel(Clock& clock, const AvrModel& avr, Pioa& pio, sim::SimRobot& robot, const DriveGeometry& g,
+               uint64_t seed = 1);
 
     // Not on the bus: a time source only.
     const char* name() const override { return "drive"; }
@@ -53,6 +57,9 @@ private:
     uint64_t last_ = 0;
     uint64_t stalls_ = 0;
     double drivenCm_ = 0.0;
+    std::mt19937_64 rng_;
+    std::array<int, 3> lastPower_{};
+    double slip_ = 1.0;
 };
 
 }  // namespace nxtmap::emu

@@ -121,3 +121,27 @@ TEST(Lcd, SpiBytesBecomePixelsAndAPng) {
 
 }  // namespace
 }  // namespace nxtmap::emu::test
+
+namespace nxtmap::emu::test {
+namespace {
+
+TEST(Drive, WheelSlipFollowsTheNoiseProfileAndTheSeed) {
+    auto runWith = [](double slip, uint64_t seed) {
+        BrickConfig c;
+        c.startCol = 5;
+        c.startRow = 6;
+        c.noise.slipSigma = slip;
+        c.seed = seed;
+        ProbeRun r("tacho", c, 3.0);
+        EXPECT_TRUE(r.ok) << r.fault();
+        return std::make_pair(r.brick->robot().headingDeg(), r.port().values.at(0));
+    };
+    const auto clean = runWith(0.0, 1), a = runWith(0.05, 1), b = runWith(0.05, 1), c = runWith(0.05, 2);
+    EXPECT_EQ(a.second, clean.second);  // the encoders count the same wheel turns
+    EXPECT_NE(a.first, clean.first);    // but the ground covered differs
+    EXPECT_EQ(a.first, b.first);        // same seed, same run
+    EXPECT_NE(a.first, c.first);
+}
+
+}  // namespace
+}  // namespace nxtmap::emu::test
