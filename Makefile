@@ -20,7 +20,7 @@ help:
 	@echo "make demo   - run one mapping in the simulator, live"
 	@echo "make test   - build with sanitizers, run all tests, cross-build common/ for the ARM7TDMI"
 	@echo "make bench  - benchmarks, measured against their targets"
-	@echo "make firmware - the brick image: build/firmware/nxtmap.{elf,bin} (flash) and nxtmap-ram.{elf,bin} (fwexec)"
+	@echo "make firmware - the brick images: build/firmware/nxtmap.{elf,bin} (flash), nxtmap-ram.{elf,bin} (fwexec), nxtmap-sim.elf"
 	@echo "make size   - the brick image's flash/RAM budgets, enforced"
 	@echo "make deps   - install missing Debian packages (quick when all is present)"
 

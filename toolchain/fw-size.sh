@@ -28,6 +28,10 @@ echo "nxtmap firmware (ARM7TDMI, $(arm-none-eabi-gcc -dumpversion)):"
 check "flash: code + rodata + .data image" "$flash" "$FLASH_LIMIT"
 check "static RAM (64x64 grid): data/bss ($bss) + stacks ($stacks)" "$ram" "$RAM_LIMIT"
 check "RAM-run image at 0x202000 incl. bss + stacks" "$ramrun" "$RAMRUN_LIMIT"
+SIMELF=$DIR/nxtmap-sim.elf
+if [ -f "$SIMELF" ]; then
+  check "static RAM of nxtmap-sim.elf (+ map export)" "$(( $(hex "$(sym "$SIMELF" __static_ram)") ))" "$RAM_LIMIT"
+fi
 
 binsize=$(stat -c %s "$BIN")
 if [ "$binsize" -eq 262144 ]; then echo "  nxtmap.bin: 262144 bytes  ok"; else echo "  nxtmap.bin: $binsize bytes, must be 262144  FAIL"; fail=1; fi
@@ -35,8 +39,8 @@ if [ "$binsize" -eq 262144 ]; then echo "  nxtmap.bin: 262144 bytes  ok"; else e
 first=$(od -An -tx4 -N24 "$BIN" | tr -s ' ' '\n' | grep -v '^$' | grep -cv '^e59ff0' || true)
 if [ "$first" -eq 0 ]; then echo "  vectors: six ldr pc,[pc,#x] first  ok"; else echo "  vectors: unexpected first words  FAIL"; fail=1; fi
 
-v5=$(arm-none-eabi-objdump -d "$ELF" "$RAMELF" | grep -E $'\t(blx|clz|ldrd|strd|pld|bkpt|ldrex|strex|smulbb|smlabb|qadd|qsub|sxth|uxth|sxtb|uxtb|rev)\\b' || true)
-if [ -z "$v5" ]; then echo "  ARMv4T only: no blx/clz/ldrd/strd/pld/... in either image  ok"
+v5=$(arm-none-eabi-objdump -d "$ELF" "$RAMELF" $( [ -f "$SIMELF" ] && echo "$SIMELF") | grep -E $'\t(blx|clz|ldrd|strd|pld|bkpt|ldrex|strex|smulbb|smlabb|qadd|qsub|sxth|uxth|sxtb|uxtb|rev)\\b' || true)
+if [ -z "$v5" ]; then echo "  ARMv4T only: no blx/clz/ldrd/strd/pld/... in any image  ok"
 else echo "  ARMv5+ instructions found  FAIL"; echo "$v5" | head -5; fail=1; fi
 
 # Heap: a probe that calls malloc must fail to link against the brick's linker script, and the same

@@ -13,6 +13,8 @@ struct Action {
     Move,  // move `amount` cells: +1 forward, -1 backward; answer Event::moved or Event::blocked
     Turn,  // turn `amount` eighths of a turn, + = clockwise (2 = 90 deg right); answer Event::turned
     Done,  // mapping is finished
+    Think, // the explorer needs more CPU before it can decide: answer Event::thought() when
+           // convenient (each step's CPU cost stays bounded; nothing moves meanwhile)
   };
   Kind kind = Kind::Done;
   Sensor sensor = Sensor::Front;
@@ -22,6 +24,7 @@ struct Action {
   static constexpr Action move(int8_t cells) { return Action{Kind::Move, Sensor::Front, cells}; }
   static constexpr Action turn(int8_t eighths) { return Action{Kind::Turn, Sensor::Front, eighths}; }
   static constexpr Action done() { return Action{Kind::Done, Sensor::Front, 0}; }
+  static constexpr Action think() { return Action{Kind::Think, Sensor::Front, 0}; }
 };
 
 }  // namespace nxtmap

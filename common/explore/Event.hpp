@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 
+#include "common/explore/Pose.hpp"
 #include "common/grid/Cell.hpp"
 #include "common/sensing/RangeReading.hpp"
 
@@ -8,13 +9,27 @@ namespace nxtmap {
 
 // What happened: the answer to the previous Action (or the start of a run).
 struct Event {
-  enum class Kind : uint8_t { Start, Range, Moved, Blocked, Turned };
+  enum class Kind : uint8_t { Start, Range, Moved, Blocked, Turned, Thought };
   Kind kind = Kind::Start;
   Sensor sensor = Sensor::Front;  // Range
   RangeReading reading;           // Range
   int8_t amount = 0;              // Moved: cells (+ forward); Turned: eighths (+ clockwise)
+  Pose pose{};                    // Start: where the robot stands on the explorer's map
 
   static constexpr Event start() { return Event{}; }
+  // Start (or go on) from a known pose on the map the explorer was given (e.g. after the robot
+  // followed a path or the map came from the PC).
+  static Event startAt(const Pose& p) {
+    Event e;
+    e.pose = p;
+    return e;
+  }
+  // The answer to Action::think().
+  static Event thought() {
+    Event e;
+    e.kind = Kind::Thought;
+    return e;
+  }
   static Event range(Sensor s, const RangeReading& r) {
     Event e;
     e.kind = Kind::Range;

@@ -1,5 +1,6 @@
 #include "common/explore/Explorer.hpp"
 
+#include "common/check/Check.hpp"
 #include "common/sensing/RayMarker.hpp"
 
 namespace nxtmap {
@@ -16,7 +17,7 @@ Action Explorer::finish(ExplorerEnd why) {
 void Explorer::apply(const Event& e) {
   switch (e.kind) {
     case Event::Kind::Start:
-      pose_ = Pose{};
+      pose_ = e.pose;
       started_ = true;
       if (!map_.markVisited(pose_.cell)) end_ = ExplorerEnd::GridFull;
       break;
@@ -51,11 +52,43 @@ void Explorer::apply(const Event& e) {
       pose_.heading = rotate(pose_.heading, e.amount / 2);
       counters_.turnEighths += static_cast<uint32_t>(e.amount < 0 ? -e.amount : e.amount);
       break;
+    case Event::Kind::Thought:
+      break;
   }
 }
 
+Action Explorer::settle(const Action& a) {
+  if (a.kind == Action::Kind::Done) return finish(ExplorerEnd::Complete);
+  return a;
+}
+
+Action Explorer::startSearch(uint8_t purpose) {
+  planner_.start(pose_);
+  searching_ = true;
+  searchPurpose_ = purpose;
+  return continueSearch();
+}
+
+Action Explorer::continueSearch() {
+  const uint8_t purpose = searchPurpose_;
+  const TravelPlanner::Status st = planner_.proceed(
+      map_.grid(), [this, purpose](Cell c, uint16_t cost) { return searchVisit(purpose, c, cost); },
+      config_.searchSliceStates);
+  if (st == TravelPlanner::Status::Running) return Action::think();
+  searching_ = false;
+  return searchDone(purpose);
+}
+
+bool Explorer::searchVisit(uint8_t, Cell, uint16_t) { return true; }
+
+Action Explorer::searchDone(uint8_t) { return Action::done(); }
+
 Action Explorer::step(const Event& e) {
   if (end_ != ExplorerEnd::Running) return Action::done();
+  if (searching_) {
+    NXTMAP_CHECK(e.kind == Event::Kind::Thought);  // nothing else can happen while thinking
+    return settle(continueSearch());
+  }
   if (!started_ && e.kind != Event::Kind::Start) apply(Event::start());
   apply(e);
   if (end_ != ExplorerEnd::Running) return finish(end_);
@@ -63,9 +96,7 @@ Action Explorer::step(const Event& e) {
   if (e.kind == Event::Kind::Blocked) onBlocked();
   Sensor s;
   if (nextRead(s)) return Action::read(s);
-  const Action a = route_.empty() ? decide() : follow();
-  if (a.kind == Action::Kind::Done) return finish(ExplorerEnd::Complete);
-  return a;
+  return settle(route_.empty() ? decide() : follow());
 }
 
 int16_t Explorer::unknownAhead(Cell c, Dir d) const {

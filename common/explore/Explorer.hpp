@@ -54,6 +54,13 @@ class Explorer {
   virtual void onBlocked() {}
 
   // Route helpers.
+  // A travel search from the pose, run in slices of config_.searchSliceStates states (the
+  // explorer answers Action::think() in between): searchVisit() sees every reachable cell,
+  // cheapest first, and returns true to stop; then searchDone() decides. `purpose` tells the
+  // strategy which of its searches it is.
+  Action startSearch(uint8_t purpose);
+  virtual bool searchVisit(uint8_t purpose, Cell c, uint16_t cost);
+  virtual Action searchDone(uint8_t purpose);
   void go(Dir d);  // one-cell route
   bool travelTo(Cell target, uint16_t cost);  // route from the last planner search
   Action follow();
@@ -72,12 +79,16 @@ class Explorer {
   void apply(const Event& e);
   bool nextRead(Sensor& s) const;
   Action finish(ExplorerEnd why);
+  Action settle(const Action& a);  // Done from a strategy ends the run as Complete
+  Action continueSearch();
 
   Route route_;
   Dir pendingMove_ = Dir::North;  // direction of the last Move issued
   uint32_t actions_ = 0;
   ExplorerEnd end_ = ExplorerEnd::Running;
   bool started_ = false;
+  bool searching_ = false;
+  uint8_t searchPurpose_ = 0;
 };
 
 }  // namespace nxtmap

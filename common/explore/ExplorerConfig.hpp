@@ -12,6 +12,9 @@ struct ExplorerConfig {
   int16_t bigAreaCells = 12;    // unknown cells seen from a spot that make it a "large area"
   int16_t gainPerCostUnit = 0;  // frontier: unknown cells worth one unit of travel time
   uint32_t maxActions = 20000;  // safety stop: a run never takes more actions than this
+  // Travel searches run in slices of this many search states per step (answering Action::think
+  // in between), so one step stays within the brick's CPU budget (1 ms at 48 MHz).
+  uint16_t searchSliceStates = 32;
 };
 
 }  // namespace nxtmap

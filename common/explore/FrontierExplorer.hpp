@@ -19,10 +19,17 @@ class FrontierExplorer final : public Explorer {
 
  protected:
   Action decide() override;
+  bool searchVisit(uint8_t purpose, Cell c, uint16_t cost) override;
+  Action searchDone(uint8_t purpose) override;
 
  private:
   int16_t gainAt(Cell c) const;
   uint16_t goals_ = 0;
+  // The search in progress: the best spot so far.
+  Cell best_{};
+  uint16_t bestCost_ = 0;
+  int32_t bestScore_ = 0;
+  int16_t bestGain_ = 0;
 };
 
 }  // namespace nxtmap

@@ -107,45 +107,55 @@ Action PropagationExplorer::ended(PropagationOutcome o) {  // o may be rewritten
   if (o != PropagationOutcome::Corner) return begin(next);
   // Corner: success. Back to the propagation's vertical or horizontal start line, whichever is
   // nearer, then the opposite propagation.
-  const Cell onRow{pose_.cell.x, origin_.y}, onColumn{origin_.x, pose_.cell.y};
-  Cell best{};
-  uint16_t bestCost = 0xFFFF;
-  uint8_t found = 0;
-  planner_.search(map_.grid(), pose_, [&](Cell c, uint16_t cost) {
-    if (c == onRow || c == onColumn) {
-      if (cost < bestCost) {
-        best = c;
-        bestCost = cost;
+  onRow_ = Cell{pose_.cell.x, origin_.y};
+  onColumn_ = Cell{origin_.x, pose_.cell.y};
+  target_ = Cell{};
+  targetCost_ = 0xFFFF;
+  found_ = 0;
+  next_ = next;
+  return startSearch(kReturnLine);
+}
+
+bool PropagationExplorer::searchVisit(uint8_t purpose, Cell c, uint16_t cost) {
+  if (purpose == kReturnLine) {
+    if (c == onRow_ || c == onColumn_) {
+      if (cost < targetCost_) {
+        target_ = c;
+        targetCost_ = cost;
       }
-      ++found;
+      ++found_;
     }
-    return found == 2 || (onRow == onColumn && found == 1);
-  });
-  prop_ = next;
-  if (bestCost == 0 || bestCost == 0xFFFF || !travelTo(best, bestCost)) return begin(next);
-  phase_ = Phase::Return;
+    return found_ == 2 || (onRow_ == onColumn_ && found_ == 1);
+  }
+  int16_t g = 0;
+  for (int d = 0; d < 4; ++d) g = static_cast<int16_t>(g + unknownAhead(c, static_cast<Dir>(d)));
+  if (g == 0) return false;
+  target_ = c;
+  targetCost_ = cost;
+  gain_ = g;
+  return true;
+}
+
+Action PropagationExplorer::searchDone(uint8_t purpose) {
+  if (purpose == kReturnLine) {
+    prop_ = next_;
+    if (targetCost_ == 0 || targetCost_ == 0xFFFF || !travelTo(target_, targetCost_)) return begin(next_);
+    phase_ = Phase::Return;
+    return follow();
+  }
+  if (gain_ == 0 || !travelTo(target_, targetCost_)) return Action::done();
+  bigArea_ = gain_ >= config_.bigAreaCells;
+  phase_ = Phase::SweepTravel;
   return follow();
 }
 
 // After the stop heuristic: go to the nearest spot from which unknown cells can still be read.
 Action PropagationExplorer::sweep() {
   ++sweeps_;
-  Cell target{};
-  uint16_t targetCost = 0;
-  int16_t gain = 0;
-  planner_.search(map_.grid(), pose_, [&](Cell c, uint16_t cost) {
-    int16_t g = 0;
-    for (int d = 0; d < 4; ++d) g = static_cast<int16_t>(g + unknownAhead(c, static_cast<Dir>(d)));
-    if (g == 0) return false;
-    target = c;
-    targetCost = cost;
-    gain = g;
-    return true;
-  });
-  if (gain == 0 || !travelTo(target, targetCost)) return Action::done();
-  bigArea_ = gain >= config_.bigAreaCells;
-  phase_ = Phase::SweepTravel;
-  return follow();
+  target_ = Cell{};
+  targetCost_ = 0;
+  gain_ = 0;
+  return startSearch(kSweepTarget);
 }
 
 }  // namespace nxtmap

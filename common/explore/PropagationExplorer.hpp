@@ -45,6 +45,16 @@ class PropagationExplorer final : public Explorer {
   Action deviate();
   Action ended(PropagationOutcome o);
   Action sweep();
+  bool searchVisit(uint8_t purpose, Cell c, uint16_t cost) override;
+  Action searchDone(uint8_t purpose) override;
+  enum Search : uint8_t { kReturnLine = 0, kSweepTarget = 1 };
+  // The search in progress.
+  Cell onRow_{}, onColumn_{};    // return line: the two cells on the start lines
+  Cell target_{};                // best cell found
+  uint16_t targetCost_ = 0xFFFF;
+  uint8_t found_ = 0;
+  int16_t gain_ = 0;
+  Propagation next_{};           // return line: the propagation after the return
   Action begin(Propagation p);
   bool passable(Cell c) const { return map_.at(c) == CellState::Free; }
 

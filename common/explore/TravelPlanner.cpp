@@ -21,6 +21,14 @@ void TravelPlanner::begin() {
   overflow_ = false;
 }
 
+void TravelPlanner::start(Pose from) {
+  begin();
+  const uint8_t startAxis = isVertical(from.heading) ? 0 : 1;
+  tryPush(stateId(from.cell, startAxis), 0);
+  layerEnd_ = count_;
+  dist_ = 0;
+}
+
 uint16_t TravelPlanner::stateId(Cell c, uint8_t axis) const {
   const uint32_t ix = static_cast<uint32_t>(c.x) & static_cast<uint32_t>(width_ - 1);
   const uint32_t iy = static_cast<uint32_t>(c.y) & static_cast<uint32_t>(height_ - 1);

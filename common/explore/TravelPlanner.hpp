@@ -29,6 +29,14 @@ class TravelPlanner {
   template <class Visit>
   bool search(const RoomGrid& grid, Pose from, Visit&& visit);
 
+  // The same search in slices, so one call never costs more than a bounded amount of CPU:
+  // start() it, then proceed() with at most maxStates states per call until it is not Running.
+  enum class Status : uint8_t { Running, Done };
+  void start(Pose from);
+  template <class Visit>
+  Status proceed(const RoomGrid& grid, Visit&& visit, uint16_t maxStates);
+  bool overflowed() const { return overflow_; }
+
   // After search(): the route to `target`, a cell visited with cost `cost`. Keeps the first
   // Route::kCapacity moves when longer. False when target was not reached.
   bool routeTo(const RoomGrid& grid, Cell target, uint16_t cost, Route& out) const;
@@ -46,41 +54,50 @@ class TravelPlanner {
   uint16_t* queue_;
   uint16_t capacity_;
   uint16_t head_ = 0, count_ = 0;
+  uint16_t layerEnd_ = 0;  // states left in the current distance layer
+  uint16_t dist_ = 0;      // cost of the current layer
   bool overflow_ = false;
   int16_t width_, height_;
 };
 
 template <class Visit>
 bool TravelPlanner::search(const RoomGrid& grid, Pose from, Visit&& visit) {
-  begin();
-  const uint8_t startAxis = isVertical(from.heading) ? 0 : 1;
-  if (!tryPush(stateId(from.cell, startAxis), 0)) return false;
-  uint16_t layerEnd = count_;  // states left in the current distance layer
-  uint16_t dist = 0;
-  while (count_ > 0) {
-    if (layerEnd == 0) {
-      ++dist;
-      layerEnd = count_;
+  start(from);
+  while (proceed(grid, visit, 0xFFFF) == Status::Running) {
+  }
+  return !overflow_;
+}
+
+template <class Visit>
+TravelPlanner::Status TravelPlanner::proceed(const RoomGrid& grid, Visit&& visit, uint16_t maxStates) {
+  for (uint16_t n = 0; n < maxStates; ++n) {
+    if (count_ == 0) return Status::Done;
+    if (layerEnd_ == 0) {
+      ++dist_;
+      layerEnd_ = count_;
     }
     const uint16_t id = queue_[head_];
     head_ = static_cast<uint16_t>((head_ + 1) % capacity_);
     --count_;
-    --layerEnd;
+    --layerEnd_;
     const Cell c = cellOf(grid, id);
     const uint32_t ci = id >> 1;
     if (reported_.atIndex(ci) == 0) {
       reported_.setIndex(ci, 1);
-      if (visit(c, dist)) return !overflow_;
+      if (visit(c, dist_)) {
+        count_ = 0;  // stopped: nothing left to do
+        return Status::Done;
+      }
     }
     const uint8_t axis = id & 1u;
-    const uint8_t next = static_cast<uint8_t>((dist + 1) % 3);
+    const uint8_t next = static_cast<uint8_t>((dist_ + 1) % 3);
     tryPush(static_cast<uint16_t>(id ^ 1u), next);  // turn onto the other axis
     const Dir a = axis == 0 ? Dir::North : Dir::East;
     const Cell n1 = advance(c, a), n2 = advance(c, opposite(a));
     if (grid.isFree(n1)) tryPush(stateId(n1, axis), next);
     if (grid.isFree(n2)) tryPush(stateId(n2, axis), next);
   }
-  return !overflow_;
+  return count_ == 0 ? Status::Done : Status::Running;
 }
 
 // Storage for a TravelPlanner, sized at compile time.

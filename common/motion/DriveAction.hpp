@@ -14,6 +14,8 @@ struct DriveAction {
     Rotate,  // turn in place by `value` milliradians, + = clockwise; answer DriveEvent::rotated
     Drive,   // drive `value` mm straight, + forward, - backward; answer DriveEvent::driven
     Done,    // mapping is finished
+    Think,   // the core needs more CPU before it can decide (nothing moves): answer
+             // DriveEvent::thought() when convenient, e.g. on the next pass of the main loop
   };
   Kind kind = Kind::Done;
   Sensor sensor = Sensor::Front;
@@ -23,6 +25,7 @@ struct DriveAction {
   static constexpr DriveAction rotate(int32_t mrad) { return DriveAction{Kind::Rotate, Sensor::Front, mrad}; }
   static constexpr DriveAction drive(int32_t mm) { return DriveAction{Kind::Drive, Sensor::Front, mm}; }
   static constexpr DriveAction done() { return DriveAction{Kind::Done, Sensor::Front, 0}; }
+  static constexpr DriveAction think() { return DriveAction{Kind::Think, Sensor::Front, 0}; }
 };
 
 }  // namespace nxtmap

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 
+#include "common/explore/Pose.hpp"
 #include "common/grid/Cell.hpp"
 #include "common/sensing/RangeReading.hpp"
 
@@ -8,13 +9,26 @@ namespace nxtmap {
 
 // The answer to the previous DriveAction (or the start of a run).
 struct DriveEvent {
-  enum class Kind : uint8_t { Start, Range, Rotated, Driven };
+  enum class Kind : uint8_t { Start, Range, Rotated, Driven, Thought };
   Kind kind = Kind::Start;
   Sensor sensor = Sensor::Front;  // Range
   RangeReading reading;           // Range
   bool blocked = false;           // Driven: the wheels stalled; the drive layer went back to where it started
+  Pose pose{};                    // Start: where the robot stands on the explorer's map
 
   static constexpr DriveEvent start() { return DriveEvent{}; }
+  // Start (or go on) from a known pose on the explorer's map, at the cell's centre on the axis.
+  static DriveEvent startAt(const Pose& p) {
+    DriveEvent e;
+    e.pose = p;
+    return e;
+  }
+  // The answer to DriveAction::think().
+  static DriveEvent thought() {
+    DriveEvent e;
+    e.kind = Kind::Thought;
+    return e;
+  }
   static DriveEvent range(Sensor s, const RangeReading& r) {
     DriveEvent e;
     e.kind = Kind::Range;

@@ -97,6 +97,9 @@ DriveAction Pilot::begin(const Action& a) {
     }
     case Action::Kind::Move:
       return beginMove();
+    case Action::Kind::Think:
+      phase_ = Phase::Think;
+      return DriveAction::think();
     case Action::Kind::Done:
       break;
   }
@@ -146,7 +149,7 @@ DriveAction Pilot::step(const DriveEvent& e) {
     case DriveEvent::Kind::Start:
       tracker_.reset();
       readHere_ = 0;
-      return begin(explorer_.step(Event::start()));
+      return begin(explorer_.step(Event::startAt(e.pose)));
     case DriveEvent::Kind::Range:
       observe(e.sensor, e.reading);
       if (phase_ == Phase::PoseRead) {
@@ -165,6 +168,9 @@ DriveAction Pilot::step(const DriveEvent& e) {
         tracker_.rotated(commandMrad_, pending_.amount / 2);
         return begin(explorer_.step(Event::turned(pending_.amount)));
       }
+      break;
+    case DriveEvent::Kind::Thought:
+      if (phase_ == Phase::Think) return begin(explorer_.step(Event::thought()));
       break;
     case DriveEvent::Kind::Driven:
       if (phase_ != Phase::Drive) break;

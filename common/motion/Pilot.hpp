@@ -43,7 +43,7 @@ class Pilot {
   uint32_t poseReadings() const { return poseReads_; }
 
  private:
-  enum class Phase : uint8_t { Idle, ExplorerRead, PoseRead, Turn, Steer, Drive, Done };
+  enum class Phase : uint8_t { Idle, ExplorerRead, PoseRead, Turn, Steer, Drive, Think, Done };
 
   DriveAction begin(const Action& a);
   DriveAction beginMove();

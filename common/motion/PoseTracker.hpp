@@ -8,7 +8,7 @@ namespace nxtmap {
 // How much the wheels and sensors are trusted (1 sigma each). Defaults fit an NXT with
 // tachometer-controlled motion on a smooth floor; they may be pessimistic, never zero.
 struct PoseNoise {
-  int32_t turnMradPerQuarter = 20;  // heading error of a 90 deg turn (smaller turns: less, floor 1/4)
+  int32_t turnMradPerQuarter = 12;  // heading error of a 90 deg turn (smaller turns: less, floor 1/4)
   int32_t slipPerMille = 20;        // along-track error per mm driven
   int32_t driveMradPerCell = 3;     // heading error picked up per cell driven
   int32_t readingMm = 8;            // a filtered reading of a known wall face

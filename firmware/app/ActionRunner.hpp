@@ -15,7 +15,9 @@ namespace nxtmap::fw {
 // through the SonarSequencer into a RangeFilter until it is done. Drive (mm): both wheels the
 // same counts; if the motion is blocked, the robot drives back to where it started and answers
 // driven(blocked). Rotate (mrad, + clockwise): a spin on the spot, left wheel forward for
-// clockwise. Pure logic: wheel counts and time in, wheel power out.
+// clockwise. Think: the core wants more CPU; answered with thought() on the next poll (the next
+// main-loop pass), so drivers and motion control run in between. Pure logic: wheel counts and time
+// in, wheel power out.
 class ActionRunner {
  public:
   struct Wheels {
@@ -55,6 +57,9 @@ class ActionRunner {
         phase_ = Phase::Rotating;
         break;
       }
+      case DriveAction::Kind::Think:
+        phase_ = Phase::Thinking;
+        break;
       case DriveAction::Kind::Done:
         phase_ = Phase::Idle;
         break;
@@ -68,6 +73,8 @@ class ActionRunner {
         return false;
       case Phase::Reading:
         return pollRead(nowMs, out);
+      case Phase::Thinking:
+        return finish(DriveEvent::thought(), out);
       case Phase::Driving: {
         const MotionController::Status s = motion_.update(now.left, now.right, nowMs);
         if (s == MotionController::Status::Done) return finish(DriveEvent::driven(false), out);
@@ -112,6 +119,8 @@ class ActionRunner {
       case Phase::Reading:
         filter_.reset();
         break;
+      case Phase::Thinking:
+        break;
       case Phase::Driving:
       case Phase::Rotating:
         motion_.start(now.left, now.right, target_.left - now.left, target_.right - now.right, nowMs);
@@ -126,7 +135,7 @@ class ActionRunner {
   int8_t power(int wheel) const { return motion_.power(wheel); }
 
  private:
-  enum class Phase : uint8_t { Idle, Reading, Driving, Backing, Rotating };
+  enum class Phase : uint8_t { Idle, Reading, Thinking, Driving, Backing, Rotating };
 
   bool pollRead(uint32_t nowMs, DriveEvent& out) {
     sonar_.poll(nowMs);

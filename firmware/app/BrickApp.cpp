@@ -14,6 +14,7 @@ constexpr uint32_t kBlinkMs = 500;      // robot pixel blink and status refresh
 constexpr uint32_t kMapRedrawMs = 500;   // the map is redrawn at most this often, and only when it changed
 constexpr uint32_t kButtonStableMs = 50;
 constexpr uint16_t kAvrSilentTripMs = 100;
+constexpr uint32_t kRadioPeriodMs = 50;
 constexpr uint32_t kSoftI2cTickRc = reg::kMck / 2 / 28800;  // 3 ticks per bit at 9600 bit/s
 }  // namespace
 
@@ -28,12 +29,13 @@ MapExport g_mapExport;
 }
 
 // One sensor update: a filtered reading through the pilot into the explorer (marking rules and
-// the explorer's next decision).
+// the explorer's next decision), or one more slice of a decision (a Thought event). The emulator
+// times this function from entry to return; g_sensorUpdates counts the readings.
 extern "C" {
 volatile uint32_t g_sensorUpdates = 0;
 __attribute__((noinline)) DriveAction nxtmapSensorUpdate(Pilot* pilot, const DriveEvent* e) {
   const DriveAction a = pilot->step(*e);
-  g_sensorUpdates = g_sensorUpdates + 1;
+  if (e->kind == DriveEvent::Kind::Range) g_sensorUpdates = g_sensorUpdates + 1;
   return a;
 }
 }
@@ -153,14 +155,14 @@ void BrickApp::startExploring(Strategy s, uint32_t now) {
     // Resume a stopped run: the action that was cut short carries on to where it was going.
     if (!runner_.resume(wheels(), now)) runner_.begin(pending_, wheels(), now);
   } else {
-    // A new run maps from where the robot stands: that spot is the new map's origin.
-    map_.clear();
-    link_.mapRestarted();
+    // A new run on the map as it is (empty in a new room, or what earlier runs, paths and the PC's
+    // map left), from where the robot stands.
+    const Pose here = pose();
     poseFromPath_ = false;
     if (s == Strategy::Frontier) explorer_ = new (explorerBuf_) FrontierExplorer(map_, planner_, explorerConfig_);
     else explorer_ = new (explorerBuf_) PropagationExplorer(map_, planner_, explorerConfig_);
     pilot_ = new (pilotBuf_) Pilot(*explorer_, PilotConfig{});
-    pending_ = pilot_->step(DriveEvent::start());
+    pending_ = pilot_->step(DriveEvent::startAt(here));
     runner_.begin(pending_, wheels(), now);
   }
   mapDirty_ = true;
@@ -186,9 +188,9 @@ void BrickApp::takeMapChunk(const protocol::MapChunkMsg& chunk) {
   if (mode_ == Mode::Exploring || mode_ == Mode::Following) stop();
   if (chunk.chunkIndex == 0) {
     map_.clear();
-    explorer_ = nullptr;  // the map now comes from the PC; a new run starts a new map
+    restPose_ = pose();  // the robot stays where it is on the PC's map (same frame)
+    explorer_ = nullptr;  // the next run starts on the PC's map from there
     pilot_ = nullptr;
-    restPose_ = Pose{};
     poseFromPath_ = false;
   }
   for (uint16_t i = 0; i < chunk.count; ++i) {
@@ -233,7 +235,8 @@ void BrickApp::driveRobot(uint32_t now) {
   if (!runner_.poll(wheels(), now, e)) return;
   driveMotors();  // the action is over: motors to rest before a possibly long explorer decision
   if (mode_ == Mode::Exploring) {
-    pending_ = e.kind == DriveEvent::Kind::Range ? nxtmapSensorUpdate(pilot_, &e) : pilot_->step(e);
+    const bool thinking = e.kind == DriveEvent::Kind::Range || e.kind == DriveEvent::Kind::Thought;
+    pending_ = thinking ? nxtmapSensorUpdate(pilot_, &e) : pilot_->step(e);
     mapDirty_ = true;
     if (pending_.kind == DriveAction::Kind::Done || pilot_->finished()) {
       mode_ = Mode::Done;
@@ -288,10 +291,16 @@ void BrickApp::serveRadio(uint32_t now) {
   while (bt_.readByte(b)) link_.receive(b);
   protocol::Command c;
   while (link_.nextCommand(c)) carryOut(c, now);
-  if (!bt_.streaming()) return;
-  const protocol::BrickReport r = report();
+  // Outgoing frames: one per pass while the link has some, then a pause of kRadioPeriodMs. Building
+  // a frame scans the map (MapSync: ~0.45 M instructions, ~10 ms), too much work to repeat in every
+  // 1 ms pass, and none while the wheels are driven so the motion control keeps its 1 ms rhythm.
+  if (!bt_.streaming() || bt_.txSpace() < protocol::kMaxFrame) return;
+  if (runner_.power(0) != 0 || runner_.power(1) != 0) return;
+  if (!radioBurst_ && now - lastRadioMs_ < kRadioPeriodMs) return;
+  lastRadioMs_ = now;
   protocol::Frame f;
-  while (bt_.txSpace() >= protocol::kMaxFrame && link_.transmit(now, r, f)) (void)bt_.write(f.bytes, f.size);
+  radioBurst_ = link_.transmit(now, report(), f);
+  if (radioBurst_) (void)bt_.write(f.bytes, f.size);
 }
 
 void BrickApp::draw(uint32_t now) {

@@ -112,7 +112,8 @@ class BrickApp {
   Button lastButton_ = Button::None;
   Button candidate_ = Button::None;
   uint32_t candidateSince_ = 0;
-  uint32_t lastDrawMs_ = 0, lastMapDrawMs_ = 0;
+  uint32_t lastDrawMs_ = 0, lastMapDrawMs_ = 0, lastRadioMs_ = 0;
+  bool radioBurst_ = false;  // the last transmit produced a frame: ask again next pass
   bool mapDirty_ = true;
   int8_t mapPage_ = -1;  // next map band to draw, -1 = none pending
   bool blink_ = false;

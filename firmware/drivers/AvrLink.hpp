@@ -8,8 +8,9 @@ namespace nxtmap::fw {
 
 // The TWI master side of the AVR link. tick() runs in the 1 ms timer interrupt, onInterrupt()
 // in the TWI interrupt (highest priority). Sequence: bus reset -> handshake (47 bytes) -> 2 ms
-// pause -> then alternately one 9-byte command write and one 13-byte status read, one transfer per
-// tick. A transfer still busy after kTimeoutMs, a NACK, or kMaxBadFrames bad checksums in a row
+// pause -> then alternately one 9-byte command write and one 13-byte status read, one transfer
+// every kTransferPeriodMs ticks (LEGO's firmware uses 1 ms; 2 ms still puts a new motor command on
+// the wire every 4 ms and halves the TWI interrupt load, one interrupt per byte). A transfer still busy after kTimeoutMs, a NACK, or kMaxBadFrames bad checksums in a row
 // restart from the handshake. Bus: read(addr) / write(addr, value) register access.
 template <class Bus>
 class AvrLink {
@@ -18,6 +19,7 @@ class AvrLink {
   static constexpr uint8_t kTimeoutMs = 30;
   static constexpr uint8_t kMaxBadFrames = 3;
   static constexpr uint8_t kSettleMs = 2;
+  static constexpr uint8_t kTransferPeriodMs = 2;
 
   explicit AvrLink(Bus& bus) : bus_(bus) {}
 
@@ -74,14 +76,21 @@ class AvrLink {
         state_ = State::Settle;
         break;
       case State::Settle:
-        if (--waitMs_ == 0) state_ = State::Send;
+        if (--waitMs_ == 0) {
+          state_ = State::Send;
+          periodMs_ = kTransferPeriodMs - 1;  // the first command goes out on the next tick
+        }
         break;
       case State::Send:
+        if (++periodMs_ < kTransferPeriodMs) break;
+        periodMs_ = 0;
         packAvrCommand(command_, buf_);
         startWrite(kAvrTxBytes);
         state_ = State::Receive;
         break;
       case State::Receive:
+        if (++periodMs_ < kTransferPeriodMs) break;
+        periodMs_ = 0;
         startRead(kAvrRxBytes);
         state_ = State::Send;
         break;
@@ -172,7 +181,7 @@ class AvrLink {
   volatile bool busy_ = false;
   bool reading_ = false;
   uint8_t len_ = 0, pos_ = 0;
-  uint8_t busyMs_ = 0, waitMs_ = 0, badInRow_ = 0;
+  uint8_t busyMs_ = 0, waitMs_ = 0, badInRow_ = 0, periodMs_ = 0;
   uint16_t silentMs_ = 0xFFFF;
   uint32_t goodFrames_ = 0, badFrames_ = 0, restarts_ = 0;
 };

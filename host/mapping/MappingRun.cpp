@@ -11,6 +11,7 @@ ExplorerConfig explorerConfigFor(const sim::World& world, const RunConfig& c) {
   e.geometry.minCm = static_cast<int16_t>(std::lround(c.minRangeM * 100.0));
   e.geometry.maxCm = static_cast<int16_t>(std::lround(c.rangeM * 100.0));
   e.geometry.mountCm = 0;
+  e.searchSliceStates = c.searchSliceStates;
   const double beam = c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.coneHalfAngleDeg;
   if (beam > 0.0) {
     const double sure = 0.5 * e.geometry.cellCm / std::tan(beam * 3.141592653589793 / 180.0) - e.geometry.mountCm;
@@ -61,6 +62,8 @@ DriveEvent MappingRun::carryOut(const DriveAction& a) {
       return DriveEvent::rotated();
     case DriveAction::Kind::Drive:
       return DriveEvent::driven(!robot_.drive(a.value / 10.0));
+    case DriveAction::Kind::Think:
+      return DriveEvent::thought();
     case DriveAction::Kind::Done:
       break;
   }

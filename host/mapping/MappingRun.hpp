@@ -26,7 +26,8 @@ struct RunConfig {
   uint64_t seed = 1;
   Strategy strategy = Strategy::Propagation;
   double beamHalfAngleDeg = -1.0;         // the robot's sonar beam, known to it (< 0: the noise profile's cone)
-  bool poseCorrection = true;             // the pilot keeps the robot on the grid (off: dead reckoning)
+  bool poseCorrection = true;
+  uint16_t searchSliceStates = 32;        // travel-search states per explorer step (brick CPU budget)             // the pilot keeps the robot on the grid (off: dead reckoning)
 };
 
 // One mapping run: the common core's explorer and pilot driven by the simulated robot, exactly as

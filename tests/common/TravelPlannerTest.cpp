@@ -57,5 +57,42 @@ TEST(TravelPlanner, ReportsQueueOverflowInsteadOfOverrunning) {
   EXPECT_FALSE(planner.search(f.grid(), Pose{{0, 0}, Dir::North}, [](Cell, uint16_t) { return false; }));
 }
 
+TEST(TravelPlanner, SlicedSearchVisitsTheSameCellsAtTheSameCosts) {
+  test::GridFixture f;
+  f.draw({"......", ".##.#.", "......", "#.#...", "......"});
+  for (const uint16_t slice : {uint16_t{1}, uint16_t{3}, uint16_t{1000}}) {
+    TravelStorage<32, 32, 512> a, b;
+    TravelPlanner whole(a.view(), 32, 32), sliced(b.view(), 32, 32);
+    std::vector<std::pair<Cell, uint16_t>> expected, got;
+    const Pose from{{0, 0}, Dir::North};
+    ASSERT_TRUE(whole.search(f.grid(), from, [&](Cell c, uint16_t cost) {
+      expected.emplace_back(c, cost);
+      return false;
+    }));
+    sliced.start(from);
+    int calls = 0;
+    auto visit = [&](Cell c, uint16_t cost) {
+      got.emplace_back(c, cost);
+      return false;
+    };
+    while (sliced.proceed(f.grid(), visit, slice) == TravelPlanner::Status::Running) ++calls;
+    EXPECT_EQ(got, expected) << "slice " << slice;
+    if (slice == 1) {
+      EXPECT_GT(calls, static_cast<int>(expected.size()));  // one state per call
+    }
+    // The sliced search leaves the same labels behind: the same route comes out.
+    Route ra, rb;
+    const auto& last = expected.back();
+    ASSERT_TRUE(whole.routeTo(f.grid(), last.first, last.second, ra));
+    ASSERT_TRUE(sliced.routeTo(f.grid(), last.first, last.second, rb));
+    ASSERT_EQ(ra.remaining(), rb.remaining());
+    while (!ra.empty()) {
+      EXPECT_EQ(ra.front(), rb.front());
+      ra.pop();
+      rb.pop();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace nxtmap

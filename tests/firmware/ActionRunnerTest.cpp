@@ -116,6 +116,17 @@ TEST(ActionRunner, AStoppedDriveResumesToItsOriginalTarget) {
   EXPECT_FALSE(r.runner.resume(r.wheels(), r.now));  // nothing left to resume
 }
 
+TEST(ActionRunner, ThinkIsAnsweredOnTheNextPollWithoutMoving) {
+  Robot r;
+  r.runner.begin(DriveAction::think(), r.wheels(), r.now);
+  EXPECT_TRUE(r.runner.busy());
+  DriveEvent e;
+  ASSERT_TRUE(r.runner.poll(r.wheels(), r.now, e));
+  EXPECT_EQ(e.kind, DriveEvent::Kind::Thought);
+  EXPECT_EQ(r.runner.power(0), 0);
+  EXPECT_FALSE(r.runner.busy());
+}
+
 TEST(ActionRunner, AReadFiltersSamplesOfTheSensorsPort) {
   Robot r;
   r.sensors[3].regs[0x42] = 55;  // Left = port 4

@@ -105,7 +105,12 @@ TEST(AvrLink, HandshakeThenAlternatingCommandAndStatusFrames) {
   tickAndServe(twi, link, 3);  // settle 2 ms: nothing on the bus
   EXPECT_EQ(twi.writes.size(), 1u);
   EXPECT_EQ(twi.reads, 0);
-  tickAndServe(twi, link, 4);  // write, read, write, read
+  constexpr int kP = AvrLink<FakeBus>::kTransferPeriodMs;
+  tickAndServe(twi, link, 1);  // the first command right after the pause
+  ASSERT_EQ(twi.writes.size(), 2u);
+  tickAndServe(twi, link, kP - 1);
+  EXPECT_EQ(twi.reads, 0);     // then one transfer every kTransferPeriodMs
+  tickAndServe(twi, link, 1 + 2 * kP);  // read, write, read
   ASSERT_EQ(twi.writes.size(), 3u);
   EXPECT_EQ(twi.reads, 2);
   for (size_t w = 1; w < 3; ++w) {
@@ -128,7 +133,7 @@ TEST(AvrLink, StopIsRequestedBeforeTheLastByteOfEachTransfer) {
   AvrLink<FakeBus> link(twi.bus);
   link.init(kMck);
   twi.setStatus(0, 0);
-  tickAndServe(twi, link, 6);  // handshake, settle, one write and one read
+  tickAndServe(twi, link, 5 + AvrLink<FakeBus>::kTransferPeriodMs);  // handshake, settle, write, read
   // Between the last START and the end: a STOP before the final THR byte / before reading the last byte.
   int stops = 0;
   for (uint32_t v : twi.bus.writesTo(kTwiCr)) stops += (v & kTwiCrStop) ? 1 : 0;
@@ -141,7 +146,7 @@ TEST(AvrLink, ThreeBadChecksumsInARowRestartWithTheHandshake) {
   link.init(kMck);
   twi.setStatus(0, 0, true);
   tickAndServe(twi, link, 4);  // handshake + settle
-  tickAndServe(twi, link, 6);  // 3 writes + 3 bad reads
+  tickAndServe(twi, link, 1 + 5 * AvrLink<FakeBus>::kTransferPeriodMs);  // 3 writes + 3 bad reads
   EXPECT_EQ(link.badFrames(), 3u);
   EXPECT_EQ(link.restarts(), 1u);
   EXPECT_EQ(link.state(), AvrLink<FakeBus>::State::Down);
