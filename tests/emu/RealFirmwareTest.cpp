@@ -38,7 +38,7 @@ TEST(RealFirmware, BootsLinksAvrExploresAndNeverFaults) {
     const EmulatedRunReport r = run.run();
     ASSERT_FALSE(r.fault) << r.fault.describe();
     EXPECT_NEAR(r.emulatedSeconds, 6.0, 0.01);
-    EXPECT_GT(r.avrGood, 2000u);  // one 9-byte and one 13-byte frame every 2 ms
+    EXPECT_GT(r.avrGood, 1000u);  // a 9-byte command or a 13-byte status frame every 2 ms
     EXPECT_EQ(r.avrBad, 0u);
     for (int p = 0; p < 4; ++p) EXPECT_GT(run.brick().sensor(p).pings(), 0u) << "port " << p + 1;
     EXPECT_GT(r.sensorUpdates, 0u);
@@ -62,7 +62,7 @@ TEST(RealFirmware, RamRunImageStartsAtItsEntry) {
     EmulatedRun run(image, world, o);
     const EmulatedRunReport r = run.run();
     ASSERT_FALSE(r.fault) << r.fault.describe();
-    EXPECT_GT(r.avrGood, 500u);
+    EXPECT_GT(r.avrGood, 200u);
     EXPECT_EQ(r.avrBad, 0u);
 }
 #endif
