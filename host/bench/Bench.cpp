@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "host/bench/LinkBench.hpp"
+#include "host/bench/EmuBench.hpp"
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
 #include "host/cli/ExperimentRunner.hpp"
@@ -203,6 +204,7 @@ int run(int argc, char** argv) {
   }
   table.print();
   bench::printLinkBench(dir + "/occupancy-120.map", 1, 20);
+  nxtmap::bench::runEmuBench(dir);  // the emulated brick's budgets on the real firmware
   const int rc = nxtmap::bench::runPlanBench();
   return rc != 0 ? rc : nxtmap::bench::runHouseBench();
 }

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "host/cli/Args.hpp"
+#include "host/cli/EmulateCommand.hpp"
 #include "host/cli/Errors.hpp"
 #include "host/cli/ConnectCommand.hpp"
 #include "host/cli/ExportCommand.hpp"
@@ -25,6 +26,8 @@ int runCli(int argc, char** argv) {
   ExperimentsOptions experimentsOptions;
   CLI::App* sim = addSimCommand(app, simOptions);
   CLI::App* experiments = addExperimentsCommand(app, experimentsOptions);
+  EmulateOptions emulateOptions;
+  CLI::App* emulate = addEmulateCommand(app, emulateOptions);
   PathOptions pathOptions;
   PathsOptions pathsOptions;
   CLI::App* path = addPathCommand(app, pathOptions);
@@ -38,6 +41,7 @@ int runCli(int argc, char** argv) {
   ExportOptions exportOptions;
   CLI::App* exportCmd = addExportCommand(app, exportOptions);
   app.footer("Examples:\n  nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live\n"
+             "  nxtmap emulate worlds/seed-appendix-a/occupancy-120.map --start 1,20 --listen tcp:127.0.0.1:5555\n"
              "  nxtmap experiments worlds/seed-appendix-a --strategy both --csv results.csv --plots plots\n"
              "  nxtmap path worlds/seed-appendix-a/occupancy-120.map --from 1,20 --to 20,1 --algo seed\n"
              "  nxtmap paths worlds/movingai/dao/arena2.map --scen worlds/movingai/dao/arena2.map.scen --algo jps\n"
@@ -49,9 +53,10 @@ int runCli(int argc, char** argv) {
       const std::string command = argv[1];
       if (command != sim->get_name() && command != experiments->get_name() && command != path->get_name() &&
           command != paths->get_name() && command != connect->get_name() && command != flash->get_name() &&
-          command != simHouse->get_name() && command != exportCmd->get_name()) {
+          command != simHouse->get_name() && command != exportCmd->get_name() && command != emulate->get_name()) {
         throw CliError("unknown command '" + command +
-                       "' (commands: sim, experiments, path, paths, sim-house, export, connect, flash; see nxtmap --help)");
+                       "' (commands: sim, experiments, path, paths, sim-house, export, emulate, connect, flash; "
+                       "see nxtmap --help)");
       }
     }
     try {
@@ -67,6 +72,7 @@ int runCli(int argc, char** argv) {
       if (flash->parsed()) where = "flash: ";
       if (simHouse->parsed()) where = "sim-house: ";
       if (exportCmd->parsed()) where = "export: ";
+      if (emulate->parsed()) where = "emulate: ";
       throw CliError(where + e.what());
     }
     if (sim->parsed()) return runSim(simOptions);
@@ -77,8 +83,10 @@ int runCli(int argc, char** argv) {
     if (flash->parsed()) return runFlash(flashOptions);
     if (simHouse->parsed()) return runSimHouse(simHouseOptions);
     if (exportCmd->parsed()) return runExport(exportOptions);
+    if (emulate->parsed()) return runEmulate(emulateOptions);
     std::cout << app.help();
-    throw CliError("no command given: use sim, experiments, path, paths, sim-house or export (see nxtmap --help)");
+    throw CliError("no command given: use sim, experiments, path, paths, sim-house, export, emulate, connect or flash "
+                   "(see nxtmap --help)");
   } catch (const CliError& e) {
     printError(e.what());
     return kExitUsage;

@@ -103,6 +103,15 @@ MoveResult SimRobot::move(int cells) {
     return MoveResult{steps * dir, false};
 }
 
+bool SimRobot::setPose(double xCm, double yCm, double headingDeg) {
+    if (world_->blocked(static_cast<int>(std::floor(xCm / cellCm_)), static_cast<int>(std::floor(yCm / cellCm_))))
+        return false;
+    x_ = xCm;
+    y_ = yCm;
+    setHeading(headingDeg);
+    return true;
+}
+
 void SimRobot::rotate(double deg) {
     const double scale = std::max(0.25, std::abs(deg) / 90.0);
     setHeading(heading_ + deg + gaussian(noise_.turnSigmaDeg * scale));

@@ -34,6 +34,9 @@ public:
     MoveResult move(int cells);
     // Turns by eighths of a full turn, + = clockwise (2 = 90 degrees right).
     void turn(int eighths);
+    // Continuous motion (the emulated brick's wheels): puts the centre at (xCm, yCm) facing headingDeg,
+    // unless that point lies in a blocked cell; then returns false and the pose is unchanged.
+    bool setPose(double xCm, double yCm, double headingDeg);
     // Turns in place by any angle, + = clockwise. The error grows with the angle: turnSigmaDeg per
     // 90 degrees, with a floor of a quarter of it for small corrections (backlash, wheel scrub).
     void rotate(double deg);

@@ -1,0 +1,113 @@
+#include "host/cli/EmulateCommand.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "host/cli/Args.hpp"
+#include "host/cli/Errors.hpp"
+#include "host/emu/EmulatedRun.hpp"
+#include "host/emu/LinkServer.hpp"
+#include "host/report/ExperimentTable.hpp"
+
+namespace nxtmap::cli {
+
+CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
+  CLI::App* c = app.add_subcommand("emulate", "the firmware image in the emulated brick, driving the simulated robot");
+  c->add_option("world", o.world, "world file: Moving AI .map or ROS map_server .yaml")->required();
+  c->add_option("--start", o.start, "start cell COL,ROW (col right, row down from the top-left)")->required();
+  c->add_option("--heading", o.heading, "initial heading N, E, S or W (default N)");
+  c->add_option("--firmware", o.firmware, "firmware ELF (default build/firmware/nxtmap.elf, see make firmware)");
+  c->add_option("--listen", o.listen, "PC side of the Bluetooth link: tcp:127.0.0.1:PORT or pty");
+  c->add_option("--lcd", o.lcd, "write the LCD picture as PNG at the end");
+  c->add_option("--speed", o.speed, "max (as fast as possible) or realtime (default max)");
+  c->add_option("--noise", o.noise, "noise profile: none, typical, harsh (default none)");
+  c->add_option("--seed", o.seed, "random seed of the noise (default 1)");
+  c->add_option("--seconds", o.seconds, "emulated time limit in seconds (default 3600)");
+  c->add_option("--enter-at", o.enterAt, "emulated second at which Enter is pressed, < 0 never (default 1)");
+  return c;
+}
+
+int runEmulate(const EmulateOptions& o) {
+  emu::EmulatedRunOptions run;
+  const CellArg start = parseCell(o.start, "--start");
+  run.brick.startCol = start.col;
+  run.brick.startRow = start.row;
+  run.brick.heading = parseHeading(o.heading);
+  run.brick.noise = parseNoise(o.noise);
+  run.brick.seed = parseSeed(o.seed);
+  if (o.speed != "max" && o.speed != "realtime")
+    throw CliError("--speed must be max or realtime, not '" + o.speed + "'");
+  run.brick.machine.realtime = o.speed == "realtime";
+  if (!(o.seconds > 0.0 && o.seconds <= 86400.0))
+    throw CliError("--seconds must lie in (0, 86400], not " + std::to_string(o.seconds));
+  run.maxSeconds = o.seconds;
+  run.pressEnterAtS = o.enterAt;
+  if (!o.lcd.empty()) {
+    const std::filesystem::path dir = std::filesystem::path(o.lcd).parent_path();
+    if (!dir.empty() && !std::filesystem::is_directory(dir))
+      throw CliError("--lcd: directory '" + dir.string() + "' does not exist");
+  }
+  const sim::World world = loadWorld(o.world);
+  checkStart(world, start.col, start.row, "");
+  emu::ElfLoad load = emu::ElfImage::load(o.firmware);
+  if (!load.image) {
+    std::string hint = std::filesystem::exists(o.firmware) ? "" : " (build it with 'make firmware' or pass --firmware)";
+    throw CliError("firmware " + load.error + hint);
+  }
+  std::unique_ptr<emu::LinkEndpoint> link;
+  if (!o.listen.empty()) {
+    std::string description;
+    try {
+      link = emu::openLink(o.listen, description);
+    } catch (const std::invalid_argument& e) {
+      throw CliError(e.what());
+    } catch (const std::runtime_error& e) {
+      throw CliError(std::string("--listen: ") + e.what());
+    }
+    std::cout << "link: " << description << " (connect the console there)\n" << std::flush;
+    run.brick.link = link.get();
+  }
+
+  emu::EmulatedRun emulated(*load.image, world, run);
+  const emu::EmulatedRunReport r = emulated.run();
+
+  auto num = [](double v, int d = 1) { return report::formatNumber(v, d); };
+  std::ostringstream out;
+  out << "run              " << world.name() << " " << world.width() << "x" << world.height() << ", start " << start.col
+      << "," << start.row << " heading " << o.heading << ", firmware " << o.firmware << ", noise "
+      << run.brick.noise.name << ", seed " << run.brick.seed << "\n"
+      << "end              "
+      << (r.fault ? "FAULT" : r.finished ? "exploration done" : "time limit reached") << "\n"
+      << "emulated time    " << num(r.emulatedSeconds, 2) << " s\n"
+      << "wall time        " << num(r.wallSeconds, 2) << " s (" << num(r.speedRatio()) << "x real time; CPU "
+      << num(r.cpuSeconds, 2) << " s = " << num(r.cpuSpeedRatio()) << "x)\n"
+      << "instructions     " << r.executed << " executed, " << r.irqs << " interrupts, " << r.idles << " idles, " << r.slices
+      << " CPU slices\n"
+      << "RAM high-water   " << r.ram.total() << " B (static " << r.ram.staticBytes << " + stack " << r.ram.stackBytes
+      << ") of 65536\n"
+      << "sensor updates   " << r.sensorUpdates << ", at most " << r.maxPerUpdate << " instructions each\n"
+      << "longest busy     " << r.maxBusy << " instructions between idles\n"
+      << "AVR frames       " << r.avrGood << " good, " << r.avrBad << " bad; sonar pings " << r.pings << "\n"
+      << "bluetooth        port " << (r.btPortOpen ? "open" : "closed") << ", PC "
+      << (r.btConnected ? "connected" : "not connected") << (r.btStreaming ? ", stream mode" : "") << ", "
+      << r.btToPc << " bytes to the PC, " << r.btFromPc << " from it\n"
+      << "robot            x " << num(r.xCm) << " cm, y " << num(r.yCm) << " cm, heading " << num(r.headingDeg)
+      << " deg, driven " << num(r.drivenCm) << " cm\n";
+  std::cout << out.str() << std::flush;
+  if (!o.lcd.empty()) {
+    std::string error;
+    if (!emulated.brick().lcd().savePng(o.lcd, 4, error)) throw CliError(error);
+    std::cout << "wrote " << o.lcd << "\n";
+  }
+  if (r.fault) {
+    printError("the emulated brick stopped: " + r.fault.describe());
+    return 1;
+  }
+  return kExitOk;
+}
+
+}  // namespace nxtmap::cli

@@ -1,0 +1,31 @@
+// `nxtmap emulate WORLD --start C,R [--firmware FILE.elf] [--listen tcp:127.0.0.1:PORT|pty] [--lcd FILE.png]
+//  [--speed max|realtime] [--noise P] [--seed N]`: the real firmware image, instruction by instruction, in
+// the emulated brick driving the simulated robot; the PC console connects to the listening end as it would
+// to a brick over Bluetooth. Prints the run's measurements at the end.
+#pragma once
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace nxtmap::cli {
+
+struct EmulateOptions {
+  std::string world;
+  std::string start;
+  std::string heading = "N";
+  std::string firmware = "build/firmware/nxtmap.elf";
+  std::string listen;        // empty = no PC side
+  std::string lcd;           // PNG of the LCD at the end
+  std::string speed = "max"; // max | realtime
+  std::string noise = "none";
+  std::string seed = "1";
+  double seconds = 3600.0;   // emulated time limit
+  double enterAt = 1.0;      // emulated second at which Enter is pressed (< 0: never)
+};
+
+CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& options);
+int runEmulate(const EmulateOptions& options);
+
+}  // namespace nxtmap::cli

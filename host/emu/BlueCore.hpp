@@ -1,0 +1,68 @@
+// BlueCore: the BC4 Bluetooth module behind USART1, running LEGO's command protocol (nxt-hardware.md 6).
+// Command mode (ARM7_CMD = PA27 low): frames [len][cmd][payload][csum BE], TX checksum over cmd+payload,
+// RX checksum including the length byte. After RESET (PA11) rises it sends RESET_INDICATION; it answers the
+// usual queries; a PC connecting on the LinkEndpoint while the port is open raises REQUEST_CONNECTION;
+// ACCEPT_CONNECTION -> CONNECT_RESULT; OPEN_STREAM -> the CMD signal (ADC channel 6) goes high; then with
+// PA27 high bytes pass through unchanged both ways (stream mode).
+#pragma once
+
+#include "host/emu/IoDevice.hpp"
+#include "host/emu/LinkEndpoint.hpp"
+#include "host/emu/Pioa.hpp"
+#include "host/emu/SerialPeer.hpp"
+
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace nxtmap::emu {
+
+class BlueCore : public SerialPeer, public IoDevice {
+public:
+    static constexpr int kResetPin = 11, kArmCmdPin = 27;
+    BlueCore(Clock& clock, Pioa& pio, LinkEndpoint* link) : clock_(clock), pio_(pio), link_(link) {}
+
+    // SerialPeer
+    void fromArm(uint8_t byte) override;
+    bool hasByteForArm() const override;
+    uint8_t takeByteForArm() override;
+
+    // Time source (not on the bus): polls the PC side every millisecond, boot delay after reset.
+    const char* name() const override { return "BC4"; }
+    bool read(uint32_t, uint32_t&) override { return false; }
+    bool write(uint32_t, uint32_t) override { return false; }
+    uint64_t nextEventAt() const override;
+    void advanceTo(uint64_t now) override;
+
+    bool cmdSignal() const { return streamOpen_; }  // BC4 CMD line (ADC 6): high = stream open
+    bool streaming() const { return streamOpen_ && pio_.level(kArmCmdPin); }
+    uint64_t commandsSeen() const { return commands_; }
+    uint64_t badFrames() const { return bad_; }
+    const std::vector<uint8_t>& unknownCommands() const { return unknown_; }
+    bool portOpen() const { return portOpen_; }
+    bool connected() const { return connected_; }
+    uint64_t bytesToPc() const { return toPc_; }
+    uint64_t bytesFromPc() const { return fromPc_; }
+
+private:
+    void command(const std::vector<uint8_t>& f);  // [cmd][payload...] of a checked frame
+    void reply(uint8_t cmd, const std::vector<uint8_t>& payload);
+    void pollLink();
+
+    Clock& clock_;
+    Pioa& pio_;
+    LinkEndpoint* link_;
+    bool running_ = false;          // RESET released
+    uint64_t bootAt_ = kNever;     // RESET_INDICATION due
+    std::vector<uint8_t> frame_;   // command-mode bytes from the ARM being assembled
+    std::deque<uint8_t> toArm_;
+    std::deque<uint8_t> pcIn_;     // stream bytes waiting for the ARM
+    bool portOpen_ = false, requested_ = false, connected_ = false, streamOpen_ = false;
+    bool pcWasConnected_ = false;
+    bool announced_ = false;       // REQUEST_CONNECTION sent for the current PC connection
+    uint64_t nextPoll_ = 0;
+    uint64_t commands_ = 0, bad_ = 0, toPc_ = 0, fromPc_ = 0;
+    std::vector<uint8_t> unknown_;
+};
+
+}  // namespace nxtmap::emu

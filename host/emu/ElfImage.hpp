@@ -1,0 +1,53 @@
+// ElfImage: a firmware ELF32 (ARM, little-endian) loaded as the chip would hold it: every PT_LOAD segment
+// at its load address (LMA), so .data's initial image sits in flash. Symbols from .symtab by name.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace nxtmap::emu {
+
+constexpr uint32_t kFlashBase = 0x00100000;
+constexpr uint32_t kFlashSize = 0x00040000;  // 256 KiB
+constexpr uint32_t kRamBase = 0x00200000;
+constexpr uint32_t kRamSize = 0x00010000;    // 64 KiB
+
+struct ElfLoad;
+
+class ElfImage {
+public:
+    static ElfLoad load(const std::string& path);
+
+    const std::vector<uint8_t>& flash() const { return flash_; }  // kFlashSize bytes, 0xFF where unused
+    const std::vector<uint8_t>& ram() const { return ram_; }      // kRamSize bytes loaded into RAM (RAM-run images)
+    // The [offset, offset + size) ranges of RAM the ELF loads (offsets from kRamBase).
+    const std::vector<std::pair<uint32_t, uint32_t>>& ramSegments() const { return ramSegments_; }
+    bool hasFlashCode() const { return flashUsed_ > 0; }
+    uint32_t flashUsed() const { return flashUsed_; }            // bytes from kFlashBase to the end of the last segment
+    uint32_t entry() const { return entry_; }
+    std::optional<uint32_t> symbol(const std::string& name) const;
+    // The first of the names that exists.
+    std::optional<uint32_t> firstSymbol(std::initializer_list<const char*> names) const;
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+    std::vector<uint8_t> flash_ = std::vector<uint8_t>(kFlashSize, 0xFF);
+    std::vector<uint8_t> ram_ = std::vector<uint8_t>(kRamSize, 0x00);
+    std::vector<std::pair<uint32_t, uint32_t>> ramSegments_;
+    uint32_t flashUsed_ = 0;
+    uint32_t entry_ = 0;
+    std::map<std::string, uint32_t> symbols_;
+    friend struct ElfLoader;
+};
+
+struct ElfLoad {
+    std::optional<ElfImage> image;
+    std::string error;  // names the file and the problem
+};
+
+}  // namespace nxtmap::emu

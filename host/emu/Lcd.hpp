@@ -1,0 +1,31 @@
+// Lcd: the UC1601 display controller (100x64 visible of 132 columns x 8 pages) on SPI. A0 (PA12) low =
+// command, high = data. Commands: column address low/high nibble, page address, reset; others are
+// accepted and recorded (on/off, bias, contrast...). Data bytes land at [page][column], column
+// auto-increments. The picture can be saved as PNG (1 = dark pixel; bit n = row 8*page+n).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+namespace nxtmap::emu {
+
+class Lcd {
+public:
+    static constexpr int kWidth = 100, kHeight = 64, kColumns = 132, kPages = 8;
+    void byte(bool data, uint8_t value);
+    bool pixel(int x, int y) const;  // x 0..99, y 0..63
+    bool displayOn() const { return on_; }
+    uint64_t dataBytes() const { return dataBytes_; }
+    // Writes a PNG (scale x scale pixels per LCD pixel); false with a reason in error.
+    bool savePng(const std::string& path, int scale, std::string& error) const;
+
+private:
+    std::array<std::array<uint8_t, kColumns>, kPages> ram_{};
+    int column_ = 0, page_ = 0;
+    bool on_ = false;
+    bool expectArg_ = false;  // the next command byte is an argument (e.g. after 0x81 contrast)
+    uint64_t dataBytes_ = 0;
+};
+
+}  // namespace nxtmap::emu

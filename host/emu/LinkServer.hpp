@@ -1,0 +1,48 @@
+// LinkServer: the PC ends of the emulated Bluetooth link. TcpLink listens on 127.0.0.1:PORT for one PC
+// at a time (a connect = the PC dialling the brick; a hang-up = the link dropping). PtyLink opens a
+// pseudo-terminal in raw mode whose slave name a serial tool (or the console) opens like /dev/rfcomm0;
+// it counts as connected from the start.
+#pragma once
+
+#include "host/emu/LinkEndpoint.hpp"
+
+#include <memory>
+#include <string>
+
+namespace nxtmap::emu {
+
+class TcpLink : public LinkEndpoint {
+public:
+    // Binds and listens; throws std::runtime_error with the reason when it cannot.
+    explicit TcpLink(int port);
+    ~TcpLink() override;
+    bool connected() override;
+    void send(const uint8_t* data, size_t n) override;
+    void receive(std::deque<uint8_t>& out) override;
+    bool waitForActivity(int timeoutMs) override;
+    int port() const { return port_; }
+
+private:
+    void drop();
+    int listen_ = -1, client_ = -1, port_ = 0;
+};
+
+class PtyLink : public LinkEndpoint {
+public:
+    PtyLink();  // throws std::runtime_error on failure
+    ~PtyLink() override;
+    const std::string& slaveName() const { return name_; }
+    bool connected() override { return true; }
+    void send(const uint8_t* data, size_t n) override;
+    void receive(std::deque<uint8_t>& out) override;
+    bool waitForActivity(int timeoutMs) override;
+
+private:
+    int master_ = -1, slave_ = -1;
+    std::string name_;
+};
+
+// "tcp:127.0.0.1:PORT" or "pty"; throws std::invalid_argument naming the problem.
+std::unique_ptr<LinkEndpoint> openLink(const std::string& spec, std::string& description);
+
+}  // namespace nxtmap::emu

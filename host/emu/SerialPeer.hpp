@@ -1,0 +1,16 @@
+// SerialPeer: what sits at the far end of a UART: takes the bytes the ARM sends and offers bytes to it.
+#pragma once
+
+#include <cstdint>
+
+namespace nxtmap::emu {
+
+class SerialPeer {
+public:
+    virtual ~SerialPeer() = default;
+    virtual void fromArm(uint8_t byte) = 0;
+    virtual bool hasByteForArm() const = 0;
+    virtual uint8_t takeByteForArm() = 0;
+};
+
+}  // namespace nxtmap::emu

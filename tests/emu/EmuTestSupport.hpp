@@ -1,0 +1,54 @@
+// Helpers of the emulator tests: the probe programs' paths, a small room, a brick with the test port.
+#pragma once
+
+#include "host/emu/Brick.hpp"
+#include "host/emu/ElfImage.hpp"
+#include "host/sim/World.hpp"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+namespace nxtmap::emu::test {
+
+inline std::string probePath(const std::string& name) { return std::string(NXTMAP_EMU_PROBE_DIR) + "/" + name + ".elf"; }
+
+inline ElfImage loadProbe(const std::string& name) {
+    ElfLoad l = ElfImage::load(probePath(name));
+    if (!l.image) throw std::runtime_error(l.error);
+    return std::move(*l.image);
+}
+
+// A 12 x 10 room: walls all round, one pillar.
+inline sim::World smallRoom() {
+    return sim::World::fromRows({"############",
+                                 "#..........#",
+                                 "#..........#",
+                                 "#..........#",
+                                 "#.....#....#",
+                                 "#..........#",
+                                 "#..........#",
+                                 "#..........#",
+                                 "#..........#",
+                                 "############"});
+}
+
+struct ProbeRun {
+    ElfImage image;
+    sim::World world;
+    std::unique_ptr<Brick> brick;
+    bool ok = false;
+    ProbeRun(const std::string& name, BrickConfig config, double seconds, LinkEndpoint* link = nullptr)
+        : image(loadProbe(name)), world(smallRoom()) {
+        config.testPort = true;
+        config.link = link;
+        if (config.startCol == 0) { config.startCol = 3; config.startRow = 3; }
+        brick = std::make_unique<Brick>(image, world, config);
+        ok = brick->runFor(seconds);
+    }
+    TestPort& port() { return *brick->testPort(); }
+    std::string fault() const { return brick->machine().fault().describe(); }
+};
+
+}  // namespace nxtmap::emu::test

@@ -1,0 +1,58 @@
+// `nxtmap emulate` from the outside: bad input gives one clear line and exit code 2; a firmware fault
+// exit code 1 with the report; a good run prints its measurements and writes the LCD picture.
+#include "tests/cli/CliTestSupport.hpp"
+
+#include <gtest/gtest.h>
+
+namespace nxtmap::cli::test {
+namespace {
+
+const std::string kRoom = "worlds/seed-appendix-a/occupancy-120.map";
+
+std::string probe(const std::string& name) { return std::string(NXTMAP_EMU_PROBE_DIR) + "/" + name + ".elf"; }
+
+void expectUsageError(const RunOutput& r, const std::string& needle) {
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("nxtmap: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+  EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+}
+
+TEST(EmulateCli, RejectsBadOptionsWithOneLine) {
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --speed warp"), "--speed must be max or realtime");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --listen udp:1"), "--listen must be tcp:127.0.0.1:PORT or pty");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --listen tcp:127.0.0.1:0"), "port must be 1..65535");
+  expectUsageError(runCli("emulate " + kRoom + " --start 0,0"), "");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --noise loud"), "noise");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --seconds -3"), "--seconds");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --firmware /nonexistent/fw.elf"), "make firmware");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --firmware README.md"), "not an ELF");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --firmware " + probe("boot") + " --lcd /nonexistent/dir/x.png"),
+                   "does not exist");
+}
+
+TEST(EmulateCli, FirmwareFaultEndsWithTheReportAndExitCode1) {
+  const RunOutput r = runCli("emulate " + kRoom + " --start 1,20 --firmware " + probe("unmodelled"));
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find("unmodelled peripheral register at pc=0x"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("address=0xfffb001c"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("end              FAULT"), std::string::npos) << r.out;
+}
+
+#ifdef NXTMAP_EMU_FIRMWARE_DIR
+TEST(EmulateCli, RealFirmwareRunPrintsMeasurementsAndLcd) {
+  TempDir dir("emucli");
+  const std::string png = dir.path("lcd.png");
+  const RunOutput r = runCli("emulate " + kRoom + " --start 1,20 --seconds 2 --firmware " +
+                             shellQuote(std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap.elf") + " --lcd " +
+                             shellQuote(png));
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("end              time limit reached"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("RAM high-water"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("x real time"), std::string::npos) << r.out;
+  EXPECT_EQ(readFile(png).substr(1, 3), "PNG");
+}
+#endif
+
+}  // namespace
+}  // namespace nxtmap::cli::test
