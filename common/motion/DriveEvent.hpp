@@ -15,6 +15,8 @@ struct DriveEvent {
   RangeReading reading;           // Range
   bool blocked = false;           // Driven: the wheels stalled; the drive layer went back to where it started
   Pose pose{};                    // Start: where the robot stands on the explorer's map
+  bool measured = false;          // Rotated/Driven: `achieved` holds what the encoders counted
+  int32_t achieved = 0;           // Rotated: mrad (+ clockwise); Driven: mm (+ forward)
 
   static constexpr DriveEvent start() { return DriveEvent{}; }
   // Start (or go on) from a known pose on the explorer's map, at the cell's centre on the axis.
@@ -42,11 +44,25 @@ struct DriveEvent {
     e.kind = Kind::Rotated;
     return e;
   }
+  // The same, with the rotation the wheel encoders measured (mrad, + clockwise).
+  static DriveEvent rotatedBy(int32_t mrad) {
+    DriveEvent e = rotated();
+    e.measured = true;
+    e.achieved = mrad;
+    return e;
+  }
   // The drive asked for was carried out, or not at all when `stalled` (robot back at its start).
   static DriveEvent driven(bool stalled) {
     DriveEvent e;
     e.kind = Kind::Driven;
     e.blocked = stalled;
+    return e;
+  }
+  // A completed drive with the distance the wheel encoders measured (mm, + forward).
+  static DriveEvent drivenBy(int32_t mm) {
+    DriveEvent e = driven(false);
+    e.measured = true;
+    e.achieved = mm;
     return e;
   }
 };

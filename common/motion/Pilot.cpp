@@ -165,11 +165,11 @@ DriveAction Pilot::step(const DriveEvent& e) {
       break;
     case DriveEvent::Kind::Rotated:
       if (phase_ == Phase::Steer) {
-        tracker_.rotated(commandMrad_, 0);
+        tracker_.rotated(e.measured ? e.achieved : commandMrad_, 0);
         return driveToCentre();
       }
       if (phase_ == Phase::Turn) {
-        tracker_.rotated(commandMrad_, pending_.amount / 2);
+        tracker_.rotated(e.measured ? e.achieved : commandMrad_, pending_.amount / 2);
         return begin(explorer_.step(Event::turned(pending_.amount)));
       }
       break;
@@ -181,7 +181,7 @@ DriveAction Pilot::step(const DriveEvent& e) {
       if (e.blocked) return begin(explorer_.step(Event::blocked()));
       {
         const Dir heading = explorer_.pose().heading;
-        tracker_.drove(driveMm_, heading);
+        tracker_.drove(e.measured ? e.achieved : driveMm_, heading);
         tracker_.rebase(heading, pending_.amount, cellMm_);
         readHere_ = 0;
       }

@@ -77,7 +77,11 @@ class ActionRunner {
         return finish(DriveEvent::thought(), out);
       case Phase::Driving: {
         const MotionController::Status s = motion_.update(now.left, now.right, nowMs);
-        if (s == MotionController::Status::Done) return finish(DriveEvent::driven(false), out);
+        if (s == MotionController::Status::Done) {
+          // Report what the encoders counted, so the pilot's pose follows the real wheels.
+          const int32_t counts = ((now.left - start_.left) + (now.right - start_.right)) / 2;
+          return finish(DriveEvent::drivenBy(drive_.mmForCounts(counts)), out);
+        }
         if (s == MotionController::Status::Blocked) {
           motion_.start(now.left, now.right, start_.left - now.left, start_.right - now.right, nowMs);
           phase_ = Phase::Backing;
@@ -93,8 +97,10 @@ class ActionRunner {
       case Phase::Rotating: {
         const MotionController::Status s = motion_.update(now.left, now.right, nowMs);
         if (s == MotionController::Status::Blocked) ++failedRotations_;
-        if (s == MotionController::Status::Done || s == MotionController::Status::Blocked)
-          return finish(DriveEvent::rotated(), out);
+        if (s == MotionController::Status::Done || s == MotionController::Status::Blocked) {
+          const int32_t counts = ((now.left - start_.left) - (now.right - start_.right)) / 2;
+          return finish(DriveEvent::rotatedBy(drive_.mradForCounts(counts)), out);
+        }
         return false;
       }
     }

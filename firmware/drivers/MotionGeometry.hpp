@@ -22,6 +22,15 @@ struct MotionGeometry {
     return roundDiv(static_cast<int64_t>(mrad) * trackMm * countsPerTurn * 113,
                     static_cast<int64_t>(2000) * wheelDiameterMm * 355);
   }
+  // The inverses, for what the encoders measured: mm driven, and mrad spun for `counts` of each
+  // wheel in opposite directions.
+  constexpr int32_t mmForCounts(int32_t counts) const {
+    return roundDiv(static_cast<int64_t>(counts) * wheelDiameterMm * 355, static_cast<int64_t>(countsPerTurn) * 113);
+  }
+  constexpr int32_t mradForCounts(int32_t counts) const {
+    return roundDiv(static_cast<int64_t>(counts) * 2000 * wheelDiameterMm * 355,
+                    static_cast<int64_t>(trackMm) * countsPerTurn * 113);
+  }
   // Spin by `eighths` of a full turn: pi cancels, counts = track * eighths * countsPerTurn / (8 * d).
   constexpr int32_t countsForTurn(int32_t eighths) const {
     return static_cast<int32_t>(roundDiv(static_cast<int64_t>(trackMm) * eighths * countsPerTurn,
