@@ -27,6 +27,9 @@ CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
   c->add_option("--noise", o.noise, "noise profile: none, typical, harsh (default none)");
   c->add_option("--seed", o.seed, "random seed of the noise (default 1)");
   c->add_option("--seconds", o.seconds, "emulated time limit in seconds (default 3600)");
+  c->add_option("--until", o.until,
+                "end the run when: explored, or disconnect (the PC left); default disconnect with --listen, "
+                "else explored (the time limit always applies)");
   c->add_option("--enter-at", o.enterAt, "emulated second at which Enter is pressed, < 0 never (default 1)");
   return c;
 }
@@ -46,6 +49,12 @@ int runEmulate(const EmulateOptions& o) {
     throw CliError("--seconds must lie in (0, 86400], not " + std::to_string(o.seconds));
   run.maxSeconds = o.seconds;
   run.pressEnterAtS = o.enterAt;
+  const std::string until = o.until.empty() ? (o.listen.empty() ? "explored" : "disconnect") : o.until;
+  if (until != "explored" && until != "disconnect")
+    throw CliError("--until must be explored or disconnect, not '" + o.until + "'");
+  if (until == "disconnect" && o.listen.empty()) throw CliError("--until disconnect needs --listen");
+  run.stopWhenExplored = until == "explored";
+  run.stopWhenPcLeaves = until == "disconnect";
   if (!o.lcd.empty()) {
     const std::filesystem::path dir = std::filesystem::path(o.lcd).parent_path();
     if (!dir.empty() && !std::filesystem::is_directory(dir))
@@ -81,7 +90,8 @@ int runEmulate(const EmulateOptions& o) {
       << "," << start.row << " heading " << o.heading << ", firmware " << o.firmware << ", noise "
       << run.brick.noise.name << ", seed " << run.brick.seed << "\n"
       << "end              "
-      << (r.fault ? "FAULT" : r.finished ? "exploration done" : "time limit reached") << "\n"
+      << (r.fault ? "FAULT" : r.pcLeft ? (r.finished ? "the PC disconnected (exploration done)" : "the PC disconnected")
+                  : r.finished ? "exploration done" : "time limit reached") << "\n"
       << "emulated time    " << num(r.emulatedSeconds, 2) << " s\n"
       << "wall time        " << num(r.wallSeconds, 2) << " s (" << num(r.speedRatio()) << "x real time; CPU "
       << num(r.cpuSeconds, 2) << " s = " << num(r.cpuSpeedRatio()) << "x)\n"

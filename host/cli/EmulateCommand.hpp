@@ -17,6 +17,7 @@ struct EmulateOptions {
   std::string heading = "N";
   std::string firmware = "build/firmware/nxtmap.elf";
   std::string listen;        // empty = no PC side
+  std::string until;         // explored | disconnect (default: disconnect with --listen, else explored)
   std::string lcd;           // PNG of the LCD at the end
   std::string speed = "max"; // max | realtime
   std::string noise = "none";

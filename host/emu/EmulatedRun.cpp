@@ -70,7 +70,17 @@ EmulatedRunReport EmulatedRun::run() {
     const auto doneAt = image_.symbol("g_explorerDone");
     const bool hasDone = doneAt.has_value();
     const Machine& machine = brick_->machine();
+    bool pcSeen = false;
     brick_->runFor(options_.maxSeconds, [&] {
+        if (options_.stopWhenPcLeaves) {
+            const bool connected = brick_->blueCore().connected();
+            if (connected) pcSeen = true;
+            if (pcSeen && !connected) {
+                r.pcLeft = true;
+                return true;
+            }
+        }
+        if (!options_.stopWhenExplored) return false;
         uint8_t d = 0;
         // Exactly 1: before start-up zeroes .bss the byte holds the 0xA5 paint.
         return hasDone && machine.readByte(*doneAt, d) && d == 1;
@@ -79,6 +89,7 @@ EmulatedRunReport EmulatedRun::run() {
     const MachineStats s = m.stats();
     r.fault = m.fault();
     r.finished = !r.fault && hasDone && readSymbolByte("g_explorerDone").value_or(0) == 1;
+    if (r.fault) r.pcLeft = false;
     r.emulatedSeconds = secondsFromCycles(s.cycles);
     r.wallSeconds = s.wallSeconds;
     r.cpuSeconds = s.cpuSeconds;

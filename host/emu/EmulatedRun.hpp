@@ -28,11 +28,14 @@ struct EmulatedRunOptions {
     BrickConfig brick;              // start, heading, noise, seed, link, realtime (brick.machine.realtime)
     double maxSeconds = 3600.0;     // emulated time limit
     double pressEnterAtS = 1.0;     // when the "user" presses Enter (< 0: never)
+    bool stopWhenExplored = true;   // end the run when the firmware reports the exploration done
+    bool stopWhenPcLeaves = false;  // end the run when a PC that was connected disconnects
     std::string timedFunction = "nxtmapSensorUpdate";  // timed when the image has it
 };
 
 struct EmulatedRunReport {
     bool finished = false;          // the firmware reported the exploration done
+    bool pcLeft = false;            // the run ended because the PC disconnected (stopWhenPcLeaves)
     EmuFault fault;
     double emulatedSeconds = 0.0;
     double wallSeconds = 0.0;
