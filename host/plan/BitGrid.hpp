@@ -32,10 +32,10 @@ class BitGrid {
   // Scans `line` (of `words` words) upwards from position `from`: the first p >= from where line is blocked
   // or where a side line (`before` or `after`) is open at p but blocked at p - 1 (a forced neighbour of a
   // move in the + direction). words * 64 when there is none.
-  static int scanUp(const uint64_t* before, const uint64_t* line, const uint64_t* after, int words, int from);
+  static inline int scanUp(const uint64_t* before, const uint64_t* line, const uint64_t* after, int words, int from);
   // The mirror: the last p <= from where line is blocked or a side line is open at p but blocked at p + 1.
   // -1 when there is none.
-  static int scanDown(const uint64_t* before, const uint64_t* line, const uint64_t* after, int words, int from);
+  static inline int scanDown(const uint64_t* before, const uint64_t* line, const uint64_t* after, int words, int from);
 
  private:
   int rowWords_ = 0;
@@ -43,5 +43,35 @@ class BitGrid {
   std::vector<uint64_t> rows_;  // paddedHeight rows of rowWords_
   std::vector<uint64_t> cols_;  // paddedWidth columns of colWords_
 };
+
+inline int BitGrid::scanUp(const uint64_t* before, const uint64_t* line, const uint64_t* after, int words, int from) {
+  if (from < 0) from = 0;
+  int k = from >> 6;
+  uint64_t mask = ~uint64_t{0} << (from & 63);
+  for (; k < words; ++k, mask = ~uint64_t{0}) {
+    const uint64_t b = before[k], a = after[k];
+    // Bit p of bLow / aLow: the side line at p - 1.
+    const uint64_t bLow = (b << 1) | (k > 0 ? before[k - 1] >> 63 : 0);
+    const uint64_t aLow = (a << 1) | (k > 0 ? after[k - 1] >> 63 : 0);
+    const uint64_t stop = (~line[k] | (b & ~bLow) | (a & ~aLow)) & mask;
+    if (stop != 0) return k * 64 + __builtin_ctzll(stop);
+  }
+  return words * 64;
+}
+
+inline int BitGrid::scanDown(const uint64_t* before, const uint64_t* line, const uint64_t* after, int words, int from) {
+  if (from >= words * 64) from = words * 64 - 1;
+  int k = from >> 6;
+  uint64_t mask = ~uint64_t{0} >> (63 - (from & 63));
+  for (; k >= 0; --k, mask = ~uint64_t{0}) {
+    const uint64_t b = before[k], a = after[k];
+    // Bit p of bHigh / aHigh: the side line at p + 1.
+    const uint64_t bHigh = (b >> 1) | (k + 1 < words ? before[k + 1] << 63 : 0);
+    const uint64_t aHigh = (a >> 1) | (k + 1 < words ? after[k + 1] << 63 : 0);
+    const uint64_t stop = (~line[k] | (b & ~bHigh) | (a & ~aHigh)) & mask;
+    if (stop != 0) return k * 64 + 63 - __builtin_clzll(stop);
+  }
+  return -1;
+}
 
 }  // namespace nxtmap::plan

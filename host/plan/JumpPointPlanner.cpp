@@ -62,6 +62,28 @@ class ScanJumper {
     return (dc != 0 && dr != 0) ? diagonal(x, y, dc, dr) : straight(x, y, dc, dr);
   }
 
+  // Intermediate-node pruning (Harabor & Grastien 2014): walks the whole diagonal (dc, dr) from (x, y) and,
+  // instead of returning each diagonal jump point d, hands over d's own successors, the jump points of the
+  // straight jumps from d: emit(k, dcs, drs, m) for k diagonal steps then m straight steps by (dcs, drs)
+  // (m = 0: d itself, the goal). The diagonal successor of d is the walk going on.
+  template <class Emit>
+  void diagonalSuccessors(int x, int y, int dc, int dr, Emit&& emit) const {
+    for (int k = 1;; ++k) {
+      if (!canStepDiagonal(x, y, dc, dr)) return;
+      x += dc;
+      y += dr;
+      if (x == gx_ && y == gy_) {
+        emit(k, 0, 0, 0);
+        return;
+      }
+      const int mh = straight(x, y, dc, 0);
+      if (mh != 0) emit(k, dc, 0, mh);
+      const int mv = straight(x, y, 0, dr);
+      if (mv != 0) emit(k, 0, dr, mv);
+    }
+  }
+  static constexpr bool kPrunesIntermediate = true;
+
  private:
   const BitGrid& b_;
   int gx_, gy_;  // the goal, padded
@@ -87,6 +109,9 @@ class TableJumper {
     }
     return v > 0 ? v : 0;
   }
+  static constexpr bool kPrunesIntermediate = false;
+  template <class Emit>
+  void diagonalSuccessors(int, int, int, int, Emit&&) const {}
 
  private:
   const JumpTable& t_;
@@ -98,7 +123,7 @@ int sign(int v) { return (v > 0) - (v < 0); }
 // A* over jump points; Jumper::jump gives the steps to the successor in a direction (0: none).
 template <class Jumper>
 PlanResult jpsSearch(const Traversability& grid, MapCell from, MapCell to, const PlanOptions& options,
-                     SearchScratch& scratch, const Jumper& jumper) {
+                     JumpScratch& scratch, const Jumper& jumper) {
   PlanResult r;
   const BitGrid& bits = grid.bits();
   const int stride = grid.stride();
@@ -110,14 +135,16 @@ PlanResult jpsSearch(const Traversability& grid, MapCell from, MapCell to, const
 
   int dirs[8][2];
   while (!scratch.openEmpty()) {
-    const SearchScratch::Entry e = scratch.pop();
-    if (scratch.closed(e.i) || e.g > scratch.g(e.i)) continue;
+    const JumpScratch::Entry e = scratch.pop();
+    if (scratch.closed(e.i)) continue;  // a better entry for the cell came first
     scratch.close(e.i);
     ++r.nodesExpanded;
+    const double eg = scratch.g(e.i);
     if (e.i == goal) {
       r.status = PlanStatus::Found;
-      r.length = e.g;
-      // Jump points back to the start, then each straight or diagonal segment filled in.
+      r.length = eg;
+      // Jump points back to the start, then each segment filled in: diagonal steps first, then straight ones
+      // (a successor past a pruned intermediate node is reached diagonally, then straight).
       std::vector<MapCell> points;
       for (uint32_t i = goal;; i = scratch.parent(i)) {
         points.push_back(grid.cellOf(i));
@@ -126,11 +153,9 @@ PlanResult jpsSearch(const Traversability& grid, MapCell from, MapCell to, const
       std::reverse(points.begin(), points.end());
       r.path.push_back(points.front());
       for (size_t k = 1; k < points.size(); ++k) {
-        const int dc = sign(points[k].col - points[k - 1].col);
-        const int dr = sign(points[k].row - points[k - 1].row);
         for (MapCell c = points[k - 1]; c != points[k];) {
-          c.col += dc;
-          c.row += dr;
+          c.col += sign(points[k].col - c.col);
+          c.row += sign(points[k].row - c.row);
           r.path.push_back(c);
         }
       }
@@ -184,12 +209,25 @@ PlanResult jpsSearch(const Traversability& grid, MapCell from, MapCell to, const
     }
     for (int k = 0; k < n; ++k) {
       const int dc = dirs[k][0], dr = dirs[k][1];
+      if (Jumper::kPrunesIntermediate && dc != 0 && dr != 0) {
+        jumper.diagonalSuccessors(x, y, dc, dr, [&](int steps, int sc, int sr, int m) {
+          const int jx = x + steps * dc + m * sc, jy = y + steps * dr + m * sr;
+          const uint32_t j = static_cast<uint32_t>(jy * stride + jx);
+          if (scratch.closed(j)) return;
+          // The cost of the diagonal to the pruned node, then the straight jump.
+          const double g = (eg + kSqrt2 * steps) + static_cast<double>(m);
+          if (g < scratch.g(j)) {
+            scratch.relax(j, g, octile(MapCell{jx, jy}, goalPadded), e.i, m == 0 ? moveTag(dc, dr) : moveTag(sc, sr));
+          }
+        });
+        continue;
+      }
       const int steps = jumper.jump(e.i, x, y, dc, dr);
       if (steps == 0) continue;
       const uint32_t j = static_cast<uint32_t>(static_cast<int>(e.i) + steps * (dr * stride + dc));
       if (scratch.closed(j)) continue;
       // Exactly octile(here, j): k straight steps or k diagonal ones.
-      const double g = e.g + (dc != 0 && dr != 0 ? kSqrt2 * steps : static_cast<double>(steps));
+      const double g = eg + (dc != 0 && dr != 0 ? kSqrt2 * steps : static_cast<double>(steps));
       if (g < scratch.g(j)) {
         scratch.relax(j, g, octile(MapCell{x + steps * dc, y + steps * dr}, goalPadded), e.i, moveTag(dc, dr));
       }
