@@ -38,7 +38,6 @@ class SearchScratch {
   void close(uint32_t i) { nodes_[i].closed = gen_; }
   double g(uint32_t i) const { return seen(i) ? nodes_[i].g : std::numeric_limits<double>::infinity(); }
   uint32_t parent(uint32_t i) const { return nodes_[i].parent; }
-  uint8_t tag(uint32_t i) const { return nodes_[i].tag; }  // as given to relax (valid when seen)
   // Records a better cost for i and queues it.
   void relax(uint32_t i, double g, double h, uint32_t parent) {
     Node& n = nodes_[i];
@@ -46,11 +45,6 @@ class SearchScratch {
     n.g = g;
     n.parent = parent;
     open_.push(Entry{g + h, g, i});
-  }
-  // The same, keeping a small tag with the cell (jump point search: the direction it was reached in).
-  void relax(uint32_t i, double g, double h, uint32_t parent, uint8_t tag) {
-    nodes_[i].tag = tag;
-    relax(i, g, h, parent);
   }
   bool openEmpty() const { return open_.empty(); }
   Entry pop() {
@@ -72,9 +66,7 @@ class SearchScratch {
     uint32_t parent = 0;  // padded index
     uint32_t seen = 0;    // generation stamps
     uint32_t closed = 0;
-    uint8_t tag = 0;      // caller's (fits in the padding: still 24 bytes)
   };
-  static_assert(sizeof(Node) == 24, "one record per cell stays 24 bytes");
   std::vector<Node> nodes_;
   uint32_t gen_ = 0;
   Heap open_;
