@@ -67,7 +67,7 @@ class ScanJumper {
   // straight jumps from d: emit(k, dcs, drs, m) for k diagonal steps then m straight steps by (dcs, drs)
   // (m = 0: d itself, the goal). The diagonal successor of d is the walk going on.
   template <class Emit>
-  void diagonalSuccessors(int x, int y, int dc, int dr, Emit&& emit) const {
+  void diagonalSuccessors(uint32_t /*i*/, int x, int y, int dc, int dr, Emit&& emit) const {
     for (int k = 1;; ++k) {
       if (!canStepDiagonal(x, y, dc, dr)) return;
       x += dc;
@@ -82,7 +82,6 @@ class ScanJumper {
       if (mv != 0) emit(k, 0, dr, mv);
     }
   }
-  static constexpr bool kPrunesIntermediate = true;
 
  private:
   const BitGrid& b_;
@@ -92,7 +91,8 @@ class ScanJumper {
 // The same jumps answered from a JumpTable, with the goal checked at query time.
 class TableJumper {
  public:
-  TableJumper(const JumpTable& table, MapCell goal) : t_(table), gx_(goal.col + 1), gy_(goal.row + 1) {}
+  TableJumper(const Traversability& grid, const JumpTable& table, MapCell goal)
+      : t_(table), s_(grid.stride()), gx_(goal.col + 1), gy_(goal.row + 1) {}
 
   int jump(uint32_t i, int x, int y, int dc, int dr) const {
     const int v = t_.at(i, JumpTable::direction(dc, dr));
@@ -109,12 +109,32 @@ class TableJumper {
     }
     return v > 0 ? v : 0;
   }
-  static constexpr bool kPrunesIntermediate = false;
+
+  // Intermediate-node pruning as in ScanJumper::diagonalSuccessors, hopping from one diagonal jump point (or
+  // target jump point) to the next by table lookups.
   template <class Emit>
-  void diagonalSuccessors(int, int, int, int, Emit&&) const {}
+  void diagonalSuccessors(uint32_t i, int x, int y, int dc, int dr, Emit&& emit) const {
+    for (int walked = 0;;) {
+      const int k = jump(i, x, y, dc, dr);
+      if (k == 0) return;
+      walked += k;
+      x += k * dc;
+      y += k * dr;
+      i = static_cast<uint32_t>(static_cast<int>(i) + k * (dr * s_ + dc));
+      if (x == gx_ && y == gy_) {
+        emit(walked, 0, 0, 0);
+        return;
+      }
+      const int mh = jump(i, x, y, dc, 0);
+      if (mh != 0) emit(walked, dc, 0, mh);
+      const int mv = jump(i, x, y, 0, dr);
+      if (mv != 0) emit(walked, 0, dr, mv);
+    }
+  }
 
  private:
   const JumpTable& t_;
+  int s_;        // stride
   int gx_, gy_;  // the goal, padded
 };
 
@@ -209,8 +229,8 @@ PlanResult jpsSearch(const Traversability& grid, MapCell from, MapCell to, const
     }
     for (int k = 0; k < n; ++k) {
       const int dc = dirs[k][0], dr = dirs[k][1];
-      if (Jumper::kPrunesIntermediate && dc != 0 && dr != 0) {
-        jumper.diagonalSuccessors(x, y, dc, dr, [&](int steps, int sc, int sr, int m) {
+      if (dc != 0 && dr != 0) {
+        jumper.diagonalSuccessors(e.i, x, y, dc, dr, [&](int steps, int sc, int sr, int m) {
           const int jx = x + steps * dc + m * sc, jy = y + steps * dr + m * sr;
           const uint32_t j = static_cast<uint32_t>(jy * stride + jx);
           if (scratch.closed(j)) return;
@@ -242,7 +262,7 @@ PlanResult jpsSearch(const Traversability& grid, MapCell from, MapCell to, const
 PlanResult JumpPointPlanner::search(const Traversability& grid, MapCell from, MapCell to, const PlanOptions& options) {
   if (!precomputed_) return jpsSearch(grid, from, to, options, scratch_, ScanJumper(grid, to));
   if (!table_ || table_->gridId() != grid.id()) table_ = std::make_unique<JumpTable>(grid);
-  return jpsSearch(grid, from, to, options, scratch_, TableJumper(*table_, to));
+  return jpsSearch(grid, from, to, options, scratch_, TableJumper(grid, *table_, to));
 }
 
 }  // namespace nxtmap::plan

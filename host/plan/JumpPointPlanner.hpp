@@ -7,10 +7,10 @@
 // cell beside the previous one is blocked; a diagonal move has none, but it stops where a straight jump
 // along either of its two components finds a jump point. nodesExpanded counts jump points closed.
 //
-// Jps follows "Improving Jump Point Search" (Harabor & Grastien, ICAPS 2014): straight jumps scan 64 cells
-// per step in the grid's row and column bitsets (BitGrid), and diagonal jump points are pruned as
-// intermediate nodes: a diagonal walk goes on to its end and queues the straight jump points found from its
-// cells directly (reached diagonally, then straight), so fewer nodes pass through the open list.
+// Both follow "Improving Jump Point Search" (Harabor & Grastien, ICAPS 2014): diagonal jump points are
+// pruned as intermediate nodes: a diagonal walk goes on to its end and queues the straight jump points found
+// from its cells directly (reached diagonally, then straight), so fewer nodes pass through the open list.
+// Jps scans straight lines 64 cells per step in the grid's row and column bitsets (BitGrid).
 #pragma once
 
 #include <memory>
