@@ -6,13 +6,18 @@
 // Pruning with no corner cutting: a straight move has a forced neighbour beside the current cell when the
 // cell beside the previous one is blocked; a diagonal move has none, but it stops where a straight jump
 // along either of its two components finds a jump point. nodesExpanded counts jump points closed.
+//
+// Both follow "Improving Jump Point Search" (Harabor & Grastien, ICAPS 2014): diagonal jump points are
+// pruned as intermediate nodes: a diagonal walk goes on to its end and queues the straight jump points found
+// from its cells directly (reached diagonally, then straight), so fewer nodes pass through the open list.
+// Jps scans straight lines 64 cells per step in the grid's row and column bitsets (BitGrid).
 #pragma once
 
 #include <memory>
 
 #include "host/plan/JumpTable.hpp"
 #include "host/plan/Planner.hpp"
-#include "host/plan/SearchScratch.hpp"
+#include "host/plan/JumpScratch.hpp"
 
 namespace nxtmap::plan {
 
@@ -26,7 +31,7 @@ class JumpPointPlanner : public Planner {
 
  private:
   bool precomputed_;
-  SearchScratch scratch_;
+  JumpScratch scratch_;
   std::unique_ptr<JumpTable> table_;  // for the last grid (precomputed only)
 };
 

@@ -24,6 +24,7 @@ Traversability::Traversability(const mapio::OccupancyMap& map, bool unknownTrave
     for (int r = 0; r < height_; ++r) {
       for (int c = 0; c < width_; ++c) cells_[index(MapCell{c, r})] = usable(c, r) ? 1 : 0;
     }
+    bits_ = BitGrid(stride(), height_ + 2, cells_);
     return;
   }
   // Summed-area table of unusable cells: (W+1) x (H+1).
@@ -43,6 +44,7 @@ Traversability::Traversability(const mapio::OccupancyMap& map, bool unknownTrave
       cells_[index(MapCell{c, r})] = bad == 0 ? 1 : 0;
     }
   }
+  bits_ = BitGrid(stride(), height_ + 2, cells_);
 }
 
 bool Traversability::validPath(const std::vector<MapCell>& path, double& lengthOut) const {

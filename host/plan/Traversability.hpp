@@ -6,7 +6,8 @@
 // (no corner cutting). Straight steps cost 1, diagonal steps sqrt(2) (cell units).
 //
 // Storage is padded by one blocked cell on every side so searches can look at a neighbour of any map cell
-// without a bounds check: index(col, row) = (row + 1) * stride() + col + 1.
+// without a bounds check: index(col, row) = (row + 1) * stride() + col + 1. The same cells are also kept as
+// bitsets (bits(), padded coordinates x = col + 1, y = row + 1) for block-based scans.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "host/mapio/OccupancyMap.hpp"
+#include "host/plan/BitGrid.hpp"
 
 namespace nxtmap::plan {
 
@@ -58,6 +60,8 @@ class Traversability {
     const int s = stride();
     return MapCell{static_cast<int>(i % static_cast<uint32_t>(s)) - 1, static_cast<int>(i / static_cast<uint32_t>(s)) - 1};
   }
+  // Passability as row and column bitsets, in padded coordinates.
+  const BitGrid& bits() const { return bits_; }
   // One legal move from `from` by (dc, dr), each in -1..1, not both 0; both cells must be map cells or padding.
   bool canStep(MapCell from, int dc, int dr) const {
     const uint32_t i = index(from);
@@ -74,6 +78,7 @@ class Traversability {
   int width_;
   int height_;
   std::vector<uint8_t> cells_;  // padded, 1 = passable
+  BitGrid bits_;                // the same cells as bitsets
 };
 
 }  // namespace nxtmap::plan

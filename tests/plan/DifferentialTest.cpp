@@ -84,6 +84,48 @@ TEST(Differential, AStarJpsDijkstraAndSeedOnRandomGrids) {
   EXPECT_GT(notFound, 50);
 }
 
+// Grids wider and taller than 64 cells, so that jps's bit scans cross word boundaries in rows and columns;
+// the diagonal walks with intermediate pruning meet many obstacles.
+TEST(Differential, JpsMatchesAStarOnGridsSpanningSeveralWords) {
+  std::mt19937 rng(512);
+  auto astar = makePlanner(Algorithm::AStar);
+  auto jps = makePlanner(Algorithm::Jps);
+  auto jpsPlus = makePlanner(Algorithm::JpsPlus);
+  const double densities[] = {0.05, 0.1, 0.2, 0.3};
+  int found = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    std::uniform_int_distribution<int> side(60, 200);
+    const int w = side(rng), h = side(rng);
+    const mapio::OccupancyMap map = randomMap(rng, w, h, densities[trial % 4], trial % 3 == 0 ? 0.03 : 0.0);
+    PlanOptions options;
+    options.unknownTraversable = trial % 5 == 0;
+    options.clearanceCells = trial % 6 == 1 ? 1 : 0;
+    const Traversability grid(map, options.unknownTraversable, options.clearanceCells);
+    for (int q = 0; q < 15; ++q) {
+      const MapCell from = randomFreeCell(rng, grid), to = randomFreeCell(rng, grid);
+      if (from.col < 0 || to.col < 0) continue;
+      const PlanResult ref = astar->plan(grid, from, to, options);
+      const std::string where = "trial " + std::to_string(trial) + " " + std::to_string(w) + "x" + std::to_string(h) +
+                                " from " + std::to_string(from.col) + "," + std::to_string(from.row) + " to " +
+                                std::to_string(to.col) + "," + std::to_string(to.row);
+      if (ref.found()) ++found;
+      for (Planner* p : {jps.get(), jpsPlus.get()}) {
+        const PlanResult r = p->plan(grid, from, to, options);
+        const std::string who = where + " " + algorithmName(p->algorithm());
+        ASSERT_EQ(r.status, ref.status) << who;
+        if (!r.found()) continue;
+        double walked = 0;
+        ASSERT_TRUE(grid.validPath(r.path, walked)) << who;
+        EXPECT_EQ(r.path.front(), from) << who;
+        EXPECT_EQ(r.path.back(), to) << who;
+        EXPECT_NEAR(walked, r.length, 1e-9) << who;
+        EXPECT_NEAR(r.length, ref.length, 1e-9) << who;
+      }
+    }
+  }
+  EXPECT_GT(found, 100);
+}
+
 TEST(Differential, JpsExpandsFewerNodesThanAStarOnOpenGrids) {
   std::mt19937 rng(7);
   const mapio::OccupancyMap map = randomMap(rng, 200, 200, 0.05, 0.0);
