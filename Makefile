@@ -62,8 +62,8 @@ test: host-san arm-common size host
 	@# The emulated brick's 18-room acceptance runs at full speed from the Release build (skipped under ASan).
 	cd $(HOST_DIR) && ctest --output-on-failure -j $(JOBS) -R 'EndToEnd'
 
-demo: host
-	$(HOST_DIR)/host/cli/nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live --delay-ms 40
+demo: host firmware
+	BUILD=$(BUILD) bash scripts/demo.sh
 
 bench: host firmware
 	NXTMAP_PEER_DIR=$(BUILD)/peer $(HOST_DIR)/host/bench/nxtmap-bench

@@ -63,10 +63,10 @@ Action Explorer::settle(const Action& a) {
 }
 
 Action Explorer::startSearch(uint8_t purpose) {
-  planner_.start(pose_);
+  planner_.start(pose_);  // clears the planner's labels: a slice of its own
   searching_ = true;
   searchPurpose_ = purpose;
-  return continueSearch();
+  return Action::think();
 }
 
 Action Explorer::continueSearch() {

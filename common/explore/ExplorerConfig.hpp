@@ -14,7 +14,7 @@ struct ExplorerConfig {
   uint32_t maxActions = 20000;  // safety stop: a run never takes more actions than this
   // Travel searches run in slices of this many search states per step (answering Action::think
   // in between), so one step stays within the brick's CPU budget (1 ms at 48 MHz).
-  uint16_t searchSliceStates = 16;
+  uint16_t searchSliceStates = 8;
 };
 
 }  // namespace nxtmap

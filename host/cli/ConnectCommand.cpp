@@ -64,7 +64,8 @@ int runConnect(const ConnectOptions& o) {
   runner.start();
   console::Console console(runner, o.link);
   const bool terminal = ::isatty(STDIN_FILENO) != 0;
-  const bool live = o.live && terminal && ::isatty(STDOUT_FILENO) != 0;
+  // The live map needs a terminal to draw on; commands may come from a script (make demo does that).
+  const bool live = o.live && ::isatty(STDOUT_FILENO) != 0;
 
   // Wait for the Hello to be answered.
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(o.connectTimeoutS);
@@ -88,13 +89,17 @@ int runConnect(const ConnectOptions& o) {
   std::string line;
   uint64_t drawn = 0;
   auto lastDraw = std::chrono::steady_clock::now();
+  // Live map: redraw when bytes arrived, at most 10 times a second (also while a command waits).
+  auto redraw = [&] {
+    if (!live || runner.changes() == drawn || std::chrono::steady_clock::now() - lastDraw < std::chrono::milliseconds(100))
+      return;
+    drawn = runner.changes();
+    lastDraw = std::chrono::steady_clock::now();
+    std::cout << "\033[H\033[2J" << console.renderMap() << console.statusLine() << "\n> " << std::flush;
+  };
+  console.onWaiting(redraw);
   while (!console.quit()) {
-    // Live map: redraw when bytes arrived, at most 10 times a second.
-    if (live && runner.changes() != drawn && std::chrono::steady_clock::now() - lastDraw > std::chrono::milliseconds(100)) {
-      drawn = runner.changes();
-      lastDraw = std::chrono::steady_clock::now();
-      std::cout << "\033[H\033[2J" << console.renderMap() << console.statusLine() << "\n> " << std::flush;
-    }
+    redraw();
     const std::string note = console.poll();
     if (!note.empty()) std::cout << note << std::flush;
     pollfd p{STDIN_FILENO, POLLIN, 0};

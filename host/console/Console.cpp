@@ -60,6 +60,7 @@ bool Console::waitFor(const std::function<bool()>& done, double seconds) {
   while (std::chrono::steady_clock::now() < end) {
     if (done()) return true;
     poll();
+    if (waiting_) waiting_();
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   return done();

@@ -44,6 +44,8 @@ class Console {
   bool quit() const { return quit_; }
   std::string renderMap() const;
   std::string statusLine() const;
+  // Called about every 20 ms while a command waits (wait explored/goal), e.g. to redraw a live map.
+  void onWaiting(std::function<void()> f) { waiting_ = std::move(f); }
 
  private:
   struct Goal {
@@ -59,6 +61,7 @@ class Console {
   std::vector<Cell> planTo(Cell target, std::string& why) const;
   void sendSegment();
   bool waitFor(const std::function<bool()>& done, double seconds);
+  std::function<void()> waiting_;
 
   link::LinkRunner& runner_;
   std::string linkText_;

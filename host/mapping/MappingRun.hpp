@@ -27,7 +27,7 @@ struct RunConfig {
   Strategy strategy = Strategy::Propagation;
   double beamHalfAngleDeg = -1.0;         // the robot's sonar beam, known to it (< 0: the noise profile's cone)
   bool poseCorrection = true;             // the pilot keeps the robot on the grid (off: dead reckoning)
-  uint16_t searchSliceStates = 16;        // travel-search states per explorer step (brick CPU budget)
+  uint16_t searchSliceStates = 8;        // travel-search states per explorer step (brick CPU budget)
 };
 
 // One mapping run: the common core's explorer and pilot driven by the simulated robot, exactly as

@@ -33,8 +33,8 @@ TEST(Thinking, SlicedSearchesGiveTheSameRunAsWholeOnes) {
       sliced.step();
     }
     const std::string name = mapping::strategyName(s);
-    EXPECT_EQ(thinksWhole, 0u) << name;
-    EXPECT_GT(thinksSliced, 10u) << name;
+    EXPECT_GT(thinksWhole, 0u) << name;  // one per search: clearing the planner is a slice of its own
+    EXPECT_GT(thinksSliced, 2 * thinksWhole) << name;
     EXPECT_EQ(whole.counters().timeHalfUnits(), sliced.counters().timeHalfUnits()) << name;
     EXPECT_EQ(whole.counters().sensorRequests, sliced.counters().sensorRequests) << name;
     for (int row = 0; row < load.world->height(); ++row)

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# make demo: the whole product on one PC. The real firmware image runs in the emulated brick in one of the
+# published rooms; the console connects to it over the (emulated) Bluetooth link, shows the live map while
+# the robot explores, sends a goal, watches the robot reach it, saves and exports the map, then sums up.
+set -euo pipefail
+BUILD=${BUILD:-build}
+NXTMAP="$BUILD/host/host/cli/nxtmap"
+FIRMWARE="$BUILD/firmware/nxtmap-sim.elf"   # the published experiments' geometry: 10 cm cells, 1 m range
+WORLD=${WORLD:-worlds/seed-appendix-a/occupancy-120.map}
+START=${START:-1,20}
+GOAL=${GOAL:-"18 3"}
+OUT=${OUT:-$BUILD/demo}
+mkdir -p "$OUT"
+for f in "$NXTMAP" "$FIRMWARE"; do
+  [ -x "$f" ] || [ -f "$f" ] || { echo "demo: $f is missing (make host firmware)" >&2; exit 1; }
+done
+
+# A free TCP port on the loopback for the brick's radio.
+PORT=""
+for p in $(seq 5560 5599); do
+  if ! (exec 3<>"/dev/tcp/127.0.0.1/$p") 2>/dev/null; then PORT=$p; break; fi
+done
+[ -n "$PORT" ] || { echo "demo: no free port in 5560-5599" >&2; exit 1; }
+
+echo "== nxtmap demo: $WORLD, start $START, firmware $FIRMWARE"
+echo "== 1. the emulated brick boots the firmware and listens on tcp:127.0.0.1:$PORT"
+"$NXTMAP" emulate "$WORLD" --start "$START" --firmware "$FIRMWARE" --listen "tcp:127.0.0.1:$PORT" \
+  --enter-at -1 --seconds 900 --lcd "$OUT/lcd.png" > "$OUT/brick.log" 2>&1 &
+BRICK=$!
+trap 'kill $BRICK 2>/dev/null || true' EXIT
+for _ in $(seq 1 100); do grep -q "^link:" "$OUT/brick.log" 2>/dev/null && break; sleep 0.1; done
+grep "^link:" "$OUT/brick.log" || { cat "$OUT/brick.log" >&2; exit 1; }
+
+echo "== 2. the console connects, starts the exploration and shows the live map"
+T0=$(date +%s)
+"$NXTMAP" connect "tcp:127.0.0.1:$PORT" <<SCRIPT
+explore
+wait explored 100
+status
+goto $GOAL
+wait goal 60
+battery
+save $OUT/room.yaml
+export $OUT/room.png
+quit
+SCRIPT
+RC=$?
+wait $BRICK || true
+trap - EXIT
+T1=$(date +%s)
+
+echo "== 3. the brick's own report"
+sed -n '/^end/,$p' "$OUT/brick.log"
+echo "== summary"
+echo "console exit code $RC; wall time $((T1 - T0)) s"
+echo "map: $OUT/room.yaml + room.pgm (ROS map_server), picture $OUT/room.png, brick LCD $OUT/lcd.png"
+exit $RC
