@@ -72,6 +72,7 @@ EmulatedRunReport EmulatedRun::run() {
     const Machine& machine = brick_->machine();
     bool pcSeen = false;
     brick_->runFor(options_.maxSeconds, [&] {
+        if (options_.onEvent && options_.onEvent(brick_->machine().clock().now)) return true;
         if (options_.stopWhenPcLeaves) {
             const bool connected = brick_->blueCore().connected();
             if (connected) pcSeen = true;

@@ -8,6 +8,7 @@
 #include "host/emu/ElfImage.hpp"
 #include "host/sim/World.hpp"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,6 +31,9 @@ struct EmulatedRunOptions {
     double pressEnterAtS = 1.0;     // when the "user" presses Enter (< 0: never)
     bool stopWhenExplored = true;   // end the run when the firmware reports the exploration done
     bool stopWhenPcLeaves = false;  // end the run when a PC that was connected disconnects
+    // Called at every event boundary with the emulated cycle count (e.g. a test driving the PC side
+    // of the link in step with the brick); returning true ends the run.
+    std::function<bool(uint64_t cycles)> onEvent;
     std::string timedFunction = "nxtmapSensorUpdate";  // timed when the image has it
 };
 
