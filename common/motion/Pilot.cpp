@@ -86,6 +86,13 @@ DriveAction Pilot::begin(const Action& a) {
   pending_ = a;
   switch (a.kind) {
     case Action::Kind::Read:
+      // The explorer marks a reading along the axis: take the known heading error out first.
+      if (config_.correct && abs32(tracker_.thetaMrad()) >= config_.minRotateMrad) {
+        phase_ = Phase::Level;
+        commandMrad_ = -tracker_.thetaMrad();
+        correctionMrad_ += static_cast<uint32_t>(abs32(commandMrad_));
+        return DriveAction::rotate(commandMrad_);
+      }
       phase_ = Phase::ExplorerRead;
       return DriveAction::read(a.sensor);
     case Action::Kind::Turn: {
@@ -164,6 +171,11 @@ DriveAction Pilot::step(const DriveEvent& e) {
       if (phase_ == Phase::ExplorerRead) return begin(explorer_.step(Event::range(e.sensor, e.reading)));
       break;
     case DriveEvent::Kind::Rotated:
+      if (phase_ == Phase::Level) {
+        tracker_.rotated(e.measured ? e.achieved : commandMrad_, 0);
+        phase_ = Phase::ExplorerRead;
+        return DriveAction::read(pending_.sensor);
+      }
       if (phase_ == Phase::Steer) {
         tracker_.rotated(e.measured ? e.achieved : commandMrad_, 0);
         return driveToCentre();

@@ -21,8 +21,9 @@ struct PilotConfig {
 // Pilot: between the explorer (cells, quarter turns) and the wheels (mm, mrad). It carries out
 // the explorer's actions while keeping the robot on the cell grid: a PoseTracker follows the
 // robot's real offset and heading error; every echo from a wall the map already knows (cell faces)
-// corrects them; each move steers towards the centre of the next cell and each turn takes the
-// heading error out. When the offset grows uncertain it reads a known wall itself (counted as a
+// corrects them; each move steers towards the centre of the next cell, each turn takes the
+// heading error out, and so does a rotation before each of the explorer's readings (a reading
+// taken at the steering angle would be marked along the axis, in the wrong cells far out). When the offset grows uncertain it reads a known wall itself (counted as a
 // sensor request, like every other reading). Never blocks; the explorer is owned by the caller.
 // Limits: the reference is the cell face, so walls off the cell edges bias the offset (up to half
 // a cell), and in open space with no known wall in range the heading still drifts.
@@ -43,7 +44,7 @@ class Pilot {
   uint32_t poseReadings() const { return poseReads_; }
 
  private:
-  enum class Phase : uint8_t { Idle, ExplorerRead, PoseRead, Turn, Steer, Drive, Think, Done };
+  enum class Phase : uint8_t { Idle, Level, ExplorerRead, PoseRead, Turn, Steer, Drive, Think, Done };
 
   DriveAction begin(const Action& a);
   DriveAction beginMove();
