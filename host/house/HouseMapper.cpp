@@ -3,7 +3,7 @@
 #include "common/motion/Pilot.hpp"
 #include "host/house/GoToExplorer.hpp"
 #include "host/house/RoomSplit.hpp"
-#include "host/house/SimDrive.hpp"
+#include "host/mapping/SimDrive.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -17,19 +17,7 @@ namespace nxtmap::house {
 namespace {
 ExplorerConfig explorerConfigFor(const sim::World& world, const HouseConfig& c) {
   ExplorerConfig e;
-  e.geometry.cellCm = static_cast<int16_t>(std::lround(world.resolutionM() * 100.0));
-  e.geometry.minCm = static_cast<int16_t>(std::lround(c.minRangeM * 100.0));
-  e.geometry.maxCm = static_cast<int16_t>(std::lround(c.rangeM * 100.0));
-  e.geometry.mountCm = 0;
-  // As MappingRun: past the distance where half the beam still falls inside one cell, an echo
-  // only proves the cells before it free.
-  const double beam = c.noise.coneHalfAngleDeg;
-  if (beam > 0.0) {
-    const double sure = 0.5 * e.geometry.cellCm / std::tan(beam * 3.141592653589793 / 180.0) - e.geometry.mountCm;
-    if (sure < e.geometry.maxCm) {
-      e.geometry.sureCm = static_cast<int16_t>(std::max(e.geometry.minCm + 1.0, std::floor(sure)));
-    }
-  }
+  e.geometry = mapping::sonarGeometryFor(world, c.minRangeM, c.rangeM, c.noise.coneHalfAngleDeg);
   return e;
 }
 
@@ -198,7 +186,7 @@ bool HouseMapper::travelTo(Cell target, const network::RoomMap& known) {
   pc.correct = config_.poseCorrection;
   Pilot pilot(go, pc);
   DriveAction a = pilot.step(DriveEvent::start());
-  while (!pilot.finished()) a = pilot.step(carryOutOnRobot(robot_, a, explorerConfig_.geometry));
+  while (!pilot.finished()) a = pilot.step(mapping::carryOutOnRobot(robot_, a, explorerConfig_.geometry));
   const Counters c = pilot.counters();
   counters_.travel.sensorRequests += c.sensorRequests;
   counters_.travel.rawSamples += c.rawSamples;

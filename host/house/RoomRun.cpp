@@ -1,6 +1,6 @@
 #include "host/house/RoomRun.hpp"
 
-#include "host/house/SimDrive.hpp"
+#include "host/mapping/SimDrive.hpp"
 
 #include <algorithm>
 #include <deque>
@@ -176,7 +176,7 @@ void RoomRun::evaluateCandidates() {
 void RoomRun::runToEnd() {
   while (!pilot_->finished()) {
     // A move decided just before a doorway was closed meets the closed doorway like a wall.
-    const DriveEvent e = drivesIntoClosed(last_) ? DriveEvent::driven(true) : carryOutOnRobot(robot_, last_, config_.geometry);
+    const DriveEvent e = drivesIntoClosed(last_) ? DriveEvent::driven(true) : mapping::carryOutOnRobot(robot_, last_, config_.geometry);
     last_ = pilot_->step(e);
     closeDoors();
     if (!pilot_->finished()) lookForDoorways();

@@ -1,22 +1,15 @@
 #include "host/mapping/MappingRun.hpp"
 
-#include <algorithm>
-#include <cmath>
+#include "host/mapping/SimDrive.hpp"
+
 
 namespace nxtmap::mapping {
 namespace {
 ExplorerConfig explorerConfigFor(const sim::World& world, const RunConfig& c) {
   ExplorerConfig e;
-  e.geometry.cellCm = static_cast<int16_t>(std::lround(world.resolutionM() * 100.0));
-  e.geometry.minCm = static_cast<int16_t>(std::lround(c.minRangeM * 100.0));
-  e.geometry.maxCm = static_cast<int16_t>(std::lround(c.rangeM * 100.0));
-  e.geometry.mountCm = 0;
+  e.geometry = sonarGeometryFor(world, c.minRangeM, c.rangeM,
+                                c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.coneHalfAngleDeg);
   e.searchSliceStates = c.searchSliceStates;
-  const double beam = c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.coneHalfAngleDeg;
-  if (beam > 0.0) {
-    const double sure = 0.5 * e.geometry.cellCm / std::tan(beam * 3.141592653589793 / 180.0) - e.geometry.mountCm;
-    if (sure < e.geometry.maxCm) e.geometry.sureCm = static_cast<int16_t>(std::max(e.geometry.minCm + 1.0, std::floor(sure)));
-  }
   return e;
 }
 }  // namespace
@@ -49,25 +42,7 @@ MappingRun::~MappingRun() = default;
 const PropagationExplorer* MappingRun::propagation() const { return propagation_.get(); }
 
 DriveEvent MappingRun::carryOut(const DriveAction& a) {
-  switch (a.kind) {
-    case DriveAction::Kind::Read: {
-      RangeFilter filter(explorerConfig_.geometry);
-      while (!filter.done()) {
-        filter.add(static_cast<uint8_t>(robot_.ping(static_cast<int>(a.sensor))));
-      }
-      return DriveEvent::range(a.sensor, filter.result());
-    }
-    case DriveAction::Kind::Rotate:
-      robot_.rotate(a.value * (180.0 / 3141.592653589793));
-      return DriveEvent::rotated();
-    case DriveAction::Kind::Drive:
-      return DriveEvent::driven(!robot_.drive(a.value / 10.0));
-    case DriveAction::Kind::Think:
-      return DriveEvent::thought();
-    case DriveAction::Kind::Done:
-      break;
-  }
-  return DriveEvent::start();
+  return carryOutOnRobot(robot_, a, explorerConfig_.geometry);
 }
 
 bool MappingRun::step() {

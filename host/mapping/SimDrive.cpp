@@ -1,8 +1,24 @@
-#include "host/house/SimDrive.hpp"
+#include "host/mapping/SimDrive.hpp"
 
 #include "common/sensing/RangeFilter.hpp"
 
-namespace nxtmap::house {
+#include <algorithm>
+#include <cmath>
+
+namespace nxtmap::mapping {
+
+RangeGeometry sonarGeometryFor(const sim::World& world, double minRangeM, double rangeM, double beamHalfAngleDeg) {
+  RangeGeometry g;
+  g.cellCm = static_cast<int16_t>(std::lround(world.resolutionM() * 100.0));
+  g.minCm = static_cast<int16_t>(std::lround(minRangeM * 100.0));
+  g.maxCm = static_cast<int16_t>(std::lround(rangeM * 100.0));
+  g.mountCm = 0;
+  if (beamHalfAngleDeg > 0.0) {
+    const double sure = 0.5 * g.cellCm / std::tan(beamHalfAngleDeg * 3.141592653589793 / 180.0) - g.mountCm;
+    if (sure < g.maxCm) g.sureCm = static_cast<int16_t>(std::max(g.minCm + 1.0, std::floor(sure)));
+  }
+  return g;
+}
 
 DriveEvent carryOutOnRobot(sim::SimRobot& robot, const DriveAction& a, const RangeGeometry& geometry) {
   switch (a.kind) {
@@ -24,4 +40,4 @@ DriveEvent carryOutOnRobot(sim::SimRobot& robot, const DriveAction& a, const Ran
   return DriveEvent::start();
 }
 
-}  // namespace nxtmap::house
+}  // namespace nxtmap::mapping

@@ -1,0 +1,22 @@
+// SimDrive: the simulated robot as the common core sees it. Its sonar geometry on a world (cells of
+// the world's resolution, the trusted range, and the sure range of the beam), and one pilot action
+// carried out on it (read: filtered samples; rotate; drive), as the firmware's drivers would.
+// Shared by single-room runs (MappingRun) and house runs.
+#pragma once
+
+#include "common/motion/DriveAction.hpp"
+#include "common/motion/DriveEvent.hpp"
+#include "common/sensing/RangeGeometry.hpp"
+#include "host/sim/SimRobot.hpp"
+#include "host/sim/World.hpp"
+
+namespace nxtmap::mapping {
+
+// Cells of the world's resolution, readings trusted in [minRangeM, rangeM]. A beam of half-angle
+// beamHalfAngleDeg (0 = a ray) reaches beside the axis beyond (cell / 2) / tan(angle): farther
+// echoes only prove the cells before them free (RangeGeometry::sureCm).
+RangeGeometry sonarGeometryFor(const sim::World& world, double minRangeM, double rangeM, double beamHalfAngleDeg);
+
+DriveEvent carryOutOnRobot(sim::SimRobot& robot, const DriveAction& a, const RangeGeometry& geometry);
+
+}  // namespace nxtmap::mapping
