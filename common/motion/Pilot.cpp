@@ -48,8 +48,71 @@ bool Pilot::knownWall(Dir d, int32_t& faceMm) const {
     const CellState st = map.at(c);
     if (st == CellState::Free) continue;
     if (st != CellState::Occupied || map.evidence(c) < config_.minWallEvidence) return false;
+    for (uint16_t i = 0; i < virtualCount_; ++i) {
+      if (virtual_[i] == c) return false;
+    }
     faceMm = (2 * k - 1) * cellMm_ / 2 - static_cast<int32_t>(g.mountCm) * 10;
     return true;
+  }
+  return false;
+}
+
+int16_t Pilot::wallLine(Dir d, int32_t rangeMm) const {
+  // The echo's cell along d: its face lies (k - 1/2) cells from the believed cell's centre.
+  const RangeGeometry& g = explorer_.config().geometry;
+  const int32_t fromCentre = rangeMm + static_cast<int32_t>(g.mountCm) * 10 + tracker_.along(d);
+  const int32_t k = (2 * fromCentre + cellMm_) / (2 * cellMm_);
+  const Cell at = explorer_.pose().cell;
+  const int32_t base = isVertical(d) ? at.y : at.x;
+  const int32_t sign = isVertical(d) ? dy(d) : dx(d);
+  return static_cast<int16_t>(base + sign * k);
+}
+
+void Pilot::observeSide(Dir d, int32_t rangeMm) {
+  SideMark& m = side_[static_cast<int>(d)];
+  const int16_t line = wallLine(d, rangeMm);
+  const int32_t base = runMm_ - m.runMm;
+  if (m.valid && m.line == line && abs32(base) >= config_.sideBaseMm) {
+    // Moved towards the right by (r1 - r2) for a wall on the right, (r2 - r1) on the left.
+    const bool right = d == rotate(explorer_.pose().heading, 1);
+    const int32_t moved = right ? m.rangeMm - rangeMm : rangeMm - m.rangeMm;
+    const int32_t error = static_cast<int32_t>(static_cast<int64_t>(moved - (rightMm_ - m.rightMm)) * 1000 / base);
+    if (abs32(error) <= config_.maxSideSlopeMrad) {
+      const int64_t r = tracker_.readingVariance();
+      const int64_t var = 2 * r * 1000000 / (static_cast<int64_t>(base) * base);
+      (void)tracker_.measureHeading(tracker_.thetaMrad() + error, static_cast<int32_t>(var > 1 ? var : 1));
+    }
+  } else if (m.valid && m.line == line) {
+    return;  // the same wall, too close to the last reading: keep the longer baseline
+  }
+  m = SideMark{true, true, rangeMm, runMm_, rightMm_, runMm_, line};
+}
+
+bool Pilot::sideReadWanted(Sensor& s) const {
+  if (config_.sideReadEveryMm <= 0) return false;
+  for (int i = 0; i < kSensorCount; ++i) {
+    const Sensor cand = static_cast<Sensor>(i);
+    const Dir d = sensorDir(explorer_.pose().heading, cand);
+    if (isVertical(d) == isVertical(explorer_.pose().heading)) continue;  // ahead or behind
+    if (readHere_ & bitOf(d)) continue;
+    const SideMark& m = side_[static_cast<int>(d)];
+    // Again once far enough from the last reading of the wall; or a first one of a wall the map
+    // shows beside the run (not more often than that either).
+    const bool due = abs32(runMm_ - (m.valid ? m.runMm : m.triedMm)) >= config_.sideReadEveryMm;
+    if ((m.valid || !m.tried || due) && (m.valid ? due : wallBeside(d))) {
+      s = cand;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool Pilot::wallBeside(Dir d) const {
+  const MapLayers& map = explorer_.map();
+  const Cell at = explorer_.pose().cell;
+  for (int16_t k = 1; k <= explorer_.config().geometry.hitCells(); ++k) {
+    const CellState st = map.at(advance(at, d, k));
+    if (st != CellState::Free) return st == CellState::Occupied;
   }
   return false;
 }
@@ -57,7 +120,10 @@ bool Pilot::knownWall(Dir d, int32_t& faceMm) const {
 void Pilot::observe(Sensor s, const RangeReading& r) {
   const Dir d = sensorDir(explorer_.pose().heading, s);
   readHere_ |= bitOf(d);
+  side_[static_cast<int>(d)].tried = true;
+  side_[static_cast<int>(d)].triedMm = runMm_;
   if (!config_.correct || r.status != RangeStatus::Good) return;
+  if (isVertical(d) != isVertical(explorer_.pose().heading)) observeSide(d, static_cast<int32_t>(r.cm) * 10);
   int32_t faceMm = 0;
   if (!knownWall(d, faceMm)) return;
   (void)tracker_.measure(d, faceMm - static_cast<int32_t>(r.cm) * 10);
@@ -80,6 +146,11 @@ bool Pilot::poseReadWanted(Sensor& s) const {
     }
   }
   return found;
+}
+
+DriveAction Pilot::levelling() const {
+  if (!config_.correct || abs32(tracker_.thetaMrad()) < config_.minRotateMrad) return DriveAction::done();
+  return DriveAction::rotate(-tracker_.thetaMrad());
 }
 
 DriveAction Pilot::begin(const Action& a) {
@@ -125,7 +196,7 @@ DriveAction Pilot::beginMove() {
     return DriveAction::drive(driveMm_);
   }
   Sensor s;
-  if (poseReadWanted(s)) {
+  if (poseReadWanted(s) || sideReadWanted(s)) {
     phase_ = Phase::PoseRead;
     return DriveAction::read(s);
   }
@@ -160,6 +231,8 @@ DriveAction Pilot::step(const DriveEvent& e) {
     case DriveEvent::Kind::Start:
       tracker_.reset();
       readHere_ = 0;
+      for (SideMark& m : side_) m = SideMark{};
+      runMm_ = rightMm_ = 0;
       return begin(explorer_.step(Event::startAt(e.pose)));
     case DriveEvent::Kind::Range:
       observe(e.sensor, e.reading);
@@ -182,6 +255,10 @@ DriveAction Pilot::step(const DriveEvent& e) {
       }
       if (phase_ == Phase::Turn) {
         tracker_.rotated(e.measured ? e.achieved : commandMrad_, pending_.amount / 2);
+        if (pending_.amount != 0) {  // a new straight run
+          for (SideMark& m : side_) m = SideMark{};
+          runMm_ = rightMm_ = 0;
+        }
         return begin(explorer_.step(Event::turned(pending_.amount)));
       }
       break;
@@ -193,7 +270,10 @@ DriveAction Pilot::step(const DriveEvent& e) {
       if (e.blocked) return begin(explorer_.step(Event::blocked()));
       {
         const Dir heading = explorer_.pose().heading;
-        tracker_.drove(e.measured ? e.achieved : driveMm_, heading);
+        const int32_t mm = e.measured ? e.achieved : driveMm_;
+        runMm_ += mm;
+        rightMm_ += static_cast<int32_t>(static_cast<int64_t>(mm) * tracker_.thetaMrad() / 1000);
+        tracker_.drove(mm, heading);
         tracker_.rebase(heading, pending_.amount, cellMm_);
         readHere_ = 0;
       }

@@ -16,6 +16,11 @@ struct PilotConfig {
   int32_t maxSteerMrad = 150;   // steering towards the next cell's centre is limited to this
   int32_t minRotateMrad = 4;    // smaller corrections are not worth a rotation
   int8_t minWallEvidence = 1;   // a wall cell is "known" for pose readings from this evidence up
+  // Heading from a straight wall beside the run: two readings of it at least this far apart along
+  // the run (mm) measure the heading error; walls are taken as axis-parallel (rectilinear rooms).
+  int32_t sideBaseMm = 500;
+  int32_t sideReadEveryMm = 500;  // read a wall seen beside the run again after this much driving (0: never)
+  int32_t maxSideSlopeMrad = 40;  // a larger apparent slope is another wall (a corner, a doorway)
 };
 
 // Pilot: between the explorer (cells, quarter turns) and the wheels (mm, mrad). It carries out
@@ -37,6 +42,18 @@ class Pilot {
   DriveAction step(const DriveEvent& e);
   bool finished() const { return phase_ == Phase::Done; }
 
+  // Cells the caller holds closed without their being walls (a doorway kept shut while a room is
+  // mapped): never a landmark for a pose reading. Non-owning: the caller keeps the array alive and
+  // calls again whenever it changes (nullptr, 0: none).
+  void setVirtualWalls(const Cell* cells, uint16_t count) {
+    virtual_ = cells;
+    virtualCount_ = count;
+  }
+
+  // The rotation that takes the known heading error out (Done when there is none worth a turn):
+  // for handing the robot over to another pilot, whose tracker starts exactly on the axis.
+  DriveAction levelling() const;
+
   // The explorer's counters plus the pilot's own pose readings and correction rotations.
   Counters counters() const;
   const PoseTracker& tracker() const { return tracker_; }
@@ -52,6 +69,10 @@ class Pilot {
   bool knownWall(Dir d, int32_t& faceMm) const;
   bool poseReadWanted(Sensor& s) const;
   void observe(Sensor s, const RangeReading& r);
+  void observeSide(Dir d, int32_t rangeMm);
+  int16_t wallLine(Dir d, int32_t rangeMm) const;
+  bool sideReadWanted(Sensor& s) const;
+  bool wallBeside(Dir d) const;  // the map's first non-free cell along d within range is a wall
 
   Explorer& explorer_;
   PilotConfig config_;
@@ -62,6 +83,19 @@ class Pilot {
   int32_t commandMrad_ = 0;   // rotation in progress
   int32_t driveMm_ = 0;       // drive in progress
   uint8_t readHere_ = 0;      // bit per Dir: read since the robot last moved
+  const Cell* virtual_ = nullptr;  // see setVirtualWalls
+  uint16_t virtualCount_ = 0;
+  // The current straight run (since the last quarter turn): mm driven along it and the dead-reckoned
+  // sideways drift to the right of it (mm), and per side the last good reading of the wall there.
+  struct SideMark {
+    bool valid = false;  // a good reading of the wall is held
+    bool tried = false;  // the side was read in this run
+    int32_t rangeMm = 0, runMm = 0, rightMm = 0;
+    int32_t triedMm = 0;  // run position of the last reading of the side
+    int16_t line = 0;  // the wall's row or column of cells (along the side's axis)
+  };
+  int32_t runMm_ = 0, rightMm_ = 0;
+  SideMark side_[4];  // by Dir
   uint32_t poseReads_ = 0, poseSamples_ = 0, correctionMrad_ = 0;
   int64_t turnedUrad_ = 0;     // quarter turns asked by the explorer, microradians
   int64_t commandedUrad_ = 0;  // of them, commanded to the wheels (whole mrad)

@@ -91,4 +91,21 @@ bool PoseTracker::measure(Dir d, int32_t offsetMm, int32_t extraVarianceMm2) {
   return true;
 }
 
+bool PoseTracker::measureHeading(int32_t thetaMrad, int32_t varianceMrad2) {
+  const int64_t innovation = thetaMrad - t_;
+  const int64_t spread = p_[2][2] + varianceMrad2;  // mrad^2
+  if (spread <= 0 || innovation * innovation > 9 * spread) {
+    ++rejected_;
+    return false;
+  }
+  int64_t pk[3];
+  for (int i = 0; i < 3; ++i) pk[i] = p_[i][2];
+  int64_t* state[3] = {&x_, &y_, &t_};
+  for (int i = 0; i < 3; ++i) *state[i] += divRound(pk[i] * innovation, spread);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) p_[i][j] -= divRound(pk[i] * pk[j], spread);
+  ++accepted_;
+  return true;
+}
+
 }  // namespace nxtmap

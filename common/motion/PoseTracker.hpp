@@ -37,6 +37,9 @@ class PoseTracker {
   // A measurement of the offset along `d` (mm, + = towards d), with extra variance (mm^2) on top
   // of the reading's own (the landmark's uncertainty). Returns false when gated out.
   bool measure(Dir d, int32_t offsetMm, int32_t extraVarianceMm2 = 0);
+  // A direct measurement of theta (mrad) with its variance (mrad^2), e.g. from a straight wall
+  // read twice along a run. Returns false when gated out (3 sigma).
+  bool measureHeading(int32_t thetaMrad, int32_t varianceMrad2);
   int32_t readingVariance() const { return noise_.readingMm * noise_.readingMm; }
   int32_t gateMm() const { return noise_.gateMm; }
 

@@ -44,8 +44,8 @@ BrickApp::BrickApp()
     : tacho_(kTachoPins),
       ports_{{bus_, kSensorPortPins[0]}, {bus_, kSensorPortPins[1]}, {bus_, kSensorPortPins[2]},
              {bus_, kSensorPortPins[3]}},
-      map_(storage_.map.view(), BrickExplorerStorage::kWidth(), BrickExplorerStorage::kHeight()),
-      planner_(storage_.travel.view(), BrickExplorerStorage::kWidth(), BrickExplorerStorage::kHeight()),
+      map_(storage_.map.view(), AppExplorerStorage::kWidth(), AppExplorerStorage::kHeight()),
+      planner_(storage_.travel.view(), AppExplorerStorage::kWidth(), AppExplorerStorage::kHeight()),
       explorerConfig_(config_.explorer()),
       link_(map_.grid(), shadow_, protocol::BrickLinkConfig{}),
       runner_(motion_, sonar_, config_.drive, explorerConfig_.geometry, config_.sensorPorts) {}

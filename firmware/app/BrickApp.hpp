@@ -21,8 +21,14 @@
 
 namespace nxtmap::fw {
 
-static_assert(BrickExplorerStorage::kWidth() == 64 && BrickExplorerStorage::kHeight() == 64,
+#ifdef NXTMAP_RAM_RUN
+// The RAM-run image (libnxt fwexec) keeps its code in the same 56 KiB as its data: a 64 x 32 grid.
+using AppExplorerStorage = ExplorerStorage<64, 32, 512>;
+#else
+using AppExplorerStorage = BrickExplorerStorage;
+static_assert(AppExplorerStorage::kWidth() == 64 && AppExplorerStorage::kHeight() == 64,
               "the brick's RAM budget (make size) is measured with a 64 x 64-cell room grid");
+#endif
 
 // The brick application: owns every driver, the explorer with its pilot, and the radio link;
 // runs the main loop and serves the interrupts (each ISR in main.cpp calls one on*() member).
@@ -88,11 +94,11 @@ class BrickApp {
   Lcd<Mmio> lcd_{bus_, frame_};
   Screen screen_{frame_};
 
-  BrickExplorerStorage storage_{};
+  AppExplorerStorage storage_{};
   MapLayers map_;
   TravelPlanner planner_;
   ExplorerConfig explorerConfig_;
-  uint8_t shadow_[packedBytes(BrickExplorerStorage::kWidth(), BrickExplorerStorage::kHeight(), 2)] = {};
+  uint8_t shadow_[packedBytes(AppExplorerStorage::kWidth(), AppExplorerStorage::kHeight(), 2)] = {};
   protocol::BrickLink link_;
   alignas(PropagationExplorer) alignas(FrontierExplorer) uint8_t explorerBuf_[
       sizeof(PropagationExplorer) > sizeof(FrontierExplorer) ? sizeof(PropagationExplorer)

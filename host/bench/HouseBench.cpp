@@ -37,8 +37,9 @@ struct Result {
   uint32_t sensorRequests = 0;
 };
 
-Result mapHouse(const house::HousePlan& plan, const std::string& noise) {
+Result mapHouse(const house::HousePlan& plan, const std::string& noise, mapping::Strategy strategy) {
   house::HouseConfig config;
+  config.strategy = strategy;
   house::defaultStart(plan, config.startCol, config.startRow);
   config.noise = *sim::noiseProfileByName(noise);
   config.seed = kNoisySeed;
@@ -65,9 +66,9 @@ int runHouseBench() {
     if (e.path().extension() == ".json") files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
-  std::cout << "\nhouses (HouseExpo, room by room, propagation; agreement on cells a reachable cell can observe)\n";
-  const std::vector<size_t> w = {20, 8, 13, 9, 10, 9, 8, 10, 8};
-  const std::vector<std::string> head = {"house", "noise", "rooms/plan", "gateways", "agreement", "target",
+  std::cout << "\nhouses (HouseExpo, room by room with each strategy; agreement on cells a reachable cell can observe)\n";
+  const std::vector<size_t> w = {20, 12, 8, 13, 9, 10, 9, 8, 10, 8};
+  const std::vector<std::string> head = {"house", "strategy", "noise", "rooms/plan", "gateways", "agreement", "target",
                                          "result", "time", "sensors"};
   std::string line;
   for (size_t i = 0; i < head.size(); ++i) line += pad(head[i], w[i]) + " ";
@@ -80,22 +81,24 @@ int runHouseBench() {
       std::cout << l.error << "\n";
       continue;
     }
-    for (const std::string noise : {"none", "typical"}) {
-      const Result r = mapHouse(*l.plan, noise);
-      wall += r.wallS;
-      const double target = noise == "none" ? kCleanTargetPct : kNoisyTargetPct;
-      const bool ok = r.score.agreementPct() >= target;
-      ++targets;
-      met += ok ? 1 : 0;
-      const std::vector<std::string> cells = {
-          f.stem().string().substr(0, 19), noise,
-          std::to_string(r.score.rooms) + "/" + std::to_string(l.plan->roomNum),
-          std::to_string(r.score.gateways), formatNumber(r.score.agreementPct(), 1) + " %",
-          ">= " + formatNumber(target) + " %", ok ? "PASS" : "MISS", formatNumber(r.timeUnits, 0),
-          std::to_string(r.sensorRequests)};
-      line.clear();
-      for (size_t i = 0; i < cells.size(); ++i) line += pad(cells[i], w[i]) + " ";
-      std::cout << line << "\n";
+    for (const mapping::Strategy strategy : {mapping::Strategy::Propagation, mapping::Strategy::Frontier}) {
+      for (const std::string noise : {"none", "typical"}) {
+        const Result r = mapHouse(*l.plan, noise, strategy);
+        wall += r.wallS;
+        const double target = noise == "none" ? kCleanTargetPct : kNoisyTargetPct;
+        const bool ok = r.score.agreementPct() >= target;
+        ++targets;
+        met += ok ? 1 : 0;
+        const std::vector<std::string> cells = {
+            f.stem().string().substr(0, 19), mapping::strategyName(strategy), noise,
+            std::to_string(r.score.rooms) + "/" + std::to_string(l.plan->roomNum),
+            std::to_string(r.score.gateways), formatNumber(r.score.agreementPct(), 1) + " %",
+            ">= " + formatNumber(target) + " %", ok ? "PASS" : "MISS", formatNumber(r.timeUnits, 0),
+            std::to_string(r.sensorRequests)};
+        line.clear();
+        for (size_t i = 0; i < cells.size(); ++i) line += pad(cells[i], w[i]) + " ";
+        std::cout << line << "\n";
+      }
     }
   }
   std::cout << "house targets met: " << met << " of " << targets << " (wall time " << formatNumber(wall, 2)

@@ -29,7 +29,7 @@ CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& o) {
   c->add_option("--range-m", o.rangeM, "trusted maximum sensor range in metres (default 1)");
   c->add_option("--noise", o.noise, "noise profile: none, typical, harsh (default none)");
   c->add_option("--seed", o.seed, "random seed of the noise (default 1)");
-  c->add_option("--strategy", o.strategy, "exploration strategy per room: propagation, frontier");
+  c->add_option("--strategy", o.strategy, "exploration strategy per room: propagation, frontier (default frontier: fewer turns, so the pose holds better across rooms)");
   c->add_option("--save", o.save, "directory to save the house in (ROS map per room + house.yaml)");
   return c;
 }

@@ -18,7 +18,7 @@ struct SimHouseOptions {
   double rangeM = 1.0;
   std::string noise = "none";
   std::string seed = "1";
-  std::string strategy = "propagation";
+  std::string strategy = "frontier";
   std::string save;    // directory to write the house to
 };
 

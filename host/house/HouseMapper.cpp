@@ -99,9 +99,25 @@ void HouseMapper::mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, 
     network_.addGateway(std::move(g));
   }
   for (const RoomExit& e : run.exits()) pending_.push_back(Pending{partOf(e.inside), e});
+  network::RoomNode seen;
+  seen.name = "run " + std::to_string(seen_.size());
+  seen.map = run.fullMap();
+  seen.toHouse = toHouse;
+  seen_.push_back(std::move(seen));
   exitsFound_ += static_cast<int>(run.exits().size());
   belief_.cell = toHouse.apply(run.pose().cell);
   belief_.heading = toHouse.apply(run.pose().heading);
+  if (std::getenv("NXTMAP_HOUSE_DEBUG")) {
+    int col, row;
+    frame_.toWorld(belief_.cell, col, row);
+    std::fprintf(stderr, "  after room: believed world %d,%d; true %.1f,%.1f\n", col, row, robot_.xCm() / 10.0, robot_.yCm() / 10.0);
+  }
+}
+
+network::RoomMap HouseMapper::knownForTravel() const {
+  network::HouseNetwork all = network_;
+  for (const network::RoomNode& n : seen_) all.addRoom(n);
+  return all.merged();
 }
 
 bool HouseMapper::leadsToMappedRoom(const Pending& p) {
@@ -121,13 +137,16 @@ bool HouseMapper::leadsToMappedRoom(const Pending& p) {
         house.push_back(owner.toHouse.apply(c));
         inJ.push_back(toJ.apply(house.back()));
       }
+      // The same doorway seen from the other room may be found a cell wider or shifted.
       bool known = false;
       for (const int gi : network_.gatewaysBetween(p.room, static_cast<int>(j))) {
         const network::Gateway& g = network_.gateways()[static_cast<size_t>(gi)];
-        const network::RoomNode& a = rooms[static_cast<size_t>(g.roomA)];
-        for (const Cell gc : g.cellsA) {
-          const Cell h = a.toHouse.apply(gc);
-          for (const Cell hc : house) known = known || (std::abs(h.x - hc.x) + std::abs(h.y - hc.y) <= 1);
+        for (const auto& [room, cells] : {std::make_pair(g.roomA, &g.cellsA), std::make_pair(g.roomB, &g.cellsB)}) {
+          const network::RoomNode& a = rooms[static_cast<size_t>(room)];
+          for (const Cell gc : *cells) {
+            const Cell h = a.toHouse.apply(gc);
+            for (const Cell hc : house) known = known || (std::abs(h.x - hc.x) + std::abs(h.y - hc.y) <= 2);
+          }
         }
       }
       if (!known) {
@@ -187,6 +206,8 @@ bool HouseMapper::travelTo(Cell target, const network::RoomMap& known) {
   Pilot pilot(go, pc);
   DriveAction a = pilot.step(DriveEvent::start());
   while (!pilot.finished()) a = pilot.step(mapping::carryOutOnRobot(robot_, a, explorerConfig_.geometry));
+  const DriveAction level = pilot.levelling();  // on the axis for what follows (dead-reckoned steps, a new room)
+  if (level.kind == DriveAction::Kind::Rotate) (void)mapping::carryOutOnRobot(robot_, level, explorerConfig_.geometry);
   const Counters c = pilot.counters();
   counters_.travel.sensorRequests += c.sensorRequests;
   counters_.travel.rawSamples += c.rawSamples;
@@ -197,6 +218,11 @@ bool HouseMapper::travelTo(Cell target, const network::RoomMap& known) {
   belief_.cell = toHouse.apply(go.pose().cell);
   belief_.heading = toHouse.apply(go.pose().heading);
   if (!go.arrived()) ++counters_.travelBlocked;
+  if (std::getenv("NXTMAP_HOUSE_DEBUG")) {
+    int col, row;
+    frame_.toWorld(belief_.cell, col, row);
+    std::fprintf(stderr, "  after travel: believed world %d,%d; true %.1f,%.1f\n", col, row, robot_.xCm() / 10.0, robot_.yCm() / 10.0);
+  }
   return go.arrived();
 }
 
@@ -208,7 +234,7 @@ int HouseMapper::run() {
     pending_.erase(std::remove_if(pending_.begin(), pending_.end(), [&](const Pending& p) { return leadsToMappedRoom(p); }),
                    pending_.end());
     if (pending_.empty()) break;
-    const network::RoomMap known = network_.merged();
+    const network::RoomMap known = knownForTravel();
     const std::vector<int> dist = distances(known, belief_.cell);
     size_t best = pending_.size();
     int bestDist = std::numeric_limits<int>::max();

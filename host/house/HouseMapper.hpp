@@ -28,7 +28,7 @@ struct HouseConfig {
   double sensorReachCm = 255.0;
   sim::NoiseProfile noise;
   uint64_t seed = 1;
-  mapping::Strategy strategy = mapping::Strategy::Propagation;
+  mapping::Strategy strategy = mapping::Strategy::Frontier;  // fewer turns than the published staircase: the pose holds better
   DoorwayLimits doorways{4, 15, 3, 2};     // cells: 0.4 .. 1.5 m doorways at 10 cm cells, walls of 2+ cells
   RoomLimits roomLimits{3, 80};             // an open area over 8 m (at 10 cm cells) is several rooms
   int maxRooms = 40;                        // safety stop
@@ -69,6 +69,8 @@ class HouseMapper {
   };
   void mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, const RoomExit* via);
   bool leadsToMappedRoom(const Pending& p);
+  // What travel may use: the rooms' maps and all the room runs saw (beyond their exits too).
+  network::RoomMap knownForTravel() const;
   // Drives to a house cell over the known rooms with the pilot (pose corrections); false when not there.
   bool travelTo(Cell target, const network::RoomMap& known);
   bool step(Dir d);
@@ -78,6 +80,7 @@ class HouseMapper {
   ExplorerConfig explorerConfig_;
   mapping::FrameTransform frame_;
   sim::SimRobot robot_;
+  std::vector<network::RoomNode> seen_;  // each room run's uncut map and frame
   network::HouseNetwork network_;
   HouseCounters counters_;
   Pose belief_;  // in the house frame

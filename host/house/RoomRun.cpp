@@ -8,6 +8,10 @@
 namespace nxtmap::house {
 namespace {
 constexpr uint8_t kMaxFound = 32;
+// Cells closed beyond each end of the entrance's line: under noise a doorway can be found a cell
+// or two narrower than it is, and the robot would slip back past its closed cells into the room
+// it came from. (Not for the room's own exits: there the cells beyond may be the way on.)
+constexpr int16_t kGuardCells = 2;
 
 bool overlaps(const Doorway& a, const Doorway& b) {
   for (int16_t i = 0; i < a.width; ++i) {
@@ -26,7 +30,6 @@ RoomRun::RoomRun(sim::SimRobot& robot, const ExplorerConfig& config, mapping::St
       config_(config),
       doorwayLimits_(doorways),
       storage_(std::make_unique<Storage>()),
-      closed_(entrance),
       entrance_(std::move(entrance)),
       roomLimits_(roomLimits) {
   map_ = std::make_unique<MapLayers>(storage_->map.view(), Storage::kWidth(), Storage::kHeight());
@@ -41,6 +44,7 @@ RoomRun::RoomRun(sim::SimRobot& robot, const ExplorerConfig& config, mapping::St
   PilotConfig pilot;
   pilot.correct = poseCorrection;
   pilot_ = std::make_unique<Pilot>(*explorer_, pilot);
+  closeEntrance();
   closeDoors();
   last_ = pilot_->step(DriveEvent::start());
 }
@@ -52,11 +56,44 @@ bool RoomRun::drivesIntoClosed(const DriveAction& a) const {
   if (a.kind != DriveAction::Kind::Drive) return false;
   const Pose& p = explorer_->pose();
   const Cell next = advance(p.cell, a.value > 0 ? p.heading : opposite(p.heading));
-  return std::find(closed_.begin(), closed_.end(), next) != closed_.end();
+  return std::find(closed_.begin(), closed_.end(), next) != closed_.end() ||
+         std::find(guards_.begin(), guards_.end(), next) != guards_.end();
 }
 
 void RoomRun::closeDoors() {
   for (const Cell c : closed_) (void)map_->markBlocked(c);
+  for (const Cell c : guards_) (void)map_->markBlocked(c);
+  // Held shut, not seen: the pilot must not take them for walls to read its pose from.
+  virtualWalls_ = closed_;
+  virtualWalls_.insert(virtualWalls_.end(), guards_.begin(), guards_.end());
+  pilot_->setVirtualWalls(virtualWalls_.data(), static_cast<uint16_t>(virtualWalls_.size()));
+}
+
+void RoomRun::closeEntrance() {
+  const std::vector<Cell>& cells = entrance_;
+  if (cells.empty()) return;
+  closed_.insert(closed_.end(), cells.begin(), cells.end());
+  Bounds b{cells[0].x, cells[0].y, cells[0].x, cells[0].y};
+  for (const Cell c : cells) {
+    b.minX = std::min(b.minX, c.x);
+    b.minY = std::min(b.minY, c.y);
+    b.maxX = std::max(b.maxX, c.x);
+    b.maxY = std::max(b.maxY, c.y);
+  }
+  const bool alongX = b.width() >= b.height();
+  for (int16_t k = 1; k <= kGuardCells; ++k) {
+    if (alongX) {
+      for (int16_t y = b.minY; y <= b.maxY; ++y) {
+        guards_.push_back(Cell{static_cast<int16_t>(b.minX - k), y});
+        guards_.push_back(Cell{static_cast<int16_t>(b.maxX + k), y});
+      }
+    } else {
+      for (int16_t x = b.minX; x <= b.maxX; ++x) {
+        guards_.push_back(Cell{x, static_cast<int16_t>(b.minY - k)});
+        guards_.push_back(Cell{x, static_cast<int16_t>(b.maxY + k)});
+      }
+    }
+  }
 }
 
 std::vector<uint8_t> RoomRun::reach(const std::vector<Cell>& closed, Bounds& box) const {
@@ -136,6 +173,7 @@ void RoomRun::evaluateCandidates() {
   // Close every candidate at once (several doorways may lead into the same room), then keep as
   // exits those whose far side is cut off from the start while the robot is on the start's side.
   std::vector<Cell> closed = closed_;
+  closed.insert(closed.end(), guards_.begin(), guards_.end());
   for (const Doorway& d : candidates_) {
     for (int16_t a = 0; a < d.width; ++a) {
       for (int16_t b = 0; b < d.depth; ++b) closed.push_back(d.cell(a, b));
@@ -181,6 +219,9 @@ void RoomRun::runToEnd() {
     closeDoors();
     if (!pilot_->finished()) lookForDoorways();
   }
+  // Hand the robot over on its axis: the next pilot's tracker starts without a heading error.
+  const DriveAction level = pilot_->levelling();
+  if (level.kind == DriveAction::Kind::Rotate) (void)mapping::carryOutOnRobot(robot_, level, config_.geometry);
   finish();
 }
 
@@ -199,10 +240,20 @@ void RoomRun::finish() {
   const auto reached = [&](Cell c) {
     return box.contains(c) && seen[static_cast<size_t>((c.y - box.minY) * box.width() + (c.x - box.minX))] != 0;
   };
+  // An exit found while the robot was beyond another doorway may join two other rooms: only the
+  // exits of this room (their inside cell in the room) are kept; the others are found again there.
+  std::vector<RoomExit> kept;
+  std::vector<Cell> doors = entrance_;
+  for (RoomExit& e : exits_) {
+    if (!reached(e.inside)) continue;
+    doors.insert(doors.end(), e.cells.begin(), e.cells.end());
+    kept.push_back(std::move(e));
+  }
+  exits_ = std::move(kept);
   for (int y = full.minY(); y <= full.maxY(); ++y) {
     for (int x = full.minX(); x <= full.maxX(); ++x) {
       const Cell c{static_cast<int16_t>(x), static_cast<int16_t>(y)};
-      bool keep = reached(c) || std::find(closed_.begin(), closed_.end(), c) != closed_.end();
+      bool keep = reached(c) || std::find(doors.begin(), doors.end(), c) != doors.end();
       for (int dy = -1; dy <= 1 && !keep; ++dy) {
         for (int dx = -1; dx <= 1 && !keep; ++dx) keep = reached(offset(c, dx, dy));
       }
@@ -210,6 +261,7 @@ void RoomRun::finish() {
     }
   }
   roomMap_ = std::move(cut);
+  fullMap_ = std::move(full);
 }
 
 }  // namespace nxtmap::house

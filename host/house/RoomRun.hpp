@@ -56,12 +56,16 @@ class RoomRun {
   const Pose& pose() const { return explorer_->pose(); }  // believed, in the room's frame
   const std::vector<RoomExit>& exits() const { return exits_; }
   const network::RoomMap& roomMap() const { return roomMap_; }
+  // Everything the run saw, beyond the exits too (the robot may end there): for travel planning.
+  const network::RoomMap& fullMap() const { return fullMap_; }
   // The interpretation of the finished map (walls, size, exits, how many rooms it makes).
   const RoomInterpretation& interpretation() const { return interpretation_; }
   int ignoredDoorways() const { return static_cast<int>(candidates_.size()); }  // never became exits
 
  private:
   void closeDoors();
+  // Closes the entrance's cells and guards the ends of its line (see guards_).
+  void closeEntrance();
   bool drivesIntoClosed(const DriveAction& a) const;
   void lookForDoorways();
   void evaluateCandidates();
@@ -83,11 +87,14 @@ class RoomRun {
   std::unique_ptr<Pilot> pilot_;
   DriveAction last_;
   std::vector<Cell> closed_;         // virtual door cells (entrance and exits)
+  std::vector<Cell> virtualWalls_;   // closed_ and guards_, lent to the pilot
+  std::vector<Cell> guards_;         // the cells beside the entrance along its line (its jambs), closed too
   std::vector<Cell> entrance_;
   std::vector<RoomExit> exits_;
   std::vector<Doorway> candidates_;  // doorways seen that are not (yet) exits
   int sinceCheck_ = 0;               // steps since the candidates were last evaluated
   static constexpr int kRecheckSteps = 25;
+  network::RoomMap fullMap_;
   network::RoomMap roomMap_;
   RoomLimits roomLimits_;
   RoomInterpretation interpretation_;

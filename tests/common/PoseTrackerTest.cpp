@@ -108,6 +108,31 @@ TEST(PoseTracker, RepeatedReadingsConverge) {
   EXPECT_LT(t.varianceAlong(Dir::South), 64 / 4);
 }
 
+TEST(PoseTracker, AHeadingMeasurementPullsThetaAndTheOffsetItCaused) {
+  PoseNoise noise;
+  noise.turnMradPerQuarter = 50;
+  PoseTracker t(noise);
+  t.rotated(1571, 1);  // facing East, heading uncertain (about 50 mrad)
+  t.drove(500, Dir::East);
+  const int64_t before = t.thetaVariance();
+  // The heading was 40 mrad clockwise (to the right, South): 500 mm of driving moved the robot
+  // about 20 mm South as well, which the filter infers through the correlation.
+  ASSERT_TRUE(t.measureHeading(40, 100));
+  EXPECT_GT(t.thetaMrad(), 30);
+  EXPECT_LE(t.thetaMrad(), 40);
+  EXPECT_LT(t.yMm(), -10);
+  EXPECT_LT(t.thetaVariance(), before / 4);
+  EXPECT_EQ(t.accepted(), 1u);
+}
+
+TEST(PoseTracker, AHeadingFarOutsideItsUncertaintyIsRefused) {
+  PoseTracker t;  // exactly on the axis: a few mrad at most after one turn
+  t.rotated(1571, 1);
+  EXPECT_FALSE(t.measureHeading(300, 25));
+  EXPECT_EQ(t.thetaMrad(), 0);  // unchanged
+  EXPECT_EQ(t.rejected(), 1u);
+}
+
 TEST(PoseTracker, QuarterTurnsAreCountedToTheMicroradian) {
   // 1571 mrad is 0.204 mrad more than a quarter turn: a thousand of them leave 204 mrad.
   PoseTracker t;

@@ -38,7 +38,7 @@ TEST(HouseCli, SimHouseSavesAHouseThatExportsAndRoutes) {
   EXPECT_NE(pgm.find(static_cast<char>(254)), std::string::npos);
   EXPECT_NE(pgm.find(static_cast<char>(0), 20), std::string::npos);
 
-  const RunOutput route = runCli("path --house " + shellQuote(dir) + " --from room0:3,3 --to room2:10,5");
+  const RunOutput route = runCli("path --house " + shellQuote(dir) + " --from room0:3,3 --to room2:25,5");
   ASSERT_EQ(route.exitCode, 0) << route.err;
   EXPECT_NE(route.out.find("rooms            room0 -> room2"), std::string::npos) << route.out;
 }
