@@ -56,6 +56,7 @@ void BrickLink::handlePacket(const Telegram& t) {
     case Op::FollowPath:
     case Op::RequestMap:
     case Op::MapChunk:
+    case Op::SetPose:
       handleCommand(v.header, v.payload, v.payloadSize);
       break;
     case Op::BatteryRequest:
@@ -125,6 +126,13 @@ void BrickLink::handleCommand(const PacketHeader& h, const uint8_t* p, size_t n)
       c.kind = CommandKind::MapChunk;
       valid = decodeMapChunk(p, n, c.chunk);
       break;
+    case Op::SetPose: {
+      c.kind = CommandKind::SetPose;
+      PoseMsg m;
+      valid = decodePose(p, n, m);
+      c.pose = m.pose;
+      break;
+    }
     default:
       return;
   }

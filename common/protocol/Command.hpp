@@ -12,6 +12,7 @@ enum class CommandKind : uint8_t {
   Stop,        // stop moving, stay where you are
   FollowPath,  // drive along `path` (cell 0 = where the robot stands); report PathProgress
   MapChunk,    // part of a whole map from the PC (`chunk`); chunk 0 of a transfer: clear first
+  SetPose,     // the robot stands at `pose` on the map it holds (e.g. a room just uploaded); stop first
 };
 
 struct Command {
@@ -19,6 +20,7 @@ struct Command {
   uint16_t seq = 0;  // the PC's sequence number (for logs)
   PathMsg path;      // FollowPath
   MapChunkMsg chunk; // MapChunk
+  Pose pose;         // SetPose
 };
 
 }  // namespace nxtmap::protocol

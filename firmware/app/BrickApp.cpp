@@ -202,6 +202,15 @@ void BrickApp::takeMapChunk(const protocol::MapChunkMsg& chunk) {
   mapDirty_ = true;
 }
 
+void BrickApp::setPose(const Pose& p) {
+  stop();
+  restPose_ = p;  // e.g. the robot's cell in a room the PC just uploaded, in that room's frame
+  explorer_ = nullptr;  // the next run starts from there on the map as it is
+  pilot_ = nullptr;
+  poseFromPath_ = false;
+  mapDirty_ = true;
+}
+
 void BrickApp::stop() {
   runner_.abort();
   follower_.abort();
@@ -227,6 +236,7 @@ void BrickApp::carryOut(const protocol::Command& c, uint32_t now) {
     case protocol::CommandKind::Stop: stop(); break;
     case protocol::CommandKind::FollowPath: followPath(c.path, now); break;
     case protocol::CommandKind::MapChunk: takeMapChunk(c.chunk); break;
+    case protocol::CommandKind::SetPose: setPose(c.pose); break;
   }
 }
 

@@ -59,6 +59,7 @@ class BrickApp {
   void startExploring(Strategy s, uint32_t now);
   void followPath(const protocol::PathMsg& path, uint32_t now);
   void takeMapChunk(const protocol::MapChunkMsg& chunk);
+  void setPose(const Pose& p);
   void stop();
   void newRoom();
   void driveRobot(uint32_t now);
