@@ -113,7 +113,6 @@ class BrickLink {
   uint16_t lastRoom_ = 0;
 };
 
-// (2.5 KiB + 16 bytes since SetPose: each of the two queued commands can carry a pose.)
-static_assert(sizeof(BrickLink) <= 2576, "the brick's link: <= 2.5 KiB + 16 bytes besides the 1 KiB shadow");
+static_assert(sizeof(BrickLink) <= 2560, "the brick's link: <= 2.5 KiB besides the 1 KiB shadow");
 
 }  // namespace nxtmap::protocol

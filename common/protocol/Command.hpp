@@ -18,9 +18,14 @@ enum class CommandKind : uint8_t {
 struct Command {
   CommandKind kind = CommandKind::Stop;
   uint16_t seq = 0;  // the PC's sequence number (for logs)
-  PathMsg path;      // FollowPath
-  MapChunkMsg chunk; // MapChunk
-  Pose pose;         // SetPose
+  // What the command carries: the member `kind` names (one at a time, so the brick's queue of
+  // commands holds the largest of them only). BrickLink starts the member's lifetime.
+  union {
+    PathMsg path;       // FollowPath
+    MapChunkMsg chunk;  // MapChunk
+    Pose pose;          // SetPose
+  };
+  Command() : path() {}
 };
 
 }  // namespace nxtmap::protocol
