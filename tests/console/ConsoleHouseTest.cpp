@@ -328,6 +328,30 @@ TEST(ConsoleHouse, ANewRoomFromTheBrickKeepsTheOldRoomAndRecordsTheGateway) {
   EXPECT_GT(again.network->rooms()[2].map.count(CellState::Free), 5);
 }
 
+TEST(ConsoleHouse, TheConnectCommandLoadsAHouseAndDrivesARouteFromAScript) {
+  test::TempDir tmp("cli");
+  const std::string world = worldFile(tmp);
+  savedHouse(tmp, "house");
+  tmp.write("script", "rooms\nroute kitchen 5 2\nwait goal 60\nlabel stove 3 3\nsave " + tmp.path("saved") + "\nquit\n");
+  const std::string cmd = "cd " + cli::test::shellQuote(NXTMAP_SOURCE_DIR) + " && " + cli::test::shellQuote(NXTMAP_CLI_PATH) +
+                          " connect sim:" + world + "@3,3 --speed 20 --house " + tmp.path("house") + " < " + tmp.path("script") +
+                          " > " + tmp.path("out") + " 2> " + tmp.path("err");
+  const int status = std::system(cmd.c_str());
+  const std::string out = cli::test::readFile(tmp.path("out"));
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0) << cli::test::readFile(tmp.path("err"));
+  EXPECT_EQ(cli::test::readFile(tmp.path("err")), "");
+  EXPECT_NE(out.find("house: 2 rooms, 1 gateways; the brick is in room 0 (hall): its map (8 x 7 cells) goes to the brick"),
+            std::string::npos) << out;
+  EXPECT_NE(out.find("room 0 hall (current)"), std::string::npos) << out;
+  EXPECT_NE(out.find("route done: the robot is at (2,5) in room 1"), std::string::npos) << out;
+  EXPECT_NE(out.find("saved house " + tmp.path("saved") + ": 2 rooms, 1 gateways"), std::string::npos) << out;
+  // The label went to the kitchen (the current room), in the kitchen's frame: column 3, row 3 = (0, 4).
+  const network::HouseLoad saved = network::loadHouse(tmp.path("saved"));
+  ASSERT_TRUE(saved.network.has_value()) << saved.error;
+  EXPECT_EQ(saved.network->rooms()[1].labels.at("stove"), (Cell{0, 4}));
+  EXPECT_EQ(saved.network->rooms()[0].labels.at("lamp"), (Cell{-2, 2}));
+}
+
 TEST(ConsoleHouse, ABadHouseOrRoomIsOneClearErrorBeforeConnecting) {
   test::TempDir tmp("badhouse");
   const std::string world = worldFile(tmp);
