@@ -91,10 +91,16 @@ void Session::noteRoom(uint16_t id) {
   c.fromRoom = *roomId_;
   c.toRoom = id;
   // The old room's map: the copy of the epoch the last Status from that room named, which a
-  // new epoch's first delta may already have moved to the stash.
-  if (roomEpoch_ && map_.hasEpoch() && map_.epoch() == *roomEpoch_) c.left = map_;
-  else if (roomEpoch_ && stashRoom_ == *roomId_ && stash_.hasEpoch() && stash_.epoch() == *roomEpoch_) c.left = stash_;
-  else c.left = map_.known() > 0 ? map_ : stash_;
+  // new epoch's first delta may already have moved to the stash (then the copy is the new room's).
+  bool leftIsCopy = true;
+  if (roomEpoch_ && map_.hasEpoch() && map_.epoch() == *roomEpoch_) {
+    c.left = map_;
+  } else if (stashRoom_ == *roomId_ && stash_.known() > 0) {
+    c.left = stash_;
+    leftIsCopy = false;
+  } else {
+    c.left = map_;
+  }
   // The brick reports the new room's start pose (0,0 facing +y) before the room itself: a pose
   // not confirmed in the old room by a Status that equals that start is the new room's.
   const bool startPose = pose_ && pose_->cell == Cell{0, 0} && pose_->heading == Dir::North;
@@ -102,7 +108,7 @@ void Session::noteRoom(uint16_t id) {
   else c.lastPose = posePrevious_;
   roomChanges_.push_back(std::move(c));
   roomId_ = id;
-  map_.clear();  // the new room's map comes as a new epoch
+  if (leftIsCopy) map_.clear();  // the new room's map comes as a new epoch
   stash_.clear();
   stashRoom_.reset();
   poseRoom_.reset();
