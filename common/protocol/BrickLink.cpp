@@ -1,5 +1,7 @@
 #include "common/protocol/BrickLink.hpp"
 
+#include <new>
+
 #include "common/protocol/LegoCommands.hpp"
 #include "common/protocol/Packet.hpp"
 
@@ -56,6 +58,7 @@ void BrickLink::handlePacket(const Telegram& t) {
     case Op::FollowPath:
     case Op::RequestMap:
     case Op::MapChunk:
+    case Op::SetPose:
       handleCommand(v.header, v.payload, v.payloadSize);
       break;
     case Op::BatteryRequest:
@@ -119,12 +122,19 @@ void BrickLink::handleCommand(const PacketHeader& h, const uint8_t* p, size_t n)
       return;
     case Op::FollowPath:
       c.kind = CommandKind::FollowPath;
-      valid = decodePath(p, n, c.path);
+      valid = decodePath(p, n, *new (&c.path) PathMsg());
       break;
     case Op::MapChunk:
       c.kind = CommandKind::MapChunk;
-      valid = decodeMapChunk(p, n, c.chunk);
+      valid = decodeMapChunk(p, n, *new (&c.chunk) MapChunkMsg());
       break;
+    case Op::SetPose: {
+      c.kind = CommandKind::SetPose;
+      PoseMsg m;
+      valid = decodePose(p, n, m);
+      new (&c.pose) Pose(m.pose);
+      break;
+    }
     default:
       return;
   }

@@ -12,13 +12,20 @@ enum class CommandKind : uint8_t {
   Stop,        // stop moving, stay where you are
   FollowPath,  // drive along `path` (cell 0 = where the robot stands); report PathProgress
   MapChunk,    // part of a whole map from the PC (`chunk`); chunk 0 of a transfer: clear first
+  SetPose,     // the robot stands at `pose` on the map it holds (e.g. a room just uploaded); stop first
 };
 
 struct Command {
   CommandKind kind = CommandKind::Stop;
   uint16_t seq = 0;  // the PC's sequence number (for logs)
-  PathMsg path;      // FollowPath
-  MapChunkMsg chunk; // MapChunk
+  // What the command carries: the member `kind` names (one at a time, so the brick's queue of
+  // commands holds the largest of them only). BrickLink starts the member's lifetime.
+  union {
+    PathMsg path;       // FollowPath
+    MapChunkMsg chunk;  // MapChunk
+    Pose pose;          // SetPose
+  };
+  Command() : path() {}
 };
 
 }  // namespace nxtmap::protocol

@@ -66,6 +66,8 @@ enum class Op : uint8_t {
   MapChunk = 0x06,      // reliable command; MapChunkMsg (whole map PC -> brick, in chunks)
   Ack = 0x07,           // unreliable, no payload: carries only ack/ackMask
   BatteryRequest = 0x08,// unreliable, no payload: answered by Battery
+  SetPose = 0x09,       // reliable command; PoseMsg: the robot stands at this pose of the brick's map
+                        // (sent after a MapChunk upload: the pose in the uploaded map's frame)
   // brick -> PC:
   HelloReply = 0x41,    // unreliable; HelloReplyMsg
   Status = 0x42,        // unreliable, periodic; StatusMsg

@@ -185,13 +185,12 @@ void BrickApp::followPath(const protocol::PathMsg& path, uint32_t now) {
 }
 
 void BrickApp::takeMapChunk(const protocol::MapChunkMsg& chunk) {
-  if (mode_ == Mode::Exploring || mode_ == Mode::Following) stop();
+  // Chunk 0: the robot stays where it is on the PC's map (same frame); the next run starts there.
   if (chunk.chunkIndex == 0) {
+    restAt(pose());
     map_.clear();
-    restPose_ = pose();  // the robot stays where it is on the PC's map (same frame)
-    explorer_ = nullptr;  // the next run starts on the PC's map from there
-    pilot_ = nullptr;
-    poseFromPath_ = false;
+  } else {
+    stop();
   }
   for (uint16_t i = 0; i < chunk.count; ++i) {
     const CellState st = chunk.state(i);
@@ -202,6 +201,15 @@ void BrickApp::takeMapChunk(const protocol::MapChunkMsg& chunk) {
   mapDirty_ = true;
 }
 
+void BrickApp::restAt(const Pose& p) {
+  stop();
+  restPose_ = p;  // e.g. the robot's cell in a room the PC just uploaded (SetPose), in that room's frame
+  explorer_ = nullptr;  // the next run starts from there on the map as it is
+  pilot_ = nullptr;
+  poseFromPath_ = false;
+  mapDirty_ = true;
+}
+
 void BrickApp::stop() {
   runner_.abort();
   follower_.abort();
@@ -209,16 +217,11 @@ void BrickApp::stop() {
 }
 
 void BrickApp::newRoom() {
-  stop();
-  restPose_ = Pose{};
-  poseFromPath_ = false;
-  explorer_ = nullptr;
-  pilot_ = nullptr;
+  restAt(Pose{});
   map_.clear();
   link_.mapRestarted();
   ++roomId_;
   mode_ = Mode::Idle;
-  mapDirty_ = true;
 }
 
 void BrickApp::carryOut(const protocol::Command& c, uint32_t now) {
@@ -227,6 +230,7 @@ void BrickApp::carryOut(const protocol::Command& c, uint32_t now) {
     case protocol::CommandKind::Stop: stop(); break;
     case protocol::CommandKind::FollowPath: followPath(c.path, now); break;
     case protocol::CommandKind::MapChunk: takeMapChunk(c.chunk); break;
+    case protocol::CommandKind::SetPose: restAt(c.pose); break;
   }
 }
 

@@ -65,6 +65,8 @@ class BrickApp {
   void startExploring(Strategy s, uint32_t now);
   void followPath(const protocol::PathMsg& path, uint32_t now);
   void takeMapChunk(const protocol::MapChunkMsg& chunk);
+  // Stops and stands the robot at `p` (no run holds the pose until the next Explore).
+  void restAt(const Pose& p);
   void stop();
   void newRoom();
   void driveRobot(uint32_t now);

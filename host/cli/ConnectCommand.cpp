@@ -5,12 +5,14 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <optional>
 #include <iostream>
 #include <thread>
 
 #include "host/cli/Errors.hpp"
 #include "host/console/Console.hpp"
 #include "host/link/SimTransport.hpp"
+#include "host/network/HouseFiles.hpp"
 
 namespace nxtmap::cli {
 
@@ -21,6 +23,9 @@ CLI::App* addConnectCommand(CLI::App& app, ConnectOptions& o) {
   c->add_option("--speed", o.speed, "sim: links only: run the stand-in brick this many times faster (default 1)");
   c->add_option("--connect-timeout", o.connectTimeoutS, "seconds to wait for the brick to answer (default 20)");
   c->add_flag("!--no-live", o.live, "do not redraw the map while the brick explores");
+  c->add_option("--house", o.house, "load a saved house directory (nxtmap sim-house / save DIR); its room --room goes to the brick");
+  c->add_option("--room", o.room, "with --house: the room the brick stands in, by number (default 0); the brick's pose is read in "
+                                  "that room's frame");
   return c;
 }
 
@@ -33,6 +38,19 @@ int runConnect(const ConnectOptions& o) {
   }
   if (!(o.speed > 0 && o.speed <= 1000)) throw CliError("connect: --speed must be in (0, 1000]");
   if (o.speed != 1.0 && spec.kind != link::LinkSpec::Kind::Sim) throw CliError("connect: --speed only applies to sim: links");
+  // A house is checked whole before anything else happens: a bad one is one message, nothing loaded.
+  std::optional<network::HouseLoad> house;
+  if (!o.house.empty()) {
+    house = network::loadHouse(o.house);
+    if (!house->network) throw CliError("connect: --house " + o.house + ": " + house->error);
+    const int rooms = static_cast<int>(house->network->rooms().size());
+    if (o.room < 0 || o.room >= rooms) {
+      throw CliError("connect: --room " + std::to_string(o.room) + ": the house " + o.house + " has rooms 0.." +
+                     std::to_string(rooms - 1));
+    }
+  } else if (o.room != 0) {
+    throw CliError("connect: --room needs --house DIR");
+  }
 
   link::LinkRunner::Opener opener;
   if (spec.kind == link::LinkSpec::Kind::Sim) {
@@ -63,6 +81,7 @@ int runConnect(const ConnectOptions& o) {
   link::LinkRunner runner(opener, link::SessionConfig{});
   runner.start();
   console::Console console(runner, o.link);
+  if (house) console.useHouse(std::move(*house->network), house->resolutionM, o.room);
   const bool terminal = ::isatty(STDIN_FILENO) != 0;
   // The live map needs a terminal to draw on; commands may come from a script (make demo does that).
   const bool live = o.live && ::isatty(STDOUT_FILENO) != 0;
@@ -84,6 +103,14 @@ int runConnect(const ConnectOptions& o) {
     throw CliError("connect: " + error);
   }
   std::cout << "connected to " << o.link << " (type help for the commands)" << std::endl;
+  if (house) {
+    try {
+      std::cout << console.enterHouseRoom() << std::flush;
+    } catch (const console::ConsoleError& e) {
+      runner.stop();
+      throw CliError(std::string("connect: --house ") + o.house + ": " + e.what());
+    }
+  }
 
   int failures = 0;
   std::string line;

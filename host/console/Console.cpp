@@ -53,13 +53,18 @@ MapView viewOf(const link::Session& s, const std::set<std::pair<int, int>>& bloc
   return v;
 }
 
-Console::Console(link::LinkRunner& runner, std::string linkText) : runner_(runner), linkText_(std::move(linkText)) {}
+Console::Console(link::LinkRunner& runner, std::string linkText) : runner_(runner), linkText_(std::move(linkText)) {
+  network::RoomNode first;
+  first.name = "room0";
+  house_.addRoom(std::move(first));
+  placed_.push_back(true);
+}
 
 bool Console::waitFor(const std::function<bool()>& done, double seconds) {
   const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   while (std::chrono::steady_clock::now() < end) {
     if (done()) return true;
-    poll();
+    notes_ += poll();  // shown with the command's answer
     if (waiting_) waiting_();
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
@@ -135,8 +140,13 @@ std::string Console::startGoal(Cell target, const std::string& what) {
   std::string why;
   const std::vector<Cell> path = planTo(target, why);
   if (path.empty()) throw ConsoleError(what + ": " + why + "; nothing sent");
+  route_.active = false;
+  return startPath(path, what);
+}
+
+std::string Console::startPath(const std::vector<Cell>& path, const std::string& what) {
   goal_ = Goal{};
-  goal_.target = target;
+  goal_.target = path.back();
   goal_.path = path;
   goal_.active = true;
   if (path.size() == 1) {
@@ -151,6 +161,16 @@ std::string Console::startGoal(Cell target, const std::string& what) {
 }
 
 std::string Console::poll() {
+  std::string out;
+  out.swap(notes_);
+  out += pollRooms();
+  out += pollUpload();
+  out += pollGoal();
+  out += pollRoute();
+  return out;
+}
+
+std::string Console::pollGoal() {
   if (!goal_.active) return "";
   const std::optional<protocol::PathProgressMsg> p = runner_.with([](link::Session& s) { return s.pathProgress(); });
   if (!p || p->pathId != goal_.pathId) return "";
@@ -186,6 +206,13 @@ std::string Console::poll() {
 }
 
 std::string Console::execute(const ConsoleCommand& c) {
+  const std::string out = executeCommand(c);
+  std::string notes;
+  notes.swap(notes_);
+  return notes + out;
+}
+
+std::string Console::executeCommand(const ConsoleCommand& c) {
   using K = ConsoleCommand::Kind;
   const bool connected = runner_.with([](link::Session& s) { return s.connected(); });
   auto needLink = [&](const char* what) {
@@ -202,11 +229,13 @@ std::string Console::execute(const ConsoleCommand& c) {
     case K::Explore:
       needLink("explore");
       goal_.active = false;
+      route_.active = false;
       runner_.with([](link::Session& s) { return s.explore(); });
       return "exploring\n";
     case K::Stop:
       needLink("stop");
       goal_.active = false;
+      route_.active = false;
       runner_.with([](link::Session& s) { return s.stop(); });
       return "stopping\n";
     case K::Goto: {
@@ -224,8 +253,8 @@ std::string Console::execute(const ConsoleCommand& c) {
     }
     case K::GotoNear: {
       needLink("goto near");
-      const auto it = labels_.find(c.name);
-      if (it == labels_.end()) throw ConsoleError("goto near " + c.name + ": no such label (see label NAME C R); nothing sent");
+      const auto it = labels().find(c.name);
+      if (it == labels().end()) throw ConsoleError("goto near " + c.name + ": no such label (see label NAME C R); nothing sent");
       // The nearest free cell next to the labelled one, by route length.
       const MapView v = runner_.with([&](link::Session& s) { return viewOf(s, blocked_); });
       int col = 0, row = 0;
@@ -252,31 +281,17 @@ std::string Console::execute(const ConsoleCommand& c) {
       }
       const MapView v = runner_.with([&](link::Session& s) { return viewOf(s, blocked_); });
       if (v.bounds.empty() || !v.map.inside(c.col, c.row)) throw ConsoleError("label " + c.name + ": the cell is outside the map");
-      labels_[c.name] = v.toCell(c.col, c.row);
+      labels()[c.name] = v.toCell(c.col, c.row);
       return "label " + c.name + " at (" + std::to_string(c.col) + "," + std::to_string(c.row) + ")\n";
     }
-    case K::Rooms: {
-      const auto room = runner_.with([](link::Session& s) { return s.room(); });
-      std::ostringstream o;
-      o << "room " << (room ? room->roomId : 0) << " (current)";
-      if (room) o << ", entered at (" << room->entry.x << "," << room->entry.y << ")";
-      o << "\n";
-      return o.str();
-    }
+    case K::Rooms:
+      return roomsText();
     case K::Route:
-      throw ConsoleError("route " + c.name + ": no house is loaded in this console, so there is no route between rooms");
-    case K::Save: {
-      MapView v = runner_.with([&](link::Session& s) { return viewOf(s, {}); });
-      if (v.bounds.empty()) throw ConsoleError("save: there is no map yet");
-      for (const auto& [name, cell] : labels_) {
-        int col = 0, row = 0;
-        if (v.toMap(cell, col, row)) v.map.setLabel(name, mapio::CellBlock{col, row, 1, 1});
-      }
-      std::string error;
-      if (!mapio::saveRosMap(v.map, c.name, error)) throw ConsoleError("save: " + error);
-      return "saved " + c.name + " and " + mapio::pgmNameFor(c.name) + " (" + std::to_string(v.map.width()) + " x " +
-             std::to_string(v.map.height()) + " cells)\n";
-    }
+      needLink("route");
+      return startRoute(c);
+    case K::Save:
+      if (c.name.size() > 5 && c.name.substr(c.name.size() - 5) == ".yaml") return saveRoom(c.name);
+      return saveHouse(c.name);
     case K::Export: {
       const MapView v = runner_.with([&](link::Session& s) { return viewOf(s, blocked_); });
       if (v.bounds.empty()) throw ConsoleError("export: there is no map yet");
@@ -349,8 +364,8 @@ std::string Console::execute(const ConsoleCommand& c) {
           });
         }, c.seconds);
       } else {
-        if (!goal_.active && goal_.outcome.empty()) throw ConsoleError("wait goal: no goal was given");
-        ok = waitFor([&] { return !goal_.active; }, c.seconds);
+        if (!goal_.active && !route_.active && goal_.outcome.empty()) throw ConsoleError("wait goal: no goal was given");
+        ok = waitFor([&] { return !goal_.active && !route_.active; }, c.seconds);
         if (ok && goal_.outcome != "reached") throw ConsoleError("goal not reached: " + goal_.outcome);
       }
       if (!ok) throw ConsoleError("wait " + c.name + ": still not there after " + std::to_string(static_cast<int>(c.seconds)) + " s");

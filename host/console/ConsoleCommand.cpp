@@ -27,9 +27,12 @@ const char* consoleHelp() {
          "goto C R             drive to map cell column C, row R (as the map shows them)\n"
          "goto near LABEL      drive next to a labelled cell\n"
          "label NAME C R       name a map cell\n"
-         "rooms                rooms seen in this session\n"
-         "route ROOM           route to another room (needs a house)\n"
-         "save FILE.yaml       save the map (ROS map_server YAML + PGM, labels kept)\n"
+         "rooms                the house's rooms (the current one marked), their exits and labels\n"
+         "route ROOM C R       drive to cell column C, row R of another room's map (ROOM: number or name),\n"
+         "                     through the gateways between rooms\n"
+         "route near LABEL     drive next to a labelled cell, in whichever room has it\n"
+         "save DIR             save the house (house.yaml + one ROS map per room, labels kept)\n"
+         "save FILE.yaml       save the current room's map (ROS map_server YAML + PGM, labels kept)\n"
          "export FILE.png      picture of the map\n"
          "status               link, robot and map figures\n"
          "battery              the brick's battery voltage\n"
@@ -72,14 +75,20 @@ ConsoleCommand parseConsoleCommand(const std::string& line) {
     expectArgs(w, 1, "rooms");
     c.kind = ConsoleCommand::Kind::Rooms;
   } else if (k == "route") {
-    expectArgs(w, 2, "route ROOM");
     c.kind = ConsoleCommand::Kind::Route;
-    c.name = w[1];
+    if (w.size() == 3 && w[1] == "near") {
+      c.near = true;
+      c.name = w[2];
+    } else {
+      expectArgs(w, 4, "route ROOM C R  or  route near LABEL");
+      c.name = w[1];
+      c.col = parseCell(w[2], "column");
+      c.row = parseCell(w[3], "row");
+    }
   } else if (k == "save") {
-    expectArgs(w, 2, "save FILE.yaml");
+    expectArgs(w, 2, "save DIR  or  save FILE.yaml");
     c.kind = ConsoleCommand::Kind::Save;
     c.name = w[1];
-    if (c.name.size() < 6 || c.name.substr(c.name.size() - 5) != ".yaml") throw ConsoleError("save needs a .yaml file name: save FILE.yaml");
   } else if (k == "export") {
     expectArgs(w, 2, "export FILE.png");
     c.kind = ConsoleCommand::Kind::Export;

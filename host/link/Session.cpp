@@ -62,6 +62,59 @@ void Session::uploadMap(const Bounds& window, const std::vector<CellState>& rowM
   }
 }
 
+uint16_t Session::setPose(const Pose& pose) {
+  Payload p;
+  if (encodePose(PoseMsg{pose}, p) == 0) throw std::invalid_argument("the pose does not fit a packet");
+  return enqueue(Op::SetPose, p);
+}
+
+std::vector<RoomChange> Session::takeRoomChanges() {
+  std::vector<RoomChange> out;
+  out.swap(roomChanges_);
+  return out;
+}
+
+void Session::setPoseFromBrick(const Pose& p) {
+  if (pose_ && pose_->cell == p.cell && pose_->heading == p.heading) return;
+  posePrevious_ = pose_;
+  pose_ = p;
+  poseRoom_.reset();
+}
+
+void Session::noteRoom(uint16_t id) {
+  if (!roomId_) {
+    roomId_ = id;
+    return;
+  }
+  if (*roomId_ == id) return;
+  RoomChange c;
+  c.fromRoom = *roomId_;
+  c.toRoom = id;
+  // The old room's map: the copy of the epoch the last Status from that room named, which a
+  // new epoch's first delta may already have moved to the stash (then the copy is the new room's).
+  bool leftIsCopy = true;
+  if (roomEpoch_ && map_.hasEpoch() && map_.epoch() == *roomEpoch_) {
+    c.left = map_;
+  } else if (stashRoom_ == *roomId_ && stash_.known() > 0) {
+    c.left = stash_;
+    leftIsCopy = false;
+  } else {
+    c.left = map_;
+  }
+  // The brick reports the new room's start pose (0,0 facing +y) before the room itself: a pose
+  // not confirmed in the old room by a Status that equals that start is the new room's.
+  const bool startPose = pose_ && pose_->cell == Cell{0, 0} && pose_->heading == Dir::North;
+  if (poseRoom_ == *roomId_ || !startPose) c.lastPose = pose_;
+  else c.lastPose = posePrevious_;
+  roomChanges_.push_back(std::move(c));
+  roomId_ = id;
+  if (leftIsCopy) map_.clear();  // the new room's map comes as a new epoch
+  stash_.clear();
+  stashRoom_.reset();
+  poseRoom_.reset();
+  roomEpoch_.reset();
+}
+
 bool Session::acknowledged(uint16_t seq) const {
   return std::find(acknowledgedSeqs_.begin(), acknowledgedSeqs_.end(), seq) != acknowledgedSeqs_.end();
 }
@@ -104,6 +157,8 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
     if (reply.freshSession) {
       map_.clear();      // the brick does not know us: whatever we hold may be stale
       received_.reset();
+      roomId_.reset();   // nor its room counter (it may have restarted)
+      roomEpoch_.reset();
     }
     hello_ = reply;
     connected_ = true;
@@ -122,6 +177,11 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
       if (!v.header.reliable()) return;
       counters_.deltaBytes += kLengthPrefix + t.size;
       const uint64_t before = map_.changes();
+      MapDeltaReader peek(v.payload, v.payloadSize);
+      if (peek.validate() && map_.hasEpoch() && peek.header().epoch != map_.epoch() && map_.known() > 0) {
+        stash_ = map_;  // a new epoch: keep the old copy until the room is known
+        stashRoom_ = roomId_;
+      }
       if (map_.applyDelta(v.payload, v.payloadSize)) {
         ++counters_.deltasApplied;
         if (map_.changes() != before) lastMapChangeMs_ = nowMs;
@@ -135,8 +195,16 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
       StatusMsg s;
       if (decodeStatus(v.payload, v.payloadSize, s)) {
         status_ = s;
+        noteRoom(s.roomId);
+        setPoseFromBrick(s.pose);
+        poseRoom_ = s.roomId;
+        roomEpoch_ = s.mapEpoch;
         if (map_.hasEpoch() && s.mapEpoch != map_.epoch()) {
           // A new epoch whose first delta has not arrived yet: the old copy is void.
+          if (map_.known() > 0) {
+            stash_ = map_;
+            stashRoom_ = roomId_;
+          }
           map_.clear();
         }
       }
@@ -149,7 +217,7 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
     }
     case Op::Pose: {
       PoseMsg m;
-      if (decodePose(v.payload, v.payloadSize, m)) pose_ = m.pose;
+      if (decodePose(v.payload, v.payloadSize, m)) setPoseFromBrick(m.pose);
       break;
     }
     case Op::PathProgress: {
@@ -159,7 +227,10 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
     }
     case Op::NewRoom: {
       NewRoomMsg m;
-      if (decodeNewRoom(v.payload, v.payloadSize, m)) room_ = m;
+      if (decodeNewRoom(v.payload, v.payloadSize, m)) {
+        room_ = m;
+        noteRoom(m.roomId);
+      }
       break;
     }
     case Op::Battery: {

@@ -36,6 +36,14 @@ struct SessionCounters {
   uint64_t connects = 0;           // HelloReplies that opened the session
 };
 
+// The brick went into another room (NewRoom, or a Status with another room id): the room it
+// left, as the PC held it when the change became known.
+struct RoomChange {
+  uint16_t fromRoom = 0, toRoom = 0;
+  MirrorMap left;                // the map of the room it left (its frame)
+  std::optional<Pose> lastPose;  // where the robot stood last in that room, when known
+};
+
 class Session {
  public:
   explicit Session(const SessionConfig& config = {});
@@ -56,6 +64,9 @@ class Session {
   uint16_t requestMap();
   // Sends a whole map to the brick in chunks (window + row-major states).
   void uploadMap(const Bounds& window, const std::vector<CellState>& rowMajor, uint16_t transferId);
+  // Tells the brick where the robot stands on the map it holds (after uploadMap: in that map's
+  // frame). Returns the command's sequence number.
+  uint16_t setPose(const Pose& pose);
   void requestBattery() { batteryRequested_ = true; }
   // LEGO GET_BATTERY_LEVEL, as any NXT tool sends it (answer in legoBatteryMillivolts()).
   void requestLegoBattery() { legoBatteryRequested_ = true; }
@@ -72,6 +83,10 @@ class Session {
   const std::optional<Pose>& pose() const { return pose_; }
   const std::optional<protocol::PathProgressMsg>& pathProgress() const { return path_; }
   const std::optional<protocol::NewRoomMsg>& room() const { return room_; }
+  // The brick's room counter as last reported (none before the first report).
+  const std::optional<uint16_t>& roomId() const { return roomId_; }
+  // Room changes since the last call, oldest first.
+  std::vector<RoomChange> takeRoomChanges();
   const std::optional<uint16_t>& batteryMillivolts() const { return battery_; }
   const std::optional<uint16_t>& legoBatteryMillivolts() const { return legoBattery_; }
   const std::optional<protocol::HelloReplyMsg>& hello() const { return hello_; }
@@ -92,6 +107,8 @@ class Session {
   uint16_t enqueue(protocol::Op op, const protocol::Payload& payload);
   void handle(const protocol::Telegram& t, uint32_t nowMs);
   void append(std::vector<uint8_t>& out, protocol::Op op, uint16_t seq, const protocol::Payload& payload);
+  void noteRoom(uint16_t id);
+  void setPoseFromBrick(const Pose& p);
 
   SessionConfig config_;
   protocol::FrameDecoder decoder_;
@@ -109,6 +126,15 @@ class Session {
   std::optional<protocol::StatusMsg> status_;
   std::optional<protocol::CountersMsg> brickCounters_;
   std::optional<Pose> pose_;
+  std::optional<Pose> posePrevious_;      // the pose before the last change
+  std::optional<uint16_t> poseRoom_;      // the room a Status confirmed pose_ in (none: unconfirmed)
+  std::optional<uint16_t> roomId_;
+  std::optional<uint16_t> roomEpoch_;     // the map epoch the last Status of roomId_ named
+  std::vector<RoomChange> roomChanges_;
+  // The map as it was before the last epoch restart, and the room the brick was in then: a
+  // new-room delta may overtake the (unreliable) NewRoom message.
+  MirrorMap stash_;
+  std::optional<uint16_t> stashRoom_;
   std::optional<protocol::PathProgressMsg> path_;
   std::optional<protocol::NewRoomMsg> room_;
   std::optional<uint16_t> battery_;

@@ -1,27 +1,73 @@
 #include "host/link/SimBrick.hpp"
 
+#include "host/mapping/SimDrive.hpp"
+
 namespace nxtmap::link {
 
 using namespace protocol;
 
+namespace {
+
+ExplorerConfig explorerConfigFor(const sim::World& world, const mapping::RunConfig& c) {
+  ExplorerConfig e;
+  e.geometry = mapping::sonarGeometryFor(world, c.minRangeM, c.rangeM,
+                                         c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.coneHalfAngleDeg);
+  e.searchSliceStates = c.searchSliceStates;
+  return e;
+}
+
+// World heading (N, E, S, W) as a sim::Heading step.
+sim::Heading headingOf(int quarters) { return static_cast<sim::Heading>(((quarters % 4) + 4) % 4); }
+
+// The frame in which `brickCell` (facing `brickHeading`) is world cell (col, row) facing `worldHeading`.
+mapping::FrameTransform frameThrough(Cell brickCell, Dir brickHeading, int col, int row, sim::Heading worldHeading) {
+  const sim::Heading h0 = headingOf(static_cast<int>(worldHeading) - static_cast<int>(brickHeading));
+  // Origin = world cell minus the rotated brick cell: measure the rotation with a frame at 0,0.
+  const mapping::FrameTransform atZero(0, 0, h0);
+  int dc = 0, dr = 0;
+  atZero.toWorld(brickCell, dc, dr);
+  return mapping::FrameTransform(col - dc, row - dr, h0);
+}
+
+}  // namespace
+
 SimBrick::SimBrick(const sim::World& world, const SimBrickConfig& config)
-    : config_(config),
-      run_(world, config.run),
-      shadow_(packedBytes(run_.explorer().map().grid().capacityWidth(), run_.explorer().map().grid().capacityHeight(), 2)),
-      link_(run_.explorer().map().grid(), shadow_.data(), config.link) {}
+    : world_(world),
+      config_(config),
+      explorerConfig_(explorerConfigFor(world, config.run)),
+      frame_(config.run.startCol, config.run.startRow, config.run.heading),
+      robot_(world, config.run.startCol, config.run.startRow, config.run.heading, config.run.noise, config.run.seed,
+             config.run.sensorReachCm, 0.0),
+      storage_(std::make_unique<Storage>()),
+      map_(std::make_unique<MapLayers>(storage_->map.view(), Storage::kWidth(), Storage::kHeight())),
+      planner_(std::make_unique<TravelPlanner>(storage_->travel.view(), Storage::kWidth(), Storage::kHeight())),
+      shadow_(packedBytes(map_->grid().capacityWidth(), map_->grid().capacityHeight(), 2)),
+      link_(map_->grid(), shadow_.data(), config.link) {}
+
+SimBrick::~SimBrick() = default;
 
 void SimBrick::receive(const uint8_t* data, size_t size) {
   for (size_t i = 0; i < size; ++i) link_.receive(data[i]);
 }
 
-Pose SimBrick::pose() const { return pathPose_ ? *pathPose_ : run_.explorer().pose(); }
+Pose SimBrick::pose() const { return explorer_ != nullptr ? explorer_->pose() : restPose_; }
+
+Counters SimBrick::counters() const { return pilot_ ? pilot_->counters() : Counters{}; }
+
+bool SimBrick::finished() const { return pilot_ && pilot_->finished(); }
+
+void SimBrick::trueCell(int& col, int& row) const {
+  col = robot_.col();
+  row = robot_.row();
+}
 
 BrickReport SimBrick::report() const {
   BrickReport r;
   r.mode = mode_;
   r.pose = pose();
-  r.counters = run_.counters();
+  r.counters = counters();
   r.batteryMillivolts = config_.batteryMillivolts;
+  r.roomId = roomId_;
   r.path = path_;
   return r;
 }
@@ -41,46 +87,129 @@ void SimBrick::linkLost() {
   txQueue_.clear();
 }
 
+void SimBrick::stopMoving() {
+  if (mode_ == BrickMode::Following && path_.state == PathState::Following) path_.state = PathState::Aborted;
+  if (mode_ == BrickMode::Exploring || mode_ == BrickMode::Following) mode_ = BrickMode::Idle;
+}
+
+// A run holds the pose while it lives; everything that moves the robot otherwise ends it here.
+void SimBrick::setPose(const Pose& p) {
+  stopMoving();
+  // The cell the brick believed it stood on is now called p: the frame follows.
+  int col = 0, row = 0;
+  const Pose before = pose();
+  frame_.toWorld(before.cell, col, row);
+  frame_ = frameThrough(p.cell, p.heading, col, row, frame_.toWorld(before.heading));
+  restPose_ = p;
+  pilot_.reset();
+  explorer_ = nullptr;
+}
+
+void SimBrick::startExploring() {
+  if (pilot_ && !pilot_->finished()) {
+    mode_ = BrickMode::Exploring;  // resume: the cut-short action carries on
+    return;
+  }
+  // A new run on the map as it is, from where the robot stands.
+  const Pose here = pose();
+  restPose_ = here;
+  pilot_.reset();
+  explorer_ = nullptr;
+  propagation_.reset();
+  frontier_.reset();
+  if (config_.run.strategy == mapping::Strategy::Propagation) {
+    propagation_ = std::make_unique<PropagationExplorer>(*map_, *planner_, explorerConfig_);
+    explorer_ = propagation_.get();
+  } else {
+    frontier_ = std::make_unique<FrontierExplorer>(*map_, *planner_, explorerConfig_);
+    explorer_ = frontier_.get();
+  }
+  PilotConfig pilot;
+  pilot.correct = config_.run.poseCorrection;
+  pilot_ = std::make_unique<Pilot>(*explorer_, pilot);
+  pending_ = pilot_->step(DriveEvent::startAt(here));
+  mode_ = pilot_->finished() ? BrickMode::Done : BrickMode::Exploring;
+}
+
+void SimBrick::takeMapChunk(const MapChunkMsg& chunk) {
+  ++mapChunks_;
+  stopMoving();
+  if (chunk.chunkIndex == 0) {
+    restPose_ = pose();  // the robot stays where it is on the PC's map (same frame)
+    pilot_.reset();
+    explorer_ = nullptr;
+    map_->clear();
+  }
+  for (uint16_t i = 0; i < chunk.count; ++i) {
+    const CellState st = chunk.state(i);
+    if (st == CellState::Free) (void)map_->markVisited(chunk.cellOf(i));
+    else if (st == CellState::Occupied) (void)map_->markBlocked(chunk.cellOf(i));
+  }
+  if (chunk.chunkIndex + 1 >= chunk.chunkCount) link_.mapRestarted();
+}
+
+void SimBrick::newRoom() {
+  stopMoving();
+  int col = 0, row = 0;
+  const Pose before = pose();
+  frame_.toWorld(before.cell, col, row);
+  frame_ = mapping::FrameTransform(col, row, frame_.toWorld(before.heading));
+  restPose_ = Pose{};
+  pilot_.reset();
+  explorer_ = nullptr;
+  map_->clear();
+  link_.mapRestarted();
+  ++roomId_;
+  mode_ = BrickMode::Idle;
+}
+
 void SimBrick::carryOut(const Command& c) {
   executed_.push_back(c.seq);
   switch (c.kind) {
     case CommandKind::Explore:
-      pathPose_.reset();
-      mode_ = run_.finished() ? BrickMode::Done : BrickMode::Exploring;
+      startExploring();
       break;
     case CommandKind::Stop:
-      if (mode_ == BrickMode::Following) path_.state = PathState::Aborted;
-      mode_ = BrickMode::Idle;
+      stopMoving();
       break;
-    case CommandKind::FollowPath:
+    case CommandKind::FollowPath: {
+      if (mode_ == BrickMode::Exploring) stopMoving();
       pathMsg_ = c.path;
       path_ = PathProgressMsg{c.path.pathId, 0, PathState::Following, c.path.start};
-      if (c.path.start != pose().cell) {
+      const Pose here = pose();
+      if (c.path.start != here.cell) {
         path_.state = PathState::Aborted;  // the path must start where the robot stands
         mode_ = BrickMode::Idle;
         break;
       }
-      pathPose_ = pose();
+      // The path moves the robot: the run (if any) no longer knows where it is.
+      restPose_ = here;
+      pilot_.reset();
+      explorer_ = nullptr;
       mode_ = BrickMode::Following;
       if (c.path.count == 1) {
         path_.state = PathState::Reached;
         mode_ = BrickMode::Idle;
       }
       break;
+    }
     case CommandKind::MapChunk:
-      ++mapChunks_;
+      takeMapChunk(c.chunk);
+      break;
+    case CommandKind::SetPose:
+      setPose(c.pose);
       break;
   }
 }
 
 bool SimBrick::worldBlocked(Cell c) const {
   int col = 0, row = 0;
-  run_.frame().toWorld(c, col, row);
-  return !run_.world().inside(col, row) || run_.world().blocked(col, row);
+  frame_.toWorld(c, col, row);
+  return world_.blocked(col, row);
 }
 
 void SimBrick::followOne() {
-  const Cell from = pathPose_->cell;
+  const Cell from = restPose_.cell;
   const Cell to = pathMsg_.cellAt(static_cast<uint16_t>(path_.reached + 1));
   const bool diagonal = from.x != to.x && from.y != to.y;
   const bool cornerBlocked = diagonal && (worldBlocked(Cell{to.x, from.y}) || worldBlocked(Cell{from.x, to.y}));
@@ -90,11 +219,16 @@ void SimBrick::followOne() {
     mode_ = BrickMode::Idle;
     return;
   }
-  pathPose_->cell = to;
-  if (to.y > from.y) pathPose_->heading = Dir::North;
-  else if (to.y < from.y) pathPose_->heading = Dir::South;
-  else if (to.x > from.x) pathPose_->heading = Dir::East;
-  else pathPose_->heading = Dir::West;
+  restPose_.cell = to;
+  if (to.y > from.y) restPose_.heading = Dir::North;
+  else if (to.y < from.y) restPose_.heading = Dir::South;
+  else if (to.x > from.x) restPose_.heading = Dir::East;
+  else restPose_.heading = Dir::West;
+  // The simulated robot goes along, onto the cell's centre.
+  int col = 0, row = 0;
+  frame_.toWorld(to, col, row);
+  const double cm = robot_.cellCm();
+  (void)robot_.setPose((col + 0.5) * cm, (row + 0.5) * cm, 90.0 * static_cast<int>(frame_.toWorld(restPose_.heading)));
   ++path_.reached;
   path_.at = to;
   if (path_.reached + 1 >= pathMsg_.count) {
@@ -103,15 +237,24 @@ void SimBrick::followOne() {
   }
 }
 
+void SimBrick::exploreOne() {
+  if (!pilot_ || pilot_->finished()) {
+    mode_ = BrickMode::Done;
+    return;
+  }
+  // The core's thinking slices cost no robot time here (the brick spends about 1 ms on each).
+  do {
+    pending_ = pilot_->step(mapping::carryOutOnRobot(robot_, pending_, explorerConfig_.geometry));
+  } while (!pilot_->finished() && pending_.kind == DriveAction::Kind::Think);
+  if (pilot_->finished() || pending_.kind == DriveAction::Kind::Done) mode_ = BrickMode::Done;
+}
+
 void SimBrick::step(uint32_t nowMs) {
   Command c;
   while (link_.nextCommand(c)) carryOut(c);
   while (nowMs >= nextActionMs_) {
     if (mode_ == BrickMode::Exploring) {
-      bool more = run_.step();
-      // The core's thinking slices cost no robot time here (the brick spends about 1 ms on each).
-      while (more && run_.lastAction().kind == DriveAction::Kind::Think) more = run_.step();
-      if (!more) mode_ = BrickMode::Done;
+      exploreOne();
       nextActionMs_ += config_.actionMs;
     } else if (mode_ == BrickMode::Following) {
       followOne();

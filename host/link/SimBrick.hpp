@@ -1,24 +1,37 @@
-// SimBrick: a stand-in for the brick, on the PC. The common core's explorer drives the
-// simulated robot (mapping::MappingRun) and the brick's own protocol code (BrickLink, MapSync)
-// talks over the link, exactly the objects the firmware runs. Used to test the link end to end
-// and by `nxtmap connect sim:WORLD` until the emulated brick runs the real firmware.
+// SimBrick: a stand-in for the brick, on the PC. It is built like the firmware's BrickApp: one
+// room map (the common core's MapLayers) that the explorer maps into, the PC's uploads load into
+// and the brick's own protocol code (BrickLink, MapSync) keeps the PC's copy equal to; the
+// common core's explorer and pilot drive the simulated robot (host/mapping SimDrive) exactly as
+// the firmware drives the real one. Used to test the link end to end and by
+// `nxtmap connect sim:WORLD` until the emulated brick runs the real firmware.
+//
+// As on the brick: an upload (MapChunk) replaces the map and keeps the pose in the same frame;
+// SetPose says where the robot stands on the map it holds (e.g. a room just uploaded, in that
+// room's frame); Explore resumes a stopped run, or starts a new run on the map as it is from
+// where the robot stands (after a path, an upload or SetPose); newRoom() is the Left button.
 //
 // Stand-in simplifications: paths are followed on the world's truth, one cell per cellMs,
-// without sensing; a later Explore resumes from the explorer's own belief of its pose; map
-// uploads (MapChunk) are acknowledged and counted but not loaded into the explorer's map.
+// without sensing (the robot is put on each cell's centre).
 #pragma once
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
 
+#include "common/explore/ExplorerStorage.hpp"
+#include "common/explore/FrontierExplorer.hpp"
+#include "common/explore/PropagationExplorer.hpp"
+#include "common/motion/Pilot.hpp"
 #include "common/protocol/BrickLink.hpp"
+#include "host/mapping/FrameTransform.hpp"
 #include "host/mapping/MappingRun.hpp"
+#include "host/sim/SimRobot.hpp"
+#include "host/sim/World.hpp"
 
 namespace nxtmap::link {
 
 struct SimBrickConfig {
-  mapping::RunConfig run;
+  mapping::RunConfig run;       // start cell and heading in the world, noise, strategy, ...
   uint32_t actionMs = 20;       // one explorer action (read / move / turn) every this many ms
   uint32_t cellMs = 100;        // path following: one cell every this many ms
   uint16_t batteryMillivolts = 7800;
@@ -27,7 +40,12 @@ struct SimBrickConfig {
 
 class SimBrick {
  public:
+  // Host capacity: rooms up to 128 x 128 cells.
+  using Storage = ExplorerStorage<128, 128, 8192>;
+
+  // The world must outlive the brick.
   SimBrick(const sim::World& world, const SimBrickConfig& config);
+  ~SimBrick();
 
   void receive(const uint8_t* data, size_t size);
   // Up to maxBytes of what the brick sends now (whole frames are queued; bytes leave in order).
@@ -35,30 +53,57 @@ class SimBrick {
   // Carries out commands and moves the robot up to nowMs.
   void step(uint32_t nowMs);
   void linkLost();
+  // The Left button: a new room starts where the robot stands (empty map, pose (0,0) facing +y).
+  void newRoom();
 
-  const RoomGrid& grid() const { return run_.explorer().map().grid(); }
+  const RoomGrid& grid() const { return map_->grid(); }
   protocol::BrickMode mode() const { return mode_; }
   const protocol::BrickLink& link() const { return link_; }
-  const mapping::MappingRun& run() const { return run_; }
+  // The current run's explorer counters (zero before the first Explore), as the brick reports them.
+  Counters counters() const;
+  // Whether the current exploring run is over (false before the first Explore).
+  bool finished() const;
   // Sequence numbers of every command carried out, in order (the test for "never twice").
   const std::vector<uint16_t>& executed() const { return executed_; }
+  // The brick's pose in its map's frame.
   Pose pose() const;
   const protocol::PathProgressMsg& path() const { return path_; }
   uint32_t mapChunks() const { return mapChunks_; }
+  uint16_t roomId() const { return roomId_; }
+  // The robot's true cell in the world, and the world cell of a cell of the brick's map.
+  void trueCell(int& col, int& row) const;
+  void toWorld(Cell c, int& col, int& row) const { frame_.toWorld(c, col, row); }
 
  private:
   void carryOut(const protocol::Command& c);
+  void startExploring();
+  void takeMapChunk(const protocol::MapChunkMsg& chunk);
+  void setPose(const Pose& p);
+  void stopMoving();
+  void exploreOne();
   void followOne();
   bool worldBlocked(Cell c) const;
   protocol::BrickReport report() const;
 
+  const sim::World& world_;
   SimBrickConfig config_;
-  mapping::MappingRun run_;
+  ExplorerConfig explorerConfig_;
+  mapping::FrameTransform frame_;  // the brick map's frame -> world cells (changes with SetPose / new room)
+  sim::SimRobot robot_;
+  std::unique_ptr<Storage> storage_;
+  std::unique_ptr<MapLayers> map_;
+  std::unique_ptr<TravelPlanner> planner_;
+  std::unique_ptr<PropagationExplorer> propagation_;
+  std::unique_ptr<FrontierExplorer> frontier_;
+  Explorer* explorer_ = nullptr;   // the current run's, or none (a new run starts at restPose_)
+  std::unique_ptr<Pilot> pilot_;
+  DriveAction pending_{};          // the action the pilot asked for last
+  Pose restPose_{};                // where the robot stands when no run holds its pose
   std::vector<uint8_t> shadow_;
   protocol::BrickLink link_;
   protocol::BrickMode mode_ = protocol::BrickMode::Idle;
+  uint16_t roomId_ = 0;
   uint32_t nextActionMs_ = 0;
-  std::optional<Pose> pathPose_;  // pose while/after following a path (the explorer does not move then)
   protocol::PathMsg pathMsg_;
   protocol::PathProgressMsg path_;
   std::vector<uint16_t> executed_;

@@ -44,6 +44,7 @@ size_t SimTransport::read(uint8_t* buffer, size_t capacity, int timeoutMs) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeoutMs);
   while (true) {
     const uint32_t now = nowMs();
+    for (int n = newRoomPresses_.exchange(0); n > 0; --n) brick_->newRoom();
     brick_->step(now);
     credit_ = std::min(credit_ + (now - lastMs_) * 46.08, 4096.0);
     lastMs_ = now;

@@ -2,6 +2,7 @@
 // wall clock (optionally sped up), so the console can talk to `sim:WORLD` exactly as to a real
 // link. It passes bytes at the radio's 460800 baud.
 #pragma once
+#include <atomic>
 #include <chrono>
 #include <memory>
 
@@ -19,7 +20,10 @@ class SimTransport : public Transport {
   size_t read(uint8_t* buffer, size_t capacity, int timeoutMs) override;
   void write(const uint8_t* data, size_t size) override;
   std::string describe() const override { return description_; }
+  // The stand-in itself: read it only while no one is reading or writing the transport.
   const SimBrick& brick() const { return *brick_; }
+  // Presses the stand-in's Left button (a new room) at its next step; safe from any thread.
+  void pressNewRoom() { newRoomPresses_.fetch_add(1); }
 
  private:
   uint32_t nowMs() const;
@@ -29,6 +33,7 @@ class SimTransport : public Transport {
   std::string description_;
   double speed_;
   std::chrono::steady_clock::time_point start_;
+  std::atomic<int> newRoomPresses_{0};
   double credit_ = 0;
   uint32_t lastMs_ = 0;
 };

@@ -64,7 +64,9 @@ TEST(Console, BadGoalsAndMalformedCommandsGetOneClearMessageAndTheRobotStays) {
       {"goto x y", "nxtmap: column 'x' is not a cell number (0, 1, 2, ...)"},
       {"label 9lives 1 1", "nxtmap: label 9lives: a name is 1..64 letters, digits, _ or -, starting with a letter"},
       {"fly away", "nxtmap: unknown command 'fly' (type help for the list)"},
-      {"save map.txt", "nxtmap: save needs a .yaml file name: save FILE.yaml"},
+      {"save", "nxtmap: usage: save DIR  or  save FILE.yaml"},
+      {"route 1 2 2", "nxtmap: route 1 2 2: no room '1' (the house has rooms 0..0, see rooms); nothing sent"},
+      {"route 0 0 0", "nxtmap: route 0 0 0: that cell is unexplored; nothing sent"},
   };
   std::string script = "explore\nwait explored 120\n";
   for (const Case& c : cases) script += c.line + "\n";

@@ -68,7 +68,7 @@ TEST(LinkEndToEnd, CleanLinkMapsTheRoomAndReachesAGoal) {
   ASSERT_TRUE(h.runUntil([&] { return pc.connected(); }, 1000));
   pc.explore();
   ASSERT_TRUE(h.runUntil([&] { return brick.mode() == protocol::BrickMode::Done; }, 600000));
-  std::printf("clean run: explored in %u ms, %u cells moved\n", h.nowMs(), brick.run().counters().cellsMoved);
+  std::printf("clean run: explored in %u ms, %u cells moved\n", h.nowMs(), brick.counters().cellsMoved);
   ASSERT_TRUE(h.runUntil([&] { return brick.link().mapSync().inFlight() == 0 && !brick.link().mapSync().pending(); }, 5000));
   EXPECT_TRUE(sameMap(brick.grid(), pc.map()));
   EXPECT_GT(pc.map().known(), 100u);
@@ -113,13 +113,13 @@ TEST(LinkEndToEnd, FivePercentDamagedBytesAndADisconnectLoseNothingAndRunNothing
     ASSERT_TRUE(h.runUntil([&] { return pc.connected(); }, 30000)) << seed;
     const uint16_t exploreSeq = pc.explore();
     // A stop and a resume in the middle, sent while bytes are being damaged.
-    ASSERT_TRUE(h.runUntil([&] { return brick.run().counters().cellsMoved >= 10; }, 120000))
+    ASSERT_TRUE(h.runUntil([&] { return brick.counters().cellsMoved >= 10; }, 120000))
         << seed << " mode " << int(brick.mode()) << " executed " << brick.executed().size() << " moved "
-        << brick.run().counters().cellsMoved << " finished " << brick.run().finished();
+        << brick.counters().cellsMoved << " finished " << brick.finished();
     pc.stop();
     pc.explore();
     // Disconnect in the middle of the run, for two seconds.
-    ASSERT_TRUE(h.runUntil([&] { return brick.run().counters().cellsMoved >= 25; }, 120000)) << seed;
+    ASSERT_TRUE(h.runUntil([&] { return brick.counters().cellsMoved >= 25; }, 120000)) << seed;
     h.disconnect(2000);
     ASSERT_TRUE(h.runUntil([&] { return brick.mode() == protocol::BrickMode::Done; }, 900000)) << seed;
     ASSERT_TRUE(h.runUntil([&] { return pc.commandsDone() && brick.link().mapSync().inFlight() == 0 &&

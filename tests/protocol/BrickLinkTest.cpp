@@ -191,6 +191,31 @@ TEST_F(BrickLinkTest, AMalformedCommandIsAcknowledgedButNeverRun) {
   EXPECT_EQ(r.headers.back().ack, 1);
 }
 
+TEST_F(BrickLinkTest, SetPoseIsACommandRunOnceAndABadPoseIsNeverRun) {
+  hello(1);
+  collect(0);
+  Payload p;
+  ASSERT_GT(encodePose(PoseMsg{Pose{Cell{-3, 7}, Dir::West}}, p), 0u);
+  const Bytes setPose = test::pcPacket(Op::SetPose, 1, received, &p);
+  feed(setPose);
+  feed(setPose);  // resent: runs once
+  Received r = collect(10);
+  std::vector<Command> cmds = commands();
+  ASSERT_EQ(cmds.size(), 1u);
+  EXPECT_EQ(cmds[0].kind, CommandKind::SetPose);
+  EXPECT_EQ(cmds[0].pose.cell, (Cell{-3, 7}));
+  EXPECT_EQ(cmds[0].pose.heading, Dir::West);
+  EXPECT_EQ(r.headers.back().ack, 1);
+  // A heading outside 0..3 and a short payload: acknowledged, never run.
+  p.bytes[4] = 4;
+  feed(test::pcPacket(Op::SetPose, 2, received, &p));
+  p.size = 4;
+  feed(test::pcPacket(Op::SetPose, 3, received, &p));
+  r = collect(20);
+  EXPECT_TRUE(commands().empty());
+  EXPECT_EQ(r.headers.back().ack, 3);
+}
+
 TEST_F(BrickLinkTest, UnacknowledgedDeltasComeAgainAndAcknowledgedOnesDoNot) {
   hello(1);
   collect(0);
