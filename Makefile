@@ -1,5 +1,5 @@
 # nxtmap: the front door. Every target installs what it needs first (see scripts/deps.sh).
-#   make demo   - one mapping run in the simulator with the live display
+#   make demo   - the firmware in the emulated brick, driven from the PC console (live map, goal, house saved)
 #   make test   - every test (host build with sanitizers + ARM7TDMI cross-build of common/ + make size)
 #   make firmware / make size - the brick image and its enforced budgets
 #   make bench  - speed and quality targets, measured against their targets
@@ -17,7 +17,7 @@ CMAKE_GEN := -G Ninja
 all: host
 
 help:
-	@echo "make demo   - run one mapping in the simulator, live"
+	@echo "make demo   - the firmware in the emulated brick with the PC console: explore, goal, save, export"
 	@echo "make test   - build with sanitizers, run all tests, cross-build common/ for the ARM7TDMI"
 	@echo "make bench  - benchmarks, measured against their targets"
 	@echo "make firmware - the brick images: build/firmware/nxtmap.{elf,bin} (flash), nxtmap-ram.{elf,bin} (fwexec), nxtmap-sim.elf"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # make demo: the whole product on one PC. The real firmware image runs in the emulated brick in one of the
 # published rooms; the console connects to it over the (emulated) Bluetooth link, shows the live map while
-# the robot explores, sends a goal, watches the robot reach it, saves and exports the map, then sums up.
+# the robot explores, sends a goal, watches the robot reach it, saves the house (houses format: a ROS map per
+# room + house.yaml), exports a PNG and the merged ROS map, then sums up.
 set -euo pipefail
 BUILD=${BUILD:-build}
 NXTMAP="$BUILD/host/host/cli/nxtmap"
@@ -40,11 +41,16 @@ status
 goto $GOAL
 wait goal 60
 battery
-save $OUT/room.yaml
+rooms
+save $OUT/house
 export $OUT/room.png
 quit
 SCRIPT
 RC=$?
+if [ "$RC" -eq 0 ]; then
+  echo "== the saved house, exported as one ROS map and a picture"
+  "$NXTMAP" export "$OUT/house" --png "$OUT/house.png" --ros "$OUT/ros" || RC=$?
+fi
 wait $BRICK || true
 trap - EXIT
 T1=$(date +%s)
@@ -53,5 +59,5 @@ echo "== 3. the brick's own report"
 sed -n '/^end/,$p' "$OUT/brick.log"
 echo "== summary"
 echo "console exit code $RC; wall time $((T1 - T0)) s"
-echo "map: $OUT/room.yaml + room.pgm (ROS map_server), picture $OUT/room.png, brick LCD $OUT/lcd.png"
+echo "house: $OUT/house (house.yaml + a ROS map per room); merged ROS map $OUT/ros; pictures $OUT/room.png, $OUT/house.png; brick LCD $OUT/lcd.png"
 exit $RC
