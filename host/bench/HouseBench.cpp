@@ -21,7 +21,7 @@ using report::formatNumber;
 
 constexpr double kCleanTargetPct = 99.0;
 constexpr double kNoisyTargetPct = 97.0;
-constexpr uint64_t kNoisySeed = 1;
+constexpr int kNoisySeeds = 3;  // typical noise: seeds 1..3, every one must meet the target
 
 fs::path houseDir() {
   const fs::path local = fs::path("worlds") / "houseexpo";
@@ -37,12 +37,12 @@ struct Result {
   uint32_t sensorRequests = 0;
 };
 
-Result mapHouse(const house::HousePlan& plan, const std::string& noise, mapping::Strategy strategy) {
+Result mapHouse(const house::HousePlan& plan, const std::string& noise, mapping::Strategy strategy, uint64_t seed) {
   house::HouseConfig config;
   config.strategy = strategy;
   house::defaultStart(plan, config.startCol, config.startRow);
   config.noise = *sim::noiseProfileByName(noise);
-  config.seed = kNoisySeed;
+  config.seed = seed;
   const auto t0 = std::chrono::steady_clock::now();
   house::HouseMapper m(plan.world, config);
   m.run();
@@ -66,8 +66,9 @@ int runHouseBench() {
     if (e.path().extension() == ".json") files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
-  std::cout << "\nhouses (HouseExpo, room by room with each strategy; agreement on cells a reachable cell can observe)\n";
-  const std::vector<size_t> w = {20, 12, 8, 13, 9, 10, 9, 8, 10, 8};
+  std::cout << "\nhouses (HouseExpo, room by room with each strategy; agreement on cells a reachable cell can observe;\n"
+            << "typical noise: the worst of seeds 1-" << kNoisySeeds << ", their mean in brackets; time and sensors: means)\n";
+  const std::vector<size_t> w = {20, 12, 8, 11, 9, 21, 9, 7, 9, 8};
   const std::vector<std::string> head = {"house", "strategy", "noise", "rooms/plan", "gateways", "agreement", "target",
                                          "result", "time", "sensors"};
   std::string line;
@@ -83,18 +84,31 @@ int runHouseBench() {
     }
     for (const mapping::Strategy strategy : {mapping::Strategy::Propagation, mapping::Strategy::Frontier}) {
       for (const std::string noise : {"none", "typical"}) {
-        const Result r = mapHouse(*l.plan, noise, strategy);
-        wall += r.wallS;
+        // Without noise one run; with typical noise the worst of kNoisySeeds runs counts (mean shown too).
+        const int runs = noise == "none" ? 1 : kNoisySeeds;
+        Result worst;
+        double sumPct = 0, sumTime = 0, sumSensors = 0;
+        for (int k = 1; k <= runs; ++k) {
+          const Result r = mapHouse(*l.plan, noise, strategy, static_cast<uint64_t>(k));
+          wall += r.wallS;
+          sumPct += r.score.agreementPct();
+          sumTime += r.timeUnits;
+          sumSensors += r.sensorRequests;
+          if (k == 1 || r.score.agreementPct() < worst.score.agreementPct()) worst = r;
+        }
         const double target = noise == "none" ? kCleanTargetPct : kNoisyTargetPct;
-        const bool ok = r.score.agreementPct() >= target;
+        const bool ok = worst.score.agreementPct() >= target;
         ++targets;
         met += ok ? 1 : 0;
+        const std::string agreement = runs == 1 ? formatNumber(worst.score.agreementPct(), 1) + " %"
+                                                : formatNumber(worst.score.agreementPct(), 1) + " % (mean " +
+                                                      formatNumber(sumPct / runs, 1) + ")";
         const std::vector<std::string> cells = {
             f.stem().string().substr(0, 19), mapping::strategyName(strategy), noise,
-            std::to_string(r.score.rooms) + "/" + std::to_string(l.plan->roomNum),
-            std::to_string(r.score.gateways), formatNumber(r.score.agreementPct(), 1) + " %",
-            ">= " + formatNumber(target) + " %", ok ? "PASS" : "MISS", formatNumber(r.timeUnits, 0),
-            std::to_string(r.sensorRequests)};
+            std::to_string(worst.score.rooms) + "/" + std::to_string(l.plan->roomNum),
+            std::to_string(worst.score.gateways), agreement,
+            ">= " + formatNumber(target) + " %", ok ? "PASS" : "MISS", formatNumber(sumTime / runs, 0),
+            formatNumber(sumSensors / runs, 0)};
         line.clear();
         for (size_t i = 0; i < cells.size(); ++i) line += pad(cells[i], w[i]) + " ";
         std::cout << line << "\n";

@@ -369,7 +369,7 @@ std::string Console::executeCommand(const ConsoleCommand& c) {
         if (ok && goal_.outcome != "reached") throw ConsoleError("goal not reached: " + goal_.outcome);
       }
       if (!ok) throw ConsoleError("wait " + c.name + ": still not there after " + std::to_string(static_cast<int>(c.seconds)) + " s");
-      return c.name == "explored" ? "exploring done\n" : "goal reached\n";
+      return c.name == "explored" ? "exploring done\n" : "done waiting: goal reached\n";
     }
   }
   return "";
