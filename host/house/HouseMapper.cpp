@@ -2,6 +2,7 @@
 
 #include "common/motion/Pilot.hpp"
 #include "host/house/GoToExplorer.hpp"
+#include "host/house/RoomRegistration.hpp"
 #include "host/house/RoomSplit.hpp"
 #include "host/mapping/SimDrive.hpp"
 
@@ -53,7 +54,7 @@ HouseMapper::HouseMapper(const sim::World& world, const HouseConfig& config)
              config.sensorReachCm, 0.0) {}
 
 void HouseMapper::mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, const RoomExit* via) {
-  const network::RoomTransform toHouse = network::RoomTransform::fromPose(belief_.cell, belief_.heading);
+  network::RoomTransform toHouse = network::RoomTransform::fromPose(belief_.cell, belief_.heading);
   const network::RoomTransform toRoom = toHouse.inverse();
   std::vector<Cell> entrance;
   for (const Cell c : entranceHouse) entrance.push_back(toRoom.apply(c));
@@ -67,6 +68,14 @@ void HouseMapper::mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, 
     for (const RoomExit& e : run.exits())
       std::fprintf(stderr, "  exit inside %d,%d out %d depth %d cells %zu\n", e.inside.x, e.inside.y,
                    static_cast<int>(e.outward), e.depth, e.cells.size());
+  }
+  // The new room's frame came from the believed pose at its entrance; what it saw through the doorway
+  // and of the walls it shares with the rooms already mapped re-registers it (and the belief with it).
+  if (fromRoom >= 0 && config_.registerCells > 0) {
+    const RoomRegistration r = registerRoom(run.fullMap(), toHouse, network_.merged(), config_.registerCells);
+    if (std::getenv("NXTMAP_HOUSE_DEBUG") && r.shifted())
+      std::fprintf(stderr, "  registered by %d,%d (score %d -> %d)\n", r.dx, r.dy, r.scoreBefore, r.scoreAfter);
+    toHouse = r.toHouse;
   }
   const Counters& c = run.counters();
   counters_.explore.sensorRequests += c.sensorRequests;

@@ -33,6 +33,7 @@ struct HouseConfig {
   RoomLimits roomLimits{3, 80};             // an open area over 8 m (at 10 cm cells) is several rooms
   int maxRooms = 40;                        // safety stop
   bool poseCorrection = true;               // the pilot keeps the robot on the grid (off: dead reckoning)
+  int registerCells = 2;                    // a new room's frame may shift this far to fit the rooms mapped (0: off)
 };
 
 struct HouseCounters {

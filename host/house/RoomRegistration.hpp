@@ -1,0 +1,25 @@
+// RoomRegistration: a new room's frame comes from the robot's believed pose at the entrance, which
+// drifts from room to room. The new room's map overlaps the rooms already mapped (what it saw through
+// the doorway, the walls they share): the whole-cell shift of its frame, up to maxShift cells each
+// way, under which the two agree best corrects the frame. Walls weigh more than free cells; a shift
+// is taken only when it beats staying put by `margin` (so no overlap means no change).
+#pragma once
+
+#include "host/network/RoomMap.hpp"
+#include "host/network/RoomTransform.hpp"
+
+namespace nxtmap::house {
+
+struct RoomRegistration {
+  network::RoomTransform toHouse;  // the corrected frame (the given one when not shifted)
+  int dx = 0, dy = 0;              // the shift taken, house cells
+  int scoreBefore = 0, scoreAfter = 0;
+  bool shifted() const { return dx != 0 || dy != 0; }
+};
+
+// fresh: the new room's map in its frame; toHouse: its frame as believed; known: the rooms already
+// mapped, merged in the house frame.
+RoomRegistration registerRoom(const network::RoomMap& fresh, const network::RoomTransform& toHouse,
+                              const network::RoomMap& known, int maxShift, int margin = 12);
+
+}  // namespace nxtmap::house

@@ -1,0 +1,91 @@
+// RoomRegistration: a room whose frame is believed a cell or two off is shifted back onto the rooms
+// already mapped, from tables of small maps drawn as text ('#' wall, '.' free, ' ' unknown).
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "host/house/RoomRegistration.hpp"
+
+namespace nxtmap::house {
+namespace {
+
+// Rows top (highest y) first; the lower-left character is cell (x0, y0).
+network::RoomMap draw(const std::vector<std::string>& rows, int x0, int y0) {
+  const int h = static_cast<int>(rows.size()), w = static_cast<int>(rows[0].size());
+  network::RoomMap m(x0, y0, w, h);
+  for (int r = 0; r < h; ++r) {
+    for (int c = 0; c < w; ++c) {
+      const char ch = rows[static_cast<size_t>(r)][static_cast<size_t>(c)];
+      const Cell cell{static_cast<int16_t>(x0 + c), static_cast<int16_t>(y0 + h - 1 - r)};
+      if (ch == '#') m.set(cell, CellState::Occupied);
+      if (ch == '.') m.set(cell, CellState::Free);
+    }
+  }
+  return m;
+}
+
+// The room already mapped: a room 8 wide with a doorway in its top wall (house frame).
+const std::vector<std::string> kKnown = {
+    "##########",
+    "#........#",
+    "#........#",
+    "#........#",
+    "#........#",
+    "###....###",
+};
+
+struct Case {
+  const char* what;
+  int beliefDx, beliefDy;  // how far off the believed frame is (house cells)
+  int quarters;            // the new room's frame turned this many quarters clockwise
+  int wantDx, wantDy;      // the shift expected back
+};
+
+class RoomRegistrationCases : public ::testing::TestWithParam<Case> {};
+
+TEST_P(RoomRegistrationCases, ShiftsTheFrameBackOntoTheKnownRooms) {
+  const Case& k = GetParam();
+  const network::RoomMap known = draw(kKnown, 0, 0);  // house cells x 0..9, y 0..5
+  // The new room saw the same walls: in the true frame its cells are the house cells themselves
+  // (turned by `quarters`). The believed frame is off by (beliefDx, beliefDy).
+  const network::RoomTransform truth = network::RoomTransform::fromParts(0, 0, k.quarters);
+  const network::RoomTransform toTruth = truth.inverse();
+  network::RoomMap fresh(-20, -20, 41, 41);
+  for (int y = known.minY(); y <= known.maxY(); ++y) {
+    for (int x = known.minX(); x <= known.maxX(); ++x) {
+      const Cell h{static_cast<int16_t>(x), static_cast<int16_t>(y)};
+      if (known.at(h) != CellState::Unknown) fresh.set(toTruth.apply(h), known.at(h));
+    }
+  }
+  const network::RoomTransform believed =
+      network::RoomTransform::fromParts(k.beliefDx, k.beliefDy, k.quarters);
+  const RoomRegistration r = registerRoom(fresh, believed, known, 2);
+  EXPECT_EQ(r.dx, k.wantDx) << k.what;
+  EXPECT_EQ(r.dy, k.wantDy) << k.what;
+  EXPECT_EQ(r.toHouse, network::RoomTransform::fromParts(k.beliefDx + k.wantDx, k.beliefDy + k.wantDy, k.quarters))
+      << k.what;
+  if (r.shifted()) {
+    EXPECT_GT(r.scoreAfter, r.scoreBefore + 11) << k.what;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Table, RoomRegistrationCases,
+                         ::testing::Values(Case{"on target", 0, 0, 0, 0, 0}, Case{"one cell east", 1, 0, 0, -1, 0},
+                                           Case{"a cell south and two west", -2, -1, 0, 2, 1},
+                                           Case{"turned a quarter, one north", 0, 1, 1, 0, -1},
+                                           Case{"turned a half, off diagonally", 1, 1, 2, -1, -1},
+                                           Case{"beyond the search: as close as it can", 3, 0, 0, -2, 0}));
+
+TEST(RoomRegistration, NoOverlapMeansNoChange) {
+  const network::RoomMap known = draw(kKnown, 0, 0);
+  const network::RoomMap fresh = draw({"#####", "#...#", "#####"}, 0, 0);
+  const network::RoomTransform far = network::RoomTransform::fromParts(100, 100, 0);
+  const RoomRegistration r = registerRoom(fresh, far, known, 2);
+  EXPECT_FALSE(r.shifted());
+  EXPECT_EQ(r.toHouse, far);
+  EXPECT_EQ(r.scoreBefore, 0);
+}
+
+}  // namespace
+}  // namespace nxtmap::house
