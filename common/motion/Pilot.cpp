@@ -39,22 +39,26 @@ Counters Pilot::counters() const {
   return c;
 }
 
-bool Pilot::knownWall(Dir d, int32_t& faceMm) const {
+bool Pilot::firstWall(Dir d, Cell& wall, int16_t& k) const {
   const MapLayers& map = explorer_.map();
-  const RangeGeometry& g = explorer_.config().geometry;
   const Cell at = explorer_.pose().cell;
-  for (int16_t k = 1; k <= g.hitCells(); ++k) {
-    const Cell c = advance(at, d, k);
-    const CellState st = map.at(c);
-    if (st == CellState::Free) continue;
-    if (st != CellState::Occupied || map.evidence(c) < config_.minWallEvidence) return false;
-    for (uint16_t i = 0; i < virtualCount_; ++i) {
-      if (virtual_[i] == c) return false;
-    }
-    faceMm = (2 * k - 1) * cellMm_ / 2 - static_cast<int32_t>(g.mountCm) * 10;
-    return true;
+  for (k = 1; k <= explorer_.config().geometry.hitCells(); ++k) {
+    wall = advance(at, d, k);
+    const CellState st = map.at(wall);
+    if (st != CellState::Free) return st == CellState::Occupied;
   }
   return false;
+}
+
+bool Pilot::knownWall(Dir d, int32_t& faceMm) const {
+  Cell c{};
+  int16_t k = 0;
+  if (!firstWall(d, c, k) || explorer_.map().evidence(c) < config_.minWallEvidence) return false;
+  for (uint16_t i = 0; i < virtualCount_; ++i) {
+    if (virtual_[i] == c) return false;
+  }
+  faceMm = (2 * k - 1) * cellMm_ / 2 - static_cast<int32_t>(explorer_.config().geometry.mountCm) * 10;
+  return true;
 }
 
 int16_t Pilot::wallLine(Dir d, int32_t rangeMm) const {
@@ -108,13 +112,14 @@ bool Pilot::sideReadWanted(Sensor& s) const {
 }
 
 bool Pilot::wallBeside(Dir d) const {
-  const MapLayers& map = explorer_.map();
-  const Cell at = explorer_.pose().cell;
-  for (int16_t k = 1; k <= explorer_.config().geometry.hitCells(); ++k) {
-    const CellState st = map.at(advance(at, d, k));
-    if (st != CellState::Free) return st == CellState::Occupied;
-  }
-  return false;
+  Cell c{};
+  int16_t k = 0;
+  return firstWall(d, c, k);
+}
+
+void Pilot::startRun() {
+  for (SideMark& m : side_) m = SideMark{};
+  runMm_ = rightMm_ = 0;
 }
 
 void Pilot::observe(Sensor s, const RangeReading& r) {
@@ -231,8 +236,7 @@ DriveAction Pilot::step(const DriveEvent& e) {
     case DriveEvent::Kind::Start:
       tracker_.reset();
       readHere_ = 0;
-      for (SideMark& m : side_) m = SideMark{};
-      runMm_ = rightMm_ = 0;
+      startRun();
       return begin(explorer_.step(Event::startAt(e.pose)));
     case DriveEvent::Kind::Range:
       observe(e.sensor, e.reading);
@@ -255,10 +259,7 @@ DriveAction Pilot::step(const DriveEvent& e) {
       }
       if (phase_ == Phase::Turn) {
         tracker_.rotated(e.measured ? e.achieved : commandMrad_, pending_.amount / 2);
-        if (pending_.amount != 0) {  // a new straight run
-          for (SideMark& m : side_) m = SideMark{};
-          runMm_ = rightMm_ = 0;
-        }
+        if (pending_.amount != 0) startRun();  // the heading changed: the side walls are others
         return begin(explorer_.step(Event::turned(pending_.amount)));
       }
       break;

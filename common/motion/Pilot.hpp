@@ -66,6 +66,8 @@ class Pilot {
   DriveAction begin(const Action& a);
   DriveAction beginMove();
   DriveAction driveToCentre();
+  // The first cell along d that is not free, within range (k cells out): true when it is occupied.
+  bool firstWall(Dir d, Cell& wall, int16_t& k) const;
   bool knownWall(Dir d, int32_t& faceMm) const;
   bool poseReadWanted(Sensor& s) const;
   void observe(Sensor s, const RangeReading& r);
@@ -73,6 +75,7 @@ class Pilot {
   int16_t wallLine(Dir d, int32_t rangeMm) const;
   bool sideReadWanted(Sensor& s) const;
   bool wallBeside(Dir d) const;  // the map's first non-free cell along d within range is a wall
+  void startRun();               // forget the side marks: a straight run starts
 
   Explorer& explorer_;
   PilotConfig config_;

@@ -116,17 +116,21 @@ void HouseMapper::mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, 
   exitsFound_ += static_cast<int>(run.exits().size());
   belief_.cell = toHouse.apply(run.pose().cell);
   belief_.heading = toHouse.apply(run.pose().heading);
-  if (std::getenv("NXTMAP_HOUSE_DEBUG")) {
-    int col, row;
-    frame_.toWorld(belief_.cell, col, row);
-    std::fprintf(stderr, "  after room: believed world %d,%d; true %.1f,%.1f\n", col, row, robot_.xCm() / 10.0, robot_.yCm() / 10.0);
-  }
+  debugBelief("after room");
 }
 
 network::RoomMap HouseMapper::knownForTravel() const {
   network::HouseNetwork all = network_;
   for (const network::RoomNode& n : seen_) all.addRoom(n);
   return all.merged();
+}
+
+void HouseMapper::debugBelief(const char* when) const {
+  if (!std::getenv("NXTMAP_HOUSE_DEBUG")) return;
+  int col = 0, row = 0;
+  frame_.toWorld(belief_.cell, col, row);
+  std::fprintf(stderr, "  %s: believed world %d,%d; true %.1f,%.1f\n", when, col, row, robot_.xCm() / 10.0,
+               robot_.yCm() / 10.0);
 }
 
 bool HouseMapper::leadsToMappedRoom(const Pending& p) {
@@ -227,11 +231,7 @@ bool HouseMapper::travelTo(Cell target, const network::RoomMap& known) {
   belief_.cell = toHouse.apply(go.pose().cell);
   belief_.heading = toHouse.apply(go.pose().heading);
   if (!go.arrived()) ++counters_.travelBlocked;
-  if (std::getenv("NXTMAP_HOUSE_DEBUG")) {
-    int col, row;
-    frame_.toWorld(belief_.cell, col, row);
-    std::fprintf(stderr, "  after travel: believed world %d,%d; true %.1f,%.1f\n", col, row, robot_.xCm() / 10.0, robot_.yCm() / 10.0);
-  }
+  debugBelief("after travel");
   return go.arrived();
 }
 

@@ -70,6 +70,8 @@ class HouseMapper {
   };
   void mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, const RoomExit* via);
   bool leadsToMappedRoom(const Pending& p);
+  // With NXTMAP_HOUSE_DEBUG set: the believed cell against the simulated robot's true position.
+  void debugBelief(const char* when) const;
   // What travel may use: the rooms' maps and all the room runs saw (beyond their exits too).
   network::RoomMap knownForTravel() const;
   // Drives to a house cell over the known rooms with the pilot (pose corrections); false when not there.

@@ -45,6 +45,7 @@ RoomRun::RoomRun(sim::SimRobot& robot, const ExplorerConfig& config, mapping::St
   pilot.correct = poseCorrection;
   pilot_ = std::make_unique<Pilot>(*explorer_, pilot);
   closeEntrance();
+  updateShut();
   closeDoors();
   last_ = pilot_->step(DriveEvent::start());
 }
@@ -56,17 +57,18 @@ bool RoomRun::drivesIntoClosed(const DriveAction& a) const {
   if (a.kind != DriveAction::Kind::Drive) return false;
   const Pose& p = explorer_->pose();
   const Cell next = advance(p.cell, a.value > 0 ? p.heading : opposite(p.heading));
-  return std::find(closed_.begin(), closed_.end(), next) != closed_.end() ||
-         std::find(guards_.begin(), guards_.end(), next) != guards_.end();
+  return std::find(shut_.begin(), shut_.end(), next) != shut_.end();
 }
 
 void RoomRun::closeDoors() {
-  for (const Cell c : closed_) (void)map_->markBlocked(c);
-  for (const Cell c : guards_) (void)map_->markBlocked(c);
+  for (const Cell c : shut_) (void)map_->markBlocked(c);
+}
+
+void RoomRun::updateShut() {
+  shut_ = closed_;
+  shut_.insert(shut_.end(), guards_.begin(), guards_.end());
   // Held shut, not seen: the pilot must not take them for walls to read its pose from.
-  virtualWalls_ = closed_;
-  virtualWalls_.insert(virtualWalls_.end(), guards_.begin(), guards_.end());
-  pilot_->setVirtualWalls(virtualWalls_.data(), static_cast<uint16_t>(virtualWalls_.size()));
+  pilot_->setVirtualWalls(shut_.data(), static_cast<uint16_t>(shut_.size()));
 }
 
 void RoomRun::closeEntrance() {
@@ -172,8 +174,7 @@ void RoomRun::evaluateCandidates() {
   sinceCheck_ = 0;
   // Close every candidate at once (several doorways may lead into the same room), then keep as
   // exits those whose far side is cut off from the start while the robot is on the start's side.
-  std::vector<Cell> closed = closed_;
-  closed.insert(closed.end(), guards_.begin(), guards_.end());
+  std::vector<Cell> closed = shut_;
   for (const Doorway& d : candidates_) {
     for (int16_t a = 0; a < d.width; ++a) {
       for (int16_t b = 0; b < d.depth; ++b) closed.push_back(d.cell(a, b));
@@ -208,6 +209,7 @@ void RoomRun::evaluateCandidates() {
     exits_.push_back(std::move(e));
   }
   candidates_ = std::move(still);
+  updateShut();
   closeDoors();
 }
 

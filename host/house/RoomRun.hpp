@@ -63,7 +63,8 @@ class RoomRun {
   int ignoredDoorways() const { return static_cast<int>(candidates_.size()); }  // never became exits
 
  private:
-  void closeDoors();
+  void closeDoors();   // marks shut_ blocked in the map (after every step)
+  void updateShut();   // shut_ from closed_ and guards_, after either changed
   // Closes the entrance's cells and guards the ends of its line (see guards_).
   void closeEntrance();
   bool drivesIntoClosed(const DriveAction& a) const;
@@ -87,7 +88,7 @@ class RoomRun {
   std::unique_ptr<Pilot> pilot_;
   DriveAction last_;
   std::vector<Cell> closed_;         // virtual door cells (entrance and exits)
-  std::vector<Cell> virtualWalls_;   // closed_ and guards_, lent to the pilot
+  std::vector<Cell> shut_;           // closed_ and guards_ (held blocked each step), lent to the pilot
   std::vector<Cell> guards_;         // the cells beside the entrance along its line (its jambs), closed too
   std::vector<Cell> entrance_;
   std::vector<RoomExit> exits_;
