@@ -23,13 +23,21 @@ int64_t isqrt(int64_t v) {
   return r;
 }
 constexpr uint8_t bitOf(Dir d) { return static_cast<uint8_t>(1u << static_cast<int>(d)); }
+// Cells out to which a wall is read for the pose: the mapping range's, or farther (PilotConfig::poseRangeCm).
+int16_t poseCellsFor(const RangeGeometry& g, int16_t poseRangeCm) {
+  if (poseRangeCm <= g.maxCm) return g.hitCells();
+  RangeGeometry far = g;
+  far.maxCm = poseRangeCm;
+  return far.hitCells();
+}
 }  // namespace
 
 Pilot::Pilot(Explorer& explorer, const PilotConfig& config)
     : explorer_(explorer),
       config_(config),
       tracker_(config.noise),
-      cellMm_(static_cast<int32_t>(explorer.config().geometry.cellCm) * 10) {}
+      cellMm_(static_cast<int32_t>(explorer.config().geometry.cellCm) * 10),
+      poseCells_(poseCellsFor(explorer.config().geometry, config.poseRangeCm)) {}
 
 Counters Pilot::counters() const {
   Counters c = explorer_.counters();
@@ -42,7 +50,7 @@ Counters Pilot::counters() const {
 bool Pilot::firstWall(Dir d, Cell& wall, int16_t& k) const {
   const MapLayers& map = explorer_.map();
   const Cell at = explorer_.pose().cell;
-  for (k = 1; k <= explorer_.config().geometry.hitCells(); ++k) {
+  for (k = 1; k <= poseCells_; ++k) {
     wall = advance(at, d, k);
     const CellState st = map.at(wall);
     if (st != CellState::Free) return st == CellState::Occupied;
@@ -127,7 +135,9 @@ void Pilot::observe(Sensor s, const RangeReading& r) {
   readHere_ |= bitOf(d);
   side_[static_cast<int>(d)].tried = true;
   side_[static_cast<int>(d)].triedMm = runMm_;
-  if (!config_.correct || r.status != RangeStatus::Good) return;
+  // A good reading, or an echo beyond the mapping range that only a known wall can explain.
+  const bool far = r.status == RangeStatus::TooFar && r.cm > 0 && r.cm <= config_.poseRangeCm;
+  if (!config_.correct || (r.status != RangeStatus::Good && !far)) return;
   if (isVertical(d) != isVertical(explorer_.pose().heading)) observeSide(d, static_cast<int32_t>(r.cm) * 10);
   int32_t faceMm = 0;
   if (!knownWall(d, faceMm)) return;
@@ -151,6 +161,18 @@ bool Pilot::poseReadWanted(Sensor& s) const {
     }
   }
   return found;
+}
+
+RangeReading Pilot::centred(Sensor s, RangeReading r) const {
+  if (!config_.correct || !config_.centreReadings || r.status != RangeStatus::Good) return r;
+  // The explorer measures from the cell's centre: add the robot's known offset along the beam.
+  const RangeGeometry& g = explorer_.config().geometry;
+  const int32_t along = tracker_.along(sensorDir(explorer_.pose().heading, s));
+  int32_t cm = r.cm + (along >= 0 ? (along + 5) / 10 : -((-along + 5) / 10));
+  if (cm <= g.minCm) cm = g.minCm + 1;
+  if (cm > g.maxCm) cm = g.maxCm;
+  r.cm = static_cast<int16_t>(cm);
+  return r;
 }
 
 DriveAction Pilot::levelling() const {
@@ -225,9 +247,18 @@ DriveAction Pilot::driveToCentre() {
   const Dir heading = explorer_.pose().heading;
   const int64_t tf = pending_.amount * cellMm_ - tracker_.along(heading);
   const int64_t tr = -tracker_.along(rotate(heading, 1));
-  const int32_t length = static_cast<int32_t>(isqrt(tf * tf + tr * tr));
+  // The target's projection on the line the robot drives along (second order in the heading
+  // error t): tf cos t + tr sin t. Steered straight at the target it is the distance to it; when
+  // the steering was limited it stops abreast of the target instead of overshooting it, and a
+  // target behind is not driven away from.
+  const int64_t t = tracker_.thetaMrad();
+  int64_t along = tf + tr * t / 1000 - tf * t * t / 2000000;
+  if (along * pending_.amount < 0) along = 0;
+  const int64_t length = isqrt(tf * tf + tr * tr);
+  if (along > length) along = length;
+  if (along < -length) along = -length;
   phase_ = Phase::Drive;
-  driveMm_ = pending_.amount > 0 ? length : -length;
+  driveMm_ = static_cast<int32_t>(along);
   return DriveAction::drive(driveMm_);
 }
 
@@ -245,7 +276,7 @@ DriveAction Pilot::step(const DriveEvent& e) {
         poseSamples_ += e.reading.samples;
         return beginMove();
       }
-      if (phase_ == Phase::ExplorerRead) return begin(explorer_.step(Event::range(e.sensor, e.reading)));
+      if (phase_ == Phase::ExplorerRead) return begin(explorer_.step(Event::range(e.sensor, centred(e.sensor, e.reading))));
       break;
     case DriveEvent::Kind::Rotated:
       if (phase_ == Phase::Level) {

@@ -21,6 +21,13 @@ struct PilotConfig {
   int32_t sideBaseMm = 500;
   int32_t sideReadEveryMm = 500;  // read a wall seen beside the run again after this much driving (0: never)
   int32_t maxSideSlopeMrad = 40;  // a larger apparent slope is another wall (a corner, a doorway)
+  // Walls the map already knows are read for the pose up to this range (cm), beyond the range the
+  // explorer maps with: an echo from there is never mapped, only matched against a known wall face
+  // with free cells before it. 0 or at most the mapping range: the mapping range only.
+  int16_t poseRangeCm = 200;
+  // The explorer's readings are handed over as if taken from the believed cell's centre (the
+  // tracker's offset along the beam added), so an off-centre robot marks its echoes in the right cells.
+  bool centreReadings = true;
 };
 
 // Pilot: between the explorer (cells, quarter turns) and the wheels (mm, mrad). It carries out
@@ -66,11 +73,12 @@ class Pilot {
   DriveAction begin(const Action& a);
   DriveAction beginMove();
   DriveAction driveToCentre();
-  // The first cell along d that is not free, within range (k cells out): true when it is occupied.
+  // The first cell along d that is not free, within the pose range (k cells out): true when it is occupied.
   bool firstWall(Dir d, Cell& wall, int16_t& k) const;
   bool knownWall(Dir d, int32_t& faceMm) const;
   bool poseReadWanted(Sensor& s) const;
   void observe(Sensor s, const RangeReading& r);
+  RangeReading centred(Sensor s, RangeReading r) const;  // as if read from the believed cell's centre
   void observeSide(Dir d, int32_t rangeMm);
   int16_t wallLine(Dir d, int32_t rangeMm) const;
   bool sideReadWanted(Sensor& s) const;
@@ -81,6 +89,7 @@ class Pilot {
   PilotConfig config_;
   PoseTracker tracker_;
   int32_t cellMm_;
+  int16_t poseCells_;  // cells out to which known walls are pose landmarks (>= the mapping range's)
   Phase phase_ = Phase::Idle;
   Action pending_;            // the explorer's action being carried out
   int32_t commandMrad_ = 0;   // rotation in progress

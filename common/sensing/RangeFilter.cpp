@@ -30,17 +30,44 @@ bool RangeFilter::done() const {
   return hi - lo <= kToleranceCm;
 }
 
+namespace {
+// The mean of the values within kToleranceCm of their median (sorts `v` in place); n > 0.
+// `near` is how many values went into it.
+int16_t meanNearMedian(uint8_t* v, uint8_t n, int16_t tolerance, uint8_t& near) {
+  for (uint8_t i = 1; i < n; ++i) {  // insertion sort: at most 10 values
+    const uint8_t x = v[i];
+    uint8_t j = i;
+    while (j > 0 && v[j - 1] > x) {
+      v[j] = v[j - 1];
+      --j;
+    }
+    v[j] = x;
+  }
+  const int16_t median = v[n / 2];
+  int16_t sum = 0;
+  near = 0;
+  for (uint8_t i = 0; i < n; ++i) {
+    const int16_t d = static_cast<int16_t>(v[i] - median);
+    if (d <= tolerance && d >= -tolerance) {
+      sum = static_cast<int16_t>(sum + v[i]);
+      ++near;
+    }
+  }
+  return static_cast<int16_t>((sum + near / 2) / near);
+}
+}  // namespace
+
 RangeReading RangeFilter::result() const {
   RangeReading r;
   r.samples = count_;
-  uint8_t accepted[kMaxSamples];
+  uint8_t accepted[kMaxSamples], far[kMaxSamples];
   uint8_t nAccepted = 0, nNoEcho = 0, nNear = 0, nFar = 0;
   for (uint8_t i = 0; i < count_; ++i) {
     switch (verdictOf(raw_[i])) {
       case Verdict::Accepted: accepted[nAccepted++] = raw_[i]; break;
       case Verdict::NoEcho: ++nNoEcho; break;
       case Verdict::TooNear: ++nNear; break;
-      case Verdict::TooFar: ++nFar; break;
+      case Verdict::TooFar: far[nFar++] = raw_[i]; break;
     }
   }
   // A majority of echoes inside the range wins; otherwise the most common rejection.
@@ -52,34 +79,22 @@ RangeReading RangeFilter::result() const {
     if (2 * (nNoEcho + nFar) > count_ && r.status == RangeStatus::Inconsistent) {
       r.status = RangeStatus::TooFar;  // no echo and too far agree: nothing within range
     }
+    // Beyond the range: the echo's distance too when a majority of the samples agree on it.
+    uint8_t n = 0;
+    if (r.status == RangeStatus::TooFar && nFar > 0) {
+      const int16_t cm = meanNearMedian(far, nFar, kToleranceCm, n);
+      if (2 * n > count_) r.cm = cm;
+    }
     return r;
   }
-  // Median by insertion sort (at most 10 values), then the mean of those near it.
-  for (uint8_t i = 1; i < nAccepted; ++i) {
-    const uint8_t v = accepted[i];
-    uint8_t j = i;
-    while (j > 0 && accepted[j - 1] > v) {
-      accepted[j] = accepted[j - 1];
-      --j;
-    }
-    accepted[j] = v;
-  }
-  const int16_t median = accepted[nAccepted / 2];
-  int16_t sum = 0;
   uint8_t n = 0;
-  for (uint8_t i = 0; i < nAccepted; ++i) {
-    const int16_t d = static_cast<int16_t>(accepted[i] - median);
-    if (d <= kToleranceCm && d >= -kToleranceCm) {
-      sum = static_cast<int16_t>(sum + accepted[i]);
-      ++n;
-    }
-  }
+  const int16_t cm = meanNearMedian(accepted, nAccepted, kToleranceCm, n);
   if (2 * n <= count_) {
     r.status = RangeStatus::Inconsistent;
     return r;
   }
   r.status = RangeStatus::Good;
-  r.cm = static_cast<int16_t>((sum + n / 2) / n);
+  r.cm = cm;
   return r;
 }
 

@@ -15,7 +15,10 @@ enum class RangeStatus : uint8_t {
 // One filtered reading: the explorer's unit of sensing ("one sensor request").
 struct RangeReading {
   RangeStatus status = RangeStatus::NoEcho;
-  int16_t cm = 0;       // averaged distance of the accepted samples (Good only)
+  // Good: averaged distance of the accepted samples. TooFar: the echo beyond the trusted range
+  // when a majority of the samples agree on it (0 when they do not): never mapped, only matched
+  // against walls already known (pose readings). 0 otherwise.
+  int16_t cm = 0;
   uint8_t samples = 0;  // raw samples the filter consumed, 1..RangeFilter::kMaxSamples
 };
 

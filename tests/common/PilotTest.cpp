@@ -153,5 +153,135 @@ TEST(Pilot, StraightWallsBesideTheRunMeasureTheHeadingError) {
   EXPECT_LT(withSides, without / 2) << "with side walls " << withSides << " mrad, without " << without << " mrad";
 }
 
+
+// How the scripted wheels err. Unseen by the encoders: each drive goes a random fraction within
+// +-slipPerMille more or less than reported, each quarter turn ends a random angle within
+// +-turnMrad off. Seen: every drive stops shortMm before what was commanded. The random errors
+// come from a fixed sequence, so every run is the same.
+struct Wheels {
+  int slipPerMille = 0;
+  int turnMrad = 0;
+  int32_t shortMm = 0;
+};
+
+// A rectangular room with its walls on cell faces (mm; the robot starts at the origin facing
+// North, +y; cells are 100 mm, centred on multiples of 100). Ideal sonars: echoes within 1 m are
+// good readings, farther ones up to 2.55 m come back as too far with their distance. Runs the
+// pilot's explorer to the end.
+struct RoomRun {
+  double meanEstimateErrorMm = 0;  // |true position - believed cell centre - tracker offset|, at the explorer's readings
+  int readings = 0;
+  int wrongCells = 0;  // cells of the finished map in the other state than the room's
+};
+RoomRun runInRoom(const PilotConfig& config, double west, double east, double south, double north,
+                  const Wheels& wheels) {
+  Rig rig(config);
+  uint32_t lcg = 12345;
+  const auto uniform = [&lcg](int amplitude) {  // -amplitude .. amplitude
+    lcg = lcg * 1664525u + 1013904223u;
+    return static_cast<int>((lcg >> 8) % static_cast<uint32_t>(2 * amplitude + 1)) - amplitude;
+  };
+  double x = 0, y = 0, h = 0;  // mm, mm, rad clockwise from North
+  const auto rangeMm = [&](double a) {
+    const double sx = std::sin(a), sy = std::cos(a);
+    double best = 1e9;
+    if (sx > 1e-9) best = std::min(best, (east - x) / sx);
+    if (sx < -1e-9) best = std::min(best, (west - x) / sx);
+    if (sy > 1e-9) best = std::min(best, (north - y) / sy);
+    if (sy < -1e-9) best = std::min(best, (south - y) / sy);
+    return best;
+  };
+  RoomRun out;
+  double sum = 0;
+  DriveAction a = rig.pilot.step(DriveEvent::start());
+  for (int i = 0; i < 400000 && !rig.pilot.finished(); ++i) {
+    DriveEvent e = DriveEvent::thought();
+    switch (a.kind) {
+      case DriveAction::Kind::Read: {
+        const Cell c = rig.explorer.pose().cell;
+        const double bx = c.x * 100.0 + rig.pilot.tracker().xMm(), by = c.y * 100.0 + rig.pilot.tracker().yMm();
+        sum += std::hypot(x - bx, y - by);
+        ++out.readings;
+        const double mm = rangeMm(h + static_cast<int>(a.sensor) * 1.5707963);
+        RangeReading r;
+        r.samples = 3;
+        r.cm = static_cast<int16_t>(std::lround(mm / 10.0));
+        r.status = mm <= 1000 ? RangeStatus::Good : (mm <= 2550 ? RangeStatus::TooFar : RangeStatus::NoEcho);
+        if (r.status == RangeStatus::NoEcho) r.cm = 0;
+        e = DriveEvent::range(a.sensor, r);
+        break;
+      }
+      case DriveAction::Kind::Rotate: {
+        const bool quarter = std::abs(a.value) > 700;
+        h += (a.value + (quarter && wheels.turnMrad > 0 ? uniform(wheels.turnMrad) : 0)) / 1000.0;
+        e = DriveEvent::rotatedBy(a.value);
+        break;
+      }
+      case DriveAction::Kind::Drive: {
+        const int32_t s = wheels.shortMm;
+        const int32_t done = a.value > s ? a.value - s : (a.value < -s ? a.value + s : 0);
+        const double scale = 1.0 + (wheels.slipPerMille > 0 ? uniform(wheels.slipPerMille) : 0) / 1000.0;
+        x += done * scale * std::sin(h);
+        y += done * scale * std::cos(h);
+        e = DriveEvent::drivenBy(done);
+        break;
+      }
+      case DriveAction::Kind::Think:
+      case DriveAction::Kind::Done:
+        break;
+    }
+    a = rig.pilot.step(e);
+  }
+  EXPECT_TRUE(rig.pilot.finished());
+  out.meanEstimateErrorMm = out.readings == 0 ? 0.0 : sum / out.readings;
+  for (int16_t cy = static_cast<int16_t>(south / 100 - 2); cy <= north / 100 + 2; ++cy) {
+    for (int16_t cx = static_cast<int16_t>(west / 100 - 2); cx <= east / 100 + 2; ++cx) {
+      const CellState st = rig.map.at(Cell{cx, cy});
+      const bool inside = cx * 100 > west && cx * 100 < east && cy * 100 > south && cy * 100 < north;
+      if ((st == CellState::Occupied && inside) || (st == CellState::Free && !inside)) ++out.wrongCells;
+    }
+  }
+  return out;
+}
+
+TEST(Pilot, FarEchoesOfKnownWallsHoldThePositionInTheMiddleOfALargeRoom) {
+  // 4.1 m square: from its middle no wall is within the 1 m the explorer maps with, but the walls
+  // it mapped on the way are within 2 m.
+  PilotConfig near;
+  near.poseRangeCm = 0;
+  const struct { int slipPerMille, turnMrad; } table[] = {{40, 10}, {40, 20}, {60, 10}, {60, 20}};
+  double sumFar = 0, sumNear = 0;
+  for (const auto& row : table) {
+    Wheels w;
+    w.slipPerMille = row.slipPerMille;
+    w.turnMrad = row.turnMrad;
+    const RoomRun withFar = runInRoom(PilotConfig{}, -2050, 2050, -2050, 2050, w);
+    const RoomRun without = runInRoom(near, -2050, 2050, -2050, 2050, w);
+    ASSERT_GT(withFar.readings, 100);
+    ASSERT_GT(without.readings, 100);
+    EXPECT_LT(withFar.meanEstimateErrorMm, without.meanEstimateErrorMm)
+        << "slip " << row.slipPerMille << " turn " << row.turnMrad;
+    EXPECT_LE(withFar.wrongCells, without.wrongCells) << "slip " << row.slipPerMille << " turn " << row.turnMrad;
+    sumFar += withFar.meanEstimateErrorMm;
+    sumNear += without.meanEstimateErrorMm;
+  }
+  EXPECT_LT(sumFar, 0.8 * sumNear) << "with far echoes " << sumFar / 4 << " mm, without " << sumNear / 4 << " mm";
+}
+
+TEST(Pilot, ReadingsAreMarkedFromTheCellCentreWhenTheRobotIsKnownToBeOffIt) {
+  // Every drive stops 60 mm short and the encoders say so: at each reading the robot stands 60 mm
+  // behind the centre of its cell (the next move makes up for it). Marked from where the robot
+  // stands, echoes ahead would fall a cell too far.
+  PilotConfig off;
+  off.centreReadings = false;
+  Wheels wheels;
+  wheels.shortMm = 60;
+  const RoomRun centred = runInRoom(PilotConfig{}, -750, 850, -650, 950, wheels);
+  const RoomRun asRead = runInRoom(off, -750, 850, -650, 950, wheels);
+  ASSERT_GT(centred.readings, 20);
+  EXPECT_EQ(centred.wrongCells, 0);
+  EXPECT_GT(asRead.wrongCells, 0);
+}
+
 }  // namespace
 }  // namespace nxtmap

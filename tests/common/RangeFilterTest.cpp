@@ -11,7 +11,7 @@ struct FilterCase {
   const char* name;
   std::vector<uint8_t> raw;
   RangeStatus status;
-  int16_t cm;       // checked for Good only
+  int16_t cm;       // Good: the distance; TooFar: the echo beyond the range, 0 when the samples disagree
   uint8_t samples;  // raw samples consumed
 };
 
@@ -28,6 +28,11 @@ TEST(RangeFilter, SensorRulesFromTable) {
       {"above the maximum is too far", {101, 150, 120}, RangeStatus::TooFar, 0, 3},
       {"no echo and too far mix into too far", {255, 150, 255, 130, 255, 255, 140, 200, 180, 255},
        RangeStatus::TooFar, 0, 10},
+      {"agreeing echoes beyond the range keep their distance", {180, 181, 180}, RangeStatus::TooFar, 180, 3},
+      {"a majority of agreeing far echoes among dropouts", {180, 255, 181, 179, 180, 180, 255, 182, 180, 181},
+       RangeStatus::TooFar, 180, 10},
+      {"far echoes that agree only in a minority give no distance", {180, 255, 181, 255, 180, 255, 255, 182, 150, 255},
+       RangeStatus::TooFar, 0, 10},
       {"one dropout among echoes", {50, 255, 50, 51, 50, 49, 50, 50, 51, 50}, RangeStatus::Good, 50, 10},
       {"scattered echoes are inconsistent", {20, 80, 50, 35, 95, 10, 65, 255, 3, 150},
        RangeStatus::Inconsistent, 0, 10},
@@ -38,7 +43,7 @@ TEST(RangeFilter, SensorRulesFromTable) {
     const RangeReading r = RangeFilter::filter(g, c.raw.data(), static_cast<uint8_t>(c.raw.size()));
     EXPECT_EQ(r.status, c.status) << c.name;
     EXPECT_EQ(r.samples, c.samples) << c.name;
-    if (c.status == RangeStatus::Good) {
+    if (c.status == RangeStatus::Good || c.status == RangeStatus::TooFar) {
       EXPECT_EQ(r.cm, c.cm) << c.name;
     }
   }
