@@ -24,7 +24,7 @@ struct PilotConfig {
   // Walls the map already knows are read for the pose up to this range (cm), beyond the range the
   // explorer maps with: an echo from there is never mapped, only matched against a known wall face
   // with free cells before it. 0 or at most the mapping range: the mapping range only.
-  int16_t poseRangeCm = 200;
+  int16_t poseRangeCm = 250;
   // The explorer's readings are handed over as if taken from the believed cell's centre (the
   // tracker's offset along the beam added), so an off-centre robot marks its echoes in the right cells.
   bool centreReadings = true;

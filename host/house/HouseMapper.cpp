@@ -4,13 +4,13 @@
 #include "host/house/GoToExplorer.hpp"
 #include "host/house/RoomRegistration.hpp"
 #include "host/house/RoomSplit.hpp"
+#include "host/house/TravelDistances.hpp"
 #include "host/mapping/SimDrive.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cmath>
-#include <deque>
 #include <limits>
 #include <memory>
 
@@ -22,27 +22,6 @@ ExplorerConfig explorerConfigFor(const sim::World& world, const HouseConfig& c) 
   return e;
 }
 
-// Breadth-first distances (4-connected, over free cells of `known`) from `from`; -1 = unreached.
-std::vector<int> distances(const network::RoomMap& known, Cell from) {
-  std::vector<int> dist(static_cast<size_t>(known.width()) * static_cast<size_t>(known.height()), -1);
-  const auto idx = [&](Cell c) {
-    return static_cast<size_t>((c.y - known.minY()) * known.width() + (c.x - known.minX()));
-  };
-  if (!known.isFree(from)) return dist;
-  std::deque<Cell> queue{from};
-  dist[idx(from)] = 0;
-  while (!queue.empty()) {
-    const Cell c = queue.front();
-    queue.pop_front();
-    for (int d = 0; d < 4; ++d) {
-      const Cell n = advance(c, static_cast<Dir>(d));
-      if (!known.isFree(n) || dist[idx(n)] >= 0) continue;
-      dist[idx(n)] = dist[idx(c)] + 1;
-      queue.push_back(n);
-    }
-  }
-  return dist;
-}
 }  // namespace
 
 HouseMapper::HouseMapper(const sim::World& world, const HouseConfig& config)
@@ -244,7 +223,7 @@ int HouseMapper::run() {
                    pending_.end());
     if (pending_.empty()) break;
     const network::RoomMap known = knownForTravel();
-    const std::vector<int> dist = distances(known, belief_.cell);
+    const std::vector<int> dist = travelDistances(known, belief_.cell);
     size_t best = pending_.size();
     int bestDist = std::numeric_limits<int>::max();
     for (size_t i = 0; i < pending_.size(); ++i) {
