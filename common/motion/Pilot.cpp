@@ -89,7 +89,11 @@ void Pilot::observeSide(Dir d, int32_t rangeMm) {
     const bool right = d == rotate(explorer_.pose().heading, 1);
     const int32_t moved = right ? m.rangeMm - rangeMm : rangeMm - m.rangeMm;
     const int32_t error = static_cast<int32_t>(static_cast<int64_t>(moved - (rightMm_ - m.rightMm)) * 1000 / base);
-    if (abs32(error) <= config_.maxSideSlopeMrad) {
+    // A heading known this badly may show a larger slope than a straight wall's (3 sigma).
+    const int32_t slopeLimit = config_.maxSideSlopeMrad > 3 * static_cast<int32_t>(isqrt(tracker_.thetaVariance()))
+                                   ? config_.maxSideSlopeMrad
+                                   : 3 * static_cast<int32_t>(isqrt(tracker_.thetaVariance()));
+    if (abs32(error) <= slopeLimit) {
       const int64_t r = tracker_.readingVariance();
       const int64_t var = 2 * r * 1000000 / (static_cast<int64_t>(base) * base);
       (void)tracker_.measureHeading(tracker_.thetaMrad() + error, static_cast<int32_t>(var > 1 ? var : 1));
@@ -173,6 +177,12 @@ RangeReading Pilot::centred(Sensor s, RangeReading r) const {
   if (cm > g.maxCm) cm = g.maxCm;
   r.cm = static_cast<int16_t>(cm);
   return r;
+}
+
+int64_t Pilot::handOverHeadingVariance() const {
+  // The levelling rotation is a small one: its error has the floor of a quarter of a quarter turn's.
+  const int64_t small = config_.noise.turnMradPerQuarter / 4;
+  return tracker_.thetaVariance() + small * small;
 }
 
 DriveAction Pilot::levelling() const {
@@ -265,7 +275,7 @@ DriveAction Pilot::driveToCentre() {
 DriveAction Pilot::step(const DriveEvent& e) {
   switch (e.kind) {
     case DriveEvent::Kind::Start:
-      tracker_.reset();
+      tracker_.reset(config_.startHeadingVarianceMrad2);
       readHere_ = 0;
       startRun();
       return begin(explorer_.step(Event::startAt(e.pose)));

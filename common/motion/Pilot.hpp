@@ -28,6 +28,9 @@ struct PilotConfig {
   // The explorer's readings are handed over as if taken from the believed cell's centre (the
   // tracker's offset along the beam added), so an off-centre robot marks its echoes in the right cells.
   bool centreReadings = true;
+  // How uncertain the heading is at the start (mrad^2): 0 for a robot put down on the axis; a robot
+  // handed over by another pilot starts with that pilot's handOverHeadingVariance().
+  int64_t startHeadingVarianceMrad2 = 0;
 };
 
 // Pilot: between the explorer (cells, quarter turns) and the wheels (mm, mrad). It carries out
@@ -60,6 +63,8 @@ class Pilot {
   // The rotation that takes the known heading error out (Done when there is none worth a turn):
   // for handing the robot over to another pilot, whose tracker starts exactly on the axis.
   DriveAction levelling() const;
+  // The heading's variance (mrad^2) once levelling() is carried out: what the next pilot starts with.
+  int64_t handOverHeadingVariance() const;
 
   // The explorer's counters plus the pilot's own pose readings and correction rotations.
   Counters counters() const;

@@ -9,11 +9,12 @@ constexpr int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 constexpr int64_t divRound(int64_t n, int64_t d) { return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d); }
 }  // namespace
 
-void PoseTracker::reset() {
+void PoseTracker::reset(int64_t thetaVarianceMrad2) {
   x_ = y_ = t_ = 0;
   residualUrad_ = 0;
   for (auto& row : p_)
     for (auto& v : row) v = 0;
+  p_[2][2] = thetaVarianceMrad2 > 0 ? thetaVarianceMrad2 : 0;
 }
 
 void PoseTracker::rotated(int32_t mrad, int quarters) {

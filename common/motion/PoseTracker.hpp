@@ -25,7 +25,9 @@ class PoseTracker {
  public:
   explicit PoseTracker(const PoseNoise& noise = PoseNoise{}) : noise_(noise) {}
 
-  void reset();  // exactly at the centre, exactly on the axis (the start of a run)
+  // Exactly at the centre and, to `thetaVarianceMrad2` (mrad^2; 0: exactly), on the axis (the start
+  // of a run; a robot handed over by another pilot keeps that pilot's heading uncertainty).
+  void reset(int64_t thetaVarianceMrad2 = 0);
 
   // The robot turned in place by `mrad` (clockwise +) while the believed heading changed by
   // `quarters` quarter turns.

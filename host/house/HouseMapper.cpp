@@ -37,9 +37,10 @@ void HouseMapper::mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, 
   const network::RoomTransform toRoom = toHouse.inverse();
   std::vector<Cell> entrance;
   for (const Cell c : entranceHouse) entrance.push_back(toRoom.apply(c));
-  RoomRun run(robot_, explorerConfig_, config_.strategy, config_.doorways, entrance, config_.poseCorrection,
+  RoomRun run(robot_, explorerConfig_, config_.strategy, config_.doorways, entrance, pilotConfig(),
               config_.roomLimits);
   run.runToEnd();
+  headingVariance_ = run.handOverHeadingVariance();
   if (std::getenv("NXTMAP_HOUSE_DEBUG")) {
     std::fprintf(stderr, "room %zu: end %d, pose %d,%d, exits %zu, ignored %d\n", network_.rooms().size(),
                  static_cast<int>(run.end()), run.pose().cell.x, run.pose().cell.y, run.exits().size(),
@@ -108,8 +109,9 @@ void HouseMapper::debugBelief(const char* when) const {
   if (!std::getenv("NXTMAP_HOUSE_DEBUG")) return;
   int col = 0, row = 0;
   frame_.toWorld(belief_.cell, col, row);
-  std::fprintf(stderr, "  %s: believed world %d,%d; true %.1f,%.1f\n", when, col, row, robot_.xCm() / 10.0,
-               robot_.yCm() / 10.0);
+  std::fprintf(stderr, "  %s: believed world %d,%d heading %d; true %.1f,%.1f heading %.1f deg\n", when, col, row,
+               static_cast<int>(frame_.toWorld(belief_.heading)) * 90, robot_.xCm() / 10.0, robot_.yCm() / 10.0,
+               robot_.headingDeg());
 }
 
 bool HouseMapper::leadsToMappedRoom(const Pending& p) {
@@ -155,12 +157,21 @@ bool HouseMapper::leadsToMappedRoom(const Pending& p) {
   return false;
 }
 
+PilotConfig HouseMapper::pilotConfig() const {
+  PilotConfig pc;
+  pc.correct = config_.poseCorrection;
+  pc.startHeadingVarianceMrad2 = config_.poseCorrection ? headingVariance_ : 0;
+  return pc;
+}
+
 bool HouseMapper::step(Dir d) {
   if (belief_.heading != d) {
     int eighths = 4;
     if (rotate(belief_.heading, 1) == d) eighths = 2;
     if (rotate(belief_.heading, -1) == d) eighths = -2;
     robot_.turn(eighths);
+    const int64_t sigma = static_cast<int64_t>(PilotConfig{}.noise.turnMradPerQuarter) * std::abs(eighths) / 2;
+    headingVariance_ += sigma * sigma;  // a dead-reckoned turn: nothing measures its error
     counters_.travel.turnEighths += static_cast<uint32_t>(std::abs(eighths));
     belief_.heading = d;
   }
@@ -193,12 +204,11 @@ bool HouseMapper::travelTo(Cell target, const network::RoomMap& known) {
     }
   }
   GoToExplorer go(map, planner, explorerConfig_, toLocal.apply(target));
-  PilotConfig pc;
-  pc.correct = config_.poseCorrection;
-  Pilot pilot(go, pc);
+  Pilot pilot(go, pilotConfig());
   DriveAction a = pilot.step(DriveEvent::start());
   while (!pilot.finished()) a = pilot.step(mapping::carryOutOnRobot(robot_, a, explorerConfig_.geometry));
   const DriveAction level = pilot.levelling();  // on the axis for what follows (dead-reckoned steps, a new room)
+  headingVariance_ = pilot.handOverHeadingVariance();
   if (level.kind == DriveAction::Kind::Rotate) (void)mapping::carryOutOnRobot(robot_, level, explorerConfig_.geometry);
   const Counters c = pilot.counters();
   counters_.travel.sensorRequests += c.sensorRequests;
@@ -216,6 +226,7 @@ bool HouseMapper::travelTo(Cell target, const network::RoomMap& known) {
 
 int HouseMapper::run() {
   belief_ = Pose{};
+  headingVariance_ = 0;
   mapRoom({}, -1, nullptr);
   while (!pending_.empty() && static_cast<int>(network_.rooms().size()) < config_.maxRooms) {
     // Exits into rooms already mapped become gateways without a run.

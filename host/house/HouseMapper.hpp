@@ -77,6 +77,7 @@ class HouseMapper {
   // Drives to a house cell over the known rooms with the pilot (pose corrections); false when not there.
   bool travelTo(Cell target, const network::RoomMap& known);
   bool step(Dir d);
+  PilotConfig pilotConfig() const;  // for the next pilot: starts with the heading uncertainty handed over
 
   const sim::World& world_;
   HouseConfig config_;
@@ -87,6 +88,7 @@ class HouseMapper {
   network::HouseNetwork network_;
   HouseCounters counters_;
   Pose belief_;  // in the house frame
+  int64_t headingVariance_ = 0;  // mrad^2: how well the robot's heading is known between pilots
   std::vector<Pending> pending_;
   int exitsFound_ = 0;
   int exitsUnreached_ = 0;

@@ -24,7 +24,7 @@ bool overlaps(const Doorway& a, const Doorway& b) {
 }  // namespace
 
 RoomRun::RoomRun(sim::SimRobot& robot, const ExplorerConfig& config, mapping::Strategy strategy,
-                 const DoorwayLimits& doorways, std::vector<Cell> entrance, bool poseCorrection,
+                 const DoorwayLimits& doorways, std::vector<Cell> entrance, const PilotConfig& pilot,
                  const RoomLimits& roomLimits)
     : robot_(robot),
       config_(config),
@@ -41,8 +41,6 @@ RoomRun::RoomRun(sim::SimRobot& robot, const ExplorerConfig& config, mapping::St
     frontier_ = std::make_unique<FrontierExplorer>(*map_, *planner_, config_);
     explorer_ = frontier_.get();
   }
-  PilotConfig pilot;
-  pilot.correct = poseCorrection;
   pilot_ = std::make_unique<Pilot>(*explorer_, pilot);
   closeEntrance();
   updateShut();
@@ -221,7 +219,7 @@ void RoomRun::runToEnd() {
     closeDoors();
     if (!pilot_->finished()) lookForDoorways();
   }
-  // Hand the robot over on its axis: the next pilot's tracker starts without a heading error.
+  // Hand the robot over on its axis as far as it is known (see handOverHeadingVariance).
   const DriveAction level = pilot_->levelling();
   if (level.kind == DriveAction::Kind::Rotate) (void)mapping::carryOutOnRobot(robot_, level, config_.geometry);
   finish();

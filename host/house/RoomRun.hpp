@@ -42,8 +42,10 @@ class RoomRun {
   using Storage = ExplorerStorage<128, 128, 8192>;
 
   // `entrance`: the doorway's cells behind the start, in the new room's frame (empty for the first room).
+  // `pilot`: how the run's pilot keeps the robot on the grid (PilotConfig::correct false: dead
+  // reckoning), including the heading uncertainty the robot is handed over with.
   RoomRun(sim::SimRobot& robot, const ExplorerConfig& config, mapping::Strategy strategy,
-          const DoorwayLimits& doorways, std::vector<Cell> entrance, bool poseCorrection = true,
+          const DoorwayLimits& doorways, std::vector<Cell> entrance, const PilotConfig& pilot = PilotConfig{},
           const RoomLimits& roomLimits = RoomLimits{});
   ~RoomRun();
 
@@ -52,6 +54,8 @@ class RoomRun {
 
   const Explorer& explorer() const { return *explorer_; }
   Counters counters() const { return pilot_->counters(); }
+  // After runToEnd: the heading's variance the robot is handed over with (mrad^2).
+  int64_t handOverHeadingVariance() const { return pilot_->handOverHeadingVariance(); }
   ExplorerEnd end() const { return explorer_->end(); }
   const Pose& pose() const { return explorer_->pose(); }  // believed, in the room's frame
   const std::vector<RoomExit>& exits() const { return exits_; }

@@ -79,10 +79,10 @@ TEST(Pilot, LevelsAKnownHeadingErrorBeforeEachExplorerReading) {
 // quarter turn ends 25 mrad past its target (the encoders do not see it: a wheelbase a little off);
 // smaller rotations and drives are exact. Returns the mean |true - estimated heading| (mrad) over
 // the explorer's readings.
-double meanHeadingErrorInACorridor(const PilotConfig& config, int& readings) {
+double meanHeadingErrorInACorridor(const PilotConfig& config, int& readings, double startErrorRad = 0) {
   Rig rig(config);
-  double x = 0, y = 0;  // mm
-  double h = 0;         // rad, clockwise from North
+  double x = 0, y = 0;         // mm
+  double h = startErrorRad;    // rad, clockwise from North
   // Walls on cell faces (cells are 100 mm, centred on multiples of 100).
   const double west = -250, east = 450, south = -250, north = 4950;
   const auto rangeMm = [&](double a) {
@@ -242,6 +242,24 @@ RoomRun runInRoom(const PilotConfig& config, double west, double east, double so
     }
   }
   return out;
+}
+
+TEST(Pilot, AHeadingHandedOverWithItsUncertaintyIsCorrectedByTheSideWalls) {
+  // The robot is handed over 70 mrad off the axis (the last pilot's levelling missed by that much).
+  // Told how uncertain the heading is, the pilot takes the side walls' slope of 70 mrad as a
+  // heading error; told it is exact, it takes that slope for another wall and keeps the error.
+  PilotConfig handed;
+  handed.minWallEvidence = 127;  // only the side pairs can tell (as in the corridor test above)
+  handed.startHeadingVarianceMrad2 = 60 * 60;
+  PilotConfig exact = handed;
+  exact.startHeadingVarianceMrad2 = 0;
+  int nHanded = 0, nExact = 0;
+  const double withUncertainty = meanHeadingErrorInACorridor(handed, nHanded, 0.070);
+  const double without = meanHeadingErrorInACorridor(exact, nExact, 0.070);
+  ASSERT_GT(nHanded, 20);
+  ASSERT_GT(nExact, 20);
+  EXPECT_LT(withUncertainty, without / 2) << "handed over with its uncertainty " << withUncertainty
+                                          << " mrad, as exact " << without << " mrad";
 }
 
 TEST(Pilot, FarEchoesOfKnownWallsHoldThePositionInTheMiddleOfALargeRoom) {

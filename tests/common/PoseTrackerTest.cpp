@@ -133,6 +133,21 @@ TEST(PoseTracker, AHeadingFarOutsideItsUncertaintyIsRefused) {
   EXPECT_EQ(t.rejected(), 1u);
 }
 
+TEST(PoseTracker, AHandedOverHeadingUncertaintyLetsAHeadingMeasurementCorrectIt) {
+  // Handed over by another pilot with sigma 20 mrad: a measured 30 mrad error is believed (mostly).
+  PoseTracker handed;
+  handed.reset(400);
+  EXPECT_EQ(handed.thetaVariance(), 400);
+  EXPECT_EQ(handed.xMm(), 0);
+  EXPECT_TRUE(handed.measureHeading(30, 100));
+  EXPECT_EQ(handed.thetaMrad(), 24);  // 30 * 400 / (400 + 100)
+  // Put down on the axis: the heading is known exactly and the same measurement changes nothing.
+  PoseTracker placed;
+  placed.reset();
+  (void)placed.measureHeading(30, 100);
+  EXPECT_EQ(placed.thetaMrad(), 0);
+}
+
 TEST(PoseTracker, QuarterTurnsAreCountedToTheMicroradian) {
   // 1571 mrad is 0.204 mrad more than a quarter turn: a thousand of them leave 204 mrad.
   PoseTracker t;
