@@ -2,6 +2,7 @@
 
 #include "common/motion/Pilot.hpp"
 #include "host/house/GoToExplorer.hpp"
+#include "host/house/OpeningSearch.hpp"
 #include "host/house/RoomRegistration.hpp"
 #include "host/house/RoomSplit.hpp"
 #include "host/house/TravelDistances.hpp"
@@ -228,6 +229,7 @@ int HouseMapper::run() {
   belief_ = Pose{};
   headingVariance_ = 0;
   mapRoom({}, -1, nullptr);
+  for (;;) {
   while (!pending_.empty() && static_cast<int>(network_.rooms().size()) < config_.maxRooms) {
     // Exits into rooms already mapped become gateways without a run.
     pending_.erase(std::remove_if(pending_.begin(), pending_.end(), [&](const Pending& p) { return leadsToMappedRoom(p); }),
@@ -273,6 +275,25 @@ int HouseMapper::run() {
     const int from = p.room;
     const RoomExit via = p.exit;
     mapRoom(entranceHouse, from, &via);
+  }
+    // No exit left: space the exits missed (a doorway never recognised) is explored through the
+    // widest opening onto it, as if it were an exit.
+    if (static_cast<int>(network_.rooms().size()) >= config_.maxRooms ||
+        static_cast<int>(openingsTried_.size()) >= config_.maxOpenings)
+      break;
+    const std::optional<Opening> o = findOpening(network_, knownForTravel(), openingsTried_);
+    if (!o) break;
+    const network::RoomNode& owner = network_.rooms()[static_cast<size_t>(o->room)];
+    openingsTried_.push_back(owner.toHouse.apply(o->inside));
+    if (std::getenv("NXTMAP_HOUSE_DEBUG"))
+      std::fprintf(stderr, "opening of room %d, %zu cells wide, at %d,%d\n", o->room, o->cells.size(),
+                   openingsTried_.back().x, openingsTried_.back().y);
+    RoomExit e;
+    e.cells = o->cells;
+    e.inside = o->inside;
+    e.outward = o->outward;
+    e.depth = 1;
+    pending_.push_back(Pending{o->room, e});
   }
   return static_cast<int>(network_.rooms().size());
 }

@@ -34,6 +34,7 @@ struct HouseConfig {
   int maxRooms = 40;                        // safety stop
   bool poseCorrection = true;               // the pilot keeps the robot on the grid (off: dead reckoning)
   int registerCells = 2;                    // a new room's frame may shift this far to fit the rooms mapped (0: off)
+  int maxOpenings = 6;                      // openings onto unknown space the exits missed, explored at the end (0: none)
 };
 
 struct HouseCounters {
@@ -56,6 +57,7 @@ class HouseMapper {
   const HouseCounters& counters() const { return counters_; }
   int exitsFound() const { return exitsFound_; }
   int exitsUnreached() const { return exitsUnreached_; }   // exits the robot could not get through
+  int openingsTried() const { return static_cast<int>(openingsTried_.size()); }  // see HouseConfig::maxOpenings
   const sim::SimRobot& robot() const { return robot_; }
   const sim::World& world() const { return world_; }
   const HouseConfig& config() const { return config_; }
@@ -90,6 +92,7 @@ class HouseMapper {
   Pose belief_;  // in the house frame
   int64_t headingVariance_ = 0;  // mrad^2: how well the robot's heading is known between pilots
   std::vector<Pending> pending_;
+  std::vector<Cell> openingsTried_;  // inside cells (house frame) of the openings taken as exits
   int exitsFound_ = 0;
   int exitsUnreached_ = 0;
 };

@@ -1,0 +1,90 @@
+// Openings onto unknown space that no exit covers, from small rooms drawn as text ('#' wall,
+// '.' free, ' ' unknown; rows top = highest y first, the lower-left character is cell (0, 0)).
+#include <gtest/gtest.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "host/house/OpeningSearch.hpp"
+
+namespace nxtmap::house {
+namespace {
+
+network::RoomMap draw(const std::vector<std::string>& rows) {
+  const int h = static_cast<int>(rows.size()), w = static_cast<int>(rows[0].size());
+  network::RoomMap m(0, 0, w, h);
+  for (int r = 0; r < h; ++r) {
+    for (int c = 0; c < w; ++c) {
+      const char ch = rows[static_cast<size_t>(r)][static_cast<size_t>(c)];
+      const Cell cell{static_cast<int16_t>(c), static_cast<int16_t>(h - 1 - r)};
+      if (ch == '#') m.set(cell, CellState::Occupied);
+      if (ch == '.') m.set(cell, CellState::Free);
+    }
+  }
+  return m;
+}
+
+network::HouseNetwork houseOf(const network::RoomMap& room, const network::RoomTransform& toHouse = {}) {
+  network::HouseNetwork n;
+  n.addRoom(network::RoomNode{"room0", room, toHouse, {}});
+  return n;
+}
+
+// A room 8 wide whose top wall is missing over 5 cells; nothing is known above it.
+const std::vector<std::string> kOpenTop = {
+    "#.....###",
+    "#.......#",
+    "#.......#",
+    "#########",
+};
+
+TEST(OpeningSearch, AWideRunOfFreeCellsFacingUnknownSpace) {
+  const network::HouseNetwork n = houseOf(draw(kOpenTop));
+  const std::optional<Opening> o = findOpening(n, n.merged(), {});
+  ASSERT_TRUE(o.has_value());
+  EXPECT_EQ(o->room, 0);
+  EXPECT_EQ(o->outward, Dir::North);
+  ASSERT_EQ(o->cells.size(), 5u);
+  EXPECT_EQ(o->cells.front(), (Cell{1, 4}));  // the first unknown cells beyond, to cross
+  EXPECT_EQ(o->cells.back(), (Cell{5, 4}));
+  EXPECT_EQ(o->inside, (Cell{3, 3}));  // the room's cell in front of the middle
+}
+
+TEST(OpeningSearch, InTheRoomsFrameWhenTheRoomIsTurned) {
+  // The same room turned a quarter clockwise in the house: the opening faces house East.
+  const network::RoomTransform toHouse = network::RoomTransform::fromParts(10, 20, 1);
+  const network::HouseNetwork n = houseOf(draw(kOpenTop), toHouse);
+  const std::optional<Opening> o = findOpening(n, n.merged(), {});
+  ASSERT_TRUE(o.has_value());
+  EXPECT_EQ(o->outward, Dir::North);  // in the room's frame
+  EXPECT_EQ(toHouse.apply(o->outward), Dir::East);
+  EXPECT_EQ(o->inside, (Cell{3, 3}));
+}
+
+TEST(OpeningSearch, NotWhereNoRoomIsLeft) {
+  struct Case {
+    const char* what;
+    std::vector<std::string> rows;
+  };
+  const std::vector<Case> cases = {
+      {"a closed room", {"#########", "#.......#", "#.......#", "#########"}},
+      {"a gap narrower than a doorway (a sensing hole)", {"#..######", "#.......#", "#.......#", "#########"}},
+      {"known cells a few cells beyond (a shallow alcove, not a room)",
+       {"#########", "##     ##", "#.......#", "#.......#", "#########"}},
+  };
+  for (const Case& c : cases) {
+    const network::HouseNetwork n = houseOf(draw(c.rows));
+    EXPECT_FALSE(findOpening(n, n.merged(), {}).has_value()) << c.what;
+  }
+}
+
+TEST(OpeningSearch, AnOpeningTriedBeforeIsNotOfferedAgain) {
+  const network::HouseNetwork n = houseOf(draw(kOpenTop));
+  EXPECT_FALSE(findOpening(n, n.merged(), {Cell{3, 3}}).has_value());
+  EXPECT_FALSE(findOpening(n, n.merged(), {Cell{4, 2}}).has_value());  // within 2 cells
+  EXPECT_TRUE(findOpening(n, n.merged(), {Cell{9, 9}}).has_value());
+}
+
+}  // namespace
+}  // namespace nxtmap::house
