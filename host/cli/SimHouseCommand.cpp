@@ -87,7 +87,7 @@ int runSimHouse(const SimHouseOptions& o) {
         << " reachable plan rooms mapped to >= 90 %)";
   }
   out << "\ngateways         " << s.gateways << " (exits found " << mapper.exitsFound() << ", not passed "
-      << mapper.exitsUnreached() << ")\n"
+      << mapper.exitsUnreached() << ", openings onto unmapped space explored " << mapper.openingsTried() << ")\n"
       << "agreement        " << num(s.agreementPct()) << " % of " << s.observable
       << " observable cells (unknown " << s.unknown << ", wrong " << s.wrong << "; wrong elsewhere "
       << s.wrongElsewhere << ")\n"
