@@ -90,9 +90,8 @@ void Pilot::observeSide(Dir d, int32_t rangeMm) {
     const int32_t moved = right ? m.rangeMm - rangeMm : rangeMm - m.rangeMm;
     const int32_t error = static_cast<int32_t>(static_cast<int64_t>(moved - (rightMm_ - m.rightMm)) * 1000 / base);
     // A heading known this badly may show a larger slope than a straight wall's (3 sigma).
-    const int32_t slopeLimit = config_.maxSideSlopeMrad > 3 * static_cast<int32_t>(isqrt(tracker_.thetaVariance()))
-                                   ? config_.maxSideSlopeMrad
-                                   : 3 * static_cast<int32_t>(isqrt(tracker_.thetaVariance()));
+    const int32_t uncertain = 3 * static_cast<int32_t>(isqrt(tracker_.thetaVariance()));
+    const int32_t slopeLimit = uncertain > config_.maxSideSlopeMrad ? uncertain : config_.maxSideSlopeMrad;
     if (abs32(error) <= slopeLimit) {
       const int64_t r = tracker_.readingVariance();
       const int64_t var = 2 * r * 1000000 / (static_cast<int64_t>(base) * base);

@@ -171,7 +171,7 @@ bool HouseMapper::step(Dir d) {
     if (rotate(belief_.heading, 1) == d) eighths = 2;
     if (rotate(belief_.heading, -1) == d) eighths = -2;
     robot_.turn(eighths);
-    const int64_t sigma = static_cast<int64_t>(PilotConfig{}.noise.turnMradPerQuarter) * std::abs(eighths) / 2;
+    const int64_t sigma = static_cast<int64_t>(pilotConfig().noise.turnMradPerQuarter) * std::abs(eighths) / 2;
     headingVariance_ += sigma * sigma;  // a dead-reckoned turn: nothing measures its error
     counters_.travel.turnEighths += static_cast<uint32_t>(std::abs(eighths));
     belief_.heading = d;
@@ -229,7 +229,13 @@ int HouseMapper::run() {
   belief_ = Pose{};
   headingVariance_ = 0;
   mapRoom({}, -1, nullptr);
-  for (;;) {
+  do {
+    mapPendingExits();
+  } while (queueOpening());
+  return static_cast<int>(network_.rooms().size());
+}
+
+void HouseMapper::mapPendingExits() {
   while (!pending_.empty() && static_cast<int>(network_.rooms().size()) < config_.maxRooms) {
     // Exits into rooms already mapped become gateways without a run.
     pending_.erase(std::remove_if(pending_.begin(), pending_.end(), [&](const Pending& p) { return leadsToMappedRoom(p); }),
@@ -276,26 +282,23 @@ int HouseMapper::run() {
     const RoomExit via = p.exit;
     mapRoom(entranceHouse, from, &via);
   }
-    // No exit left: space the exits missed (a doorway never recognised) is explored through the
-    // widest opening onto it, as if it were an exit.
-    if (static_cast<int>(network_.rooms().size()) >= config_.maxRooms ||
-        static_cast<int>(openingsTried_.size()) >= config_.maxOpenings)
-      break;
-    const std::optional<Opening> o = findOpening(network_, knownForTravel(), openingsTried_);
-    if (!o) break;
-    const network::RoomNode& owner = network_.rooms()[static_cast<size_t>(o->room)];
-    openingsTried_.push_back(owner.toHouse.apply(o->inside));
-    if (std::getenv("NXTMAP_HOUSE_DEBUG"))
-      std::fprintf(stderr, "opening of room %d, %zu cells wide, at %d,%d\n", o->room, o->cells.size(),
-                   openingsTried_.back().x, openingsTried_.back().y);
-    RoomExit e;
-    e.cells = o->cells;
-    e.inside = o->inside;
-    e.outward = o->outward;
-    e.depth = 1;
-    pending_.push_back(Pending{o->room, e});
-  }
-  return static_cast<int>(network_.rooms().size());
+}
+
+bool HouseMapper::queueOpening() {
+  // No exit left: space the exits missed (a doorway never recognised) is explored through the
+  // widest opening onto it, as if it were an exit.
+  if (static_cast<int>(network_.rooms().size()) >= config_.maxRooms ||
+      static_cast<int>(openingsTried_.size()) >= config_.maxOpenings)
+    return false;
+  const std::optional<Opening> o = findOpening(network_, knownForTravel(), openingsTried_);
+  if (!o) return false;
+  const network::RoomNode& owner = network_.rooms()[static_cast<size_t>(o->room)];
+  openingsTried_.push_back(owner.toHouse.apply(o->inside));
+  if (std::getenv("NXTMAP_HOUSE_DEBUG"))
+    std::fprintf(stderr, "opening of room %d, %zu cells wide, at %d,%d\n", o->room, o->cells.size(),
+                 openingsTried_.back().x, openingsTried_.back().y);
+  pending_.push_back(Pending{o->room, RoomExit{o->cells, o->inside, o->outward, 1}});
+  return true;
 }
 
 }  // namespace nxtmap::house

@@ -72,6 +72,8 @@ class HouseMapper {
   };
   void mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, const RoomExit* via);
   bool leadsToMappedRoom(const Pending& p);
+  void mapPendingExits();  // maps rooms through the pending exits, nearest first, until none is reachable
+  bool queueOpening();     // an opening onto unmapped space as the next exit (false: none, or the limit)
   // With NXTMAP_HOUSE_DEBUG set: the believed cell against the simulated robot's true position.
   void debugBelief(const char* when) const;
   // What travel may use: the rooms' maps and all the room runs saw (beyond their exits too).

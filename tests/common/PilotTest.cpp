@@ -75,6 +75,18 @@ TEST(Pilot, LevelsAKnownHeadingErrorBeforeEachExplorerReading) {
   EXPECT_GT(readsChecked, 20);
 }
 
+// Distance (mm) from (x, y) along heading a (rad, clockwise from North) to the walls of a box whose
+// faces lie at x = west, east and y = south, north (mm).
+double rangeToWalls(double west, double east, double south, double north, double x, double y, double a) {
+  const double sx = std::sin(a), sy = std::cos(a);
+  double best = 1e9;
+  if (sx > 1e-9) best = std::min(best, (east - x) / sx);
+  if (sx < -1e-9) best = std::min(best, (west - x) / sx);
+  if (sy > 1e-9) best = std::min(best, (north - y) / sy);
+  if (sy < -1e-9) best = std::min(best, (south - y) / sy);
+  return best;
+}
+
 // A corridor 0.7 m wide and 5.2 m long (x from -250 to 450 mm, y from -250 to 4950 mm), robot at the origin facing North (+y), clockwise headings. Every
 // quarter turn ends 25 mrad past its target (the encoders do not see it: a wheelbase a little off);
 // smaller rotations and drives are exact. Returns the mean |true - estimated heading| (mrad) over
@@ -85,15 +97,7 @@ double meanHeadingErrorInACorridor(const PilotConfig& config, int& readings, dou
   double h = startErrorRad;    // rad, clockwise from North
   // Walls on cell faces (cells are 100 mm, centred on multiples of 100).
   const double west = -250, east = 450, south = -250, north = 4950;
-  const auto rangeMm = [&](double a) {
-    const double sx = std::sin(a), sy = std::cos(a);
-    double best = 1e9;
-    if (sx > 1e-9) best = std::min(best, (east - x) / sx);
-    if (sx < -1e-9) best = std::min(best, (west - x) / sx);
-    if (sy > 1e-9) best = std::min(best, (north - y) / sy);
-    if (sy < -1e-9) best = std::min(best, (south - y) / sy);
-    return best;
-  };
+  const auto rangeMm = [&](double a) { return rangeToWalls(west, east, south, north, x, y, a); };
   double sum = 0;
   readings = 0;
   DriveAction a = rig.pilot.step(DriveEvent::start());
@@ -182,15 +186,7 @@ RoomRun runInRoom(const PilotConfig& config, double west, double east, double so
     return static_cast<int>((lcg >> 8) % static_cast<uint32_t>(2 * amplitude + 1)) - amplitude;
   };
   double x = 0, y = 0, h = 0;  // mm, mm, rad clockwise from North
-  const auto rangeMm = [&](double a) {
-    const double sx = std::sin(a), sy = std::cos(a);
-    double best = 1e9;
-    if (sx > 1e-9) best = std::min(best, (east - x) / sx);
-    if (sx < -1e-9) best = std::min(best, (west - x) / sx);
-    if (sy > 1e-9) best = std::min(best, (north - y) / sy);
-    if (sy < -1e-9) best = std::min(best, (south - y) / sy);
-    return best;
-  };
+  const auto rangeMm = [&](double a) { return rangeToWalls(west, east, south, north, x, y, a); };
   RoomRun out;
   double sum = 0;
   DriveAction a = rig.pilot.step(DriveEvent::start());
