@@ -241,7 +241,8 @@ DriveAction Pilot::beginMove() {
   const int32_t tf = pending_.amount * cellMm_ - tracker_.along(heading);
   const int32_t tr = -tracker_.along(rotate(heading, 1));
   if (tf * pending_.amount <= 0) return driveToCentre();  // the target is behind: nothing to aim at
-  const int32_t want = clamp32(static_cast<int32_t>(static_cast<int64_t>(tr) * 1000 / tf), config_.maxSteerMrad);
+  const bool offLine = abs32(tr) > config_.steerAboveMm;
+  const int32_t want = offLine ? clamp32(static_cast<int32_t>(static_cast<int64_t>(tr) * 1000 / tf), config_.maxSteerMrad) : 0;
   const int32_t turn = want - tracker_.thetaMrad();
   if (abs32(turn) >= config_.minRotateMrad) {
     phase_ = Phase::Steer;

@@ -15,6 +15,9 @@ struct PilotConfig {
   int32_t readAboveMm = 8;      // read a known wall when the offset along its axis is this uncertain (1 sigma)
   int32_t maxSteerMrad = 150;   // steering towards the next cell's centre is limited to this
   int32_t minRotateMrad = 4;    // smaller corrections are not worth a rotation
+  // Steer towards the next cell's centre line only when this far off it (mm): every small rotation
+  // costs heading (a turn's error has a floor), while a run on a slightly offset line costs nothing.
+  int32_t steerAboveMm = 12;
   int8_t minWallEvidence = 1;   // a wall cell is "known" for pose readings from this evidence up
   // Heading from a straight wall beside the run: two readings of it at least this far apart along
   // the run (mm) measure the heading error; walls are taken as axis-parallel (rectilinear rooms).
@@ -36,7 +39,7 @@ struct PilotConfig {
 // Pilot: between the explorer (cells, quarter turns) and the wheels (mm, mrad). It carries out
 // the explorer's actions while keeping the robot on the cell grid: a PoseTracker follows the
 // robot's real offset and heading error; every echo from a wall the map already knows (cell faces)
-// corrects them; each move steers towards the centre of the next cell, each turn takes the
+// corrects them; a move that starts off the centre line steers towards the next cell's centre, each turn takes the
 // heading error out, and so does a rotation before each of the explorer's readings (a reading
 // taken at the steering angle would be marked along the axis, in the wrong cells far out). When the offset grows uncertain it reads a known wall itself (counted as a
 // sensor request, like every other reading). Never blocks; the explorer is owned by the caller.

@@ -5,6 +5,7 @@
 #include "host/house/OpeningSearch.hpp"
 #include "host/house/RoomRegistration.hpp"
 #include "host/house/RoomSplit.hpp"
+#include "host/house/StandingScan.hpp"
 #include "host/house/TravelDistances.hpp"
 #include "host/mapping/SimDrive.hpp"
 
@@ -267,12 +268,12 @@ void HouseMapper::mapPendingExits() {
     const network::RoomNode& owner = network_.rooms()[static_cast<size_t>(p.room)];
     const Cell in = owner.toHouse.apply(p.exit.inside);
     const Dir out = owner.toHouse.apply(p.exit.outward);
-    bool through = travelTo(in, known);
-    const bool reachedInside = through;
-    for (int k = 0; through && k <= p.exit.depth; ++k) through = step(out);
+    bool through = passExit(in, out, p.exit.depth, known);
+    // Blocked by a wall the map does not have there: the robot is lost by a cell or more.
+    if (!through && relocalise(known)) through = passExit(in, out, p.exit.depth, known);
     if (!through) {
       if (std::getenv("NXTMAP_HOUSE_DEBUG"))
-        std::fprintf(stderr, "exit not passed: reached inside %d, at %d,%d\n", reachedInside, belief_.cell.x, belief_.cell.y);
+        std::fprintf(stderr, "exit not passed: at %d,%d\n", belief_.cell.x, belief_.cell.y);
       ++exitsUnreached_;
       continue;
     }
@@ -282,6 +283,41 @@ void HouseMapper::mapPendingExits() {
     const RoomExit via = p.exit;
     mapRoom(entranceHouse, from, &via);
   }
+}
+
+bool HouseMapper::passExit(Cell inside, Dir outward, int depth, const network::RoomMap& known) {
+  bool through = travelTo(inside, known);
+  for (int k = 0; through && k <= depth; ++k) through = step(outward);
+  return through;
+}
+
+bool HouseMapper::relocalise(const network::RoomMap& known) {
+  if (config_.relocaliseCells <= 0) return false;
+  const RangeGeometry& g = explorerConfig_.geometry;
+  const int reachCm = std::max<int>(g.maxCm, pilotConfig().poseRangeCm);
+  std::vector<StandingReading> readings;
+  for (int i = 0; i < kSensorCount; ++i) {
+    const Sensor s = static_cast<Sensor>(i);
+    const DriveEvent e = mapping::carryOutOnRobot(robot_, DriveAction::read(s), g);
+    ++counters_.travel.sensorRequests;
+    counters_.travel.rawSamples += e.reading.samples;
+    StandingReading r;
+    r.dir = sensorDir(belief_.heading, s);
+    const RangeReading& rr = e.reading;
+    if (rr.status == RangeStatus::Inconsistent) continue;  // says nothing
+    r.echo = rr.status == RangeStatus::Good || rr.status == RangeStatus::TooNear ||
+             (rr.status == RangeStatus::TooFar && rr.cm > 0 && rr.cm <= reachCm);
+    r.cm = rr.status == RangeStatus::TooNear ? g.minCm : rr.cm;
+    readings.push_back(r);
+  }
+  const Dir blocked = belief_.heading;
+  const Cell shift = bestStandingShift(known, belief_.cell, readings, g, reachCm, &blocked, config_.relocaliseCells);
+  if (shift.x == 0 && shift.y == 0) return false;
+  belief_.cell = Cell{static_cast<int16_t>(belief_.cell.x + shift.x), static_cast<int16_t>(belief_.cell.y + shift.y)};
+  ++relocalisations_;
+  if (std::getenv("NXTMAP_HOUSE_DEBUG")) std::fprintf(stderr, "relocalised by %d,%d\n", shift.x, shift.y);
+  debugBelief("relocalised");
+  return true;
 }
 
 bool HouseMapper::queueOpening() {

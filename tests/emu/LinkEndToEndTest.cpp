@@ -128,7 +128,11 @@ Outcome runLink(bool lossy) {
       phase = Phase::Settle;
       settleUntil = ms + 5000;  // let the last map deltas and counters arrive
     }
-    return phase == Phase::Settle && ms >= settleUntil && pc.commandsDone();
+    // Counters are unreliable and periodic (every other second): on the lossy link several in a row
+    // may be lost, so wait (up to 60 s) for ones sent after the path ran, rather than judge stale ones.
+    const bool countersAfterPath = pc.brickCounters() && pc.brickCounters()->link.commandsRun >= 2;
+    return phase == Phase::Settle && ms >= settleUntil && pc.commandsDone() &&
+           (countersAfterPath || ms >= settleUntil + 55000);
   };
   EmulatedRun emulated(*load.image, *world.world, o);
   const EmulatedRunReport r = emulated.run();
