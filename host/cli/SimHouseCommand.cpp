@@ -91,7 +91,8 @@ int runSimHouse(const SimHouseOptions& o) {
       << "agreement        " << num(s.agreementPct()) << " % of " << s.observable
       << " observable cells (unknown " << s.unknown << ", wrong " << s.wrong << "; wrong elsewhere "
       << s.wrongElsewhere << ")\n"
-      << "time units       " << num(c.timeUnits()) << " (between rooms: " << c.travel.cellsMoved << " cells)\n"
+      << "time units       " << num(c.timeUnits()) << " (between rooms: " << c.travel.cellsMoved << " cells; "
+      << "relocalised " << mapper.relocalisations() << " times)\n"
       << "sensor requests  " << c.sensorRequests() << "\n"
       << "raw samples      " << c.explore.rawSamples + c.travel.rawSamples << "\n";
   std::cout << out.str() << std::flush;

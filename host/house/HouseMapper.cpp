@@ -237,6 +237,7 @@ int HouseMapper::run() {
 }
 
 void HouseMapper::mapPendingExits() {
+  bool relocalisedHere = false;  // since the robot last moved
   while (!pending_.empty() && static_cast<int>(network_.rooms().size()) < config_.maxRooms) {
     // Exits into rooms already mapped become gateways without a run.
     pending_.erase(std::remove_if(pending_.begin(), pending_.end(), [&](const Pending& p) { return leadsToMappedRoom(p); }),
@@ -257,6 +258,11 @@ void HouseMapper::mapPendingExits() {
         best = i;
       }
     }
+    // Nothing reachable from the believed cell: the robot may be lost in a pocket of the map.
+    if (best == pending_.size() && !relocalisedHere && relocalise(known, nullptr)) {
+      relocalisedHere = true;
+      continue;
+    }
     if (best == pending_.size()) {  // nothing left that can be reached
       if (std::getenv("NXTMAP_HOUSE_DEBUG")) std::fprintf(stderr, "no reachable exit among %zu\n", pending_.size());
       exitsUnreached_ += static_cast<int>(pending_.size());
@@ -270,7 +276,9 @@ void HouseMapper::mapPendingExits() {
     const Dir out = owner.toHouse.apply(p.exit.outward);
     bool through = passExit(in, out, p.exit.depth, known);
     // Blocked by a wall the map does not have there: the robot is lost by a cell or more.
-    if (!through && relocalise(known)) through = passExit(in, out, p.exit.depth, known);
+    const Dir facing = belief_.heading;
+    if (!through && relocalise(known, &facing)) through = passExit(in, out, p.exit.depth, known);
+    relocalisedHere = false;
     if (!through) {
       if (std::getenv("NXTMAP_HOUSE_DEBUG"))
         std::fprintf(stderr, "exit not passed: at %d,%d\n", belief_.cell.x, belief_.cell.y);
@@ -282,6 +290,7 @@ void HouseMapper::mapPendingExits() {
     const int from = p.room;
     const RoomExit via = p.exit;
     mapRoom(entranceHouse, from, &via);
+    relocalisedHere = false;
   }
 }
 
@@ -291,7 +300,7 @@ bool HouseMapper::passExit(Cell inside, Dir outward, int depth, const network::R
   return through;
 }
 
-bool HouseMapper::relocalise(const network::RoomMap& known) {
+bool HouseMapper::relocalise(const network::RoomMap& known, const Dir* blocked) {
   if (config_.relocaliseCells <= 0) return false;
   const RangeGeometry& g = explorerConfig_.geometry;
   const int reachCm = std::max<int>(g.maxCm, pilotConfig().poseRangeCm);
@@ -310,8 +319,7 @@ bool HouseMapper::relocalise(const network::RoomMap& known) {
     r.cm = rr.status == RangeStatus::TooNear ? g.minCm : rr.cm;
     readings.push_back(r);
   }
-  const Dir blocked = belief_.heading;
-  const Cell shift = bestStandingShift(known, belief_.cell, readings, g, reachCm, &blocked, config_.relocaliseCells);
+  const Cell shift = bestStandingShift(known, belief_.cell, readings, g, reachCm, blocked, config_.relocaliseCells);
   if (shift.x == 0 && shift.y == 0) return false;
   belief_.cell = Cell{static_cast<int16_t>(belief_.cell.x + shift.x), static_cast<int16_t>(belief_.cell.y + shift.y)};
   ++relocalisations_;

@@ -35,9 +35,9 @@ struct HouseConfig {
   bool poseCorrection = true;               // the pilot keeps the robot on the grid (off: dead reckoning)
   int registerCells = 2;                    // a new room's frame may shift this far to fit the rooms mapped (0: off)
   int maxOpenings = 6;                      // openings onto unknown space the exits missed, explored at the end (0: none)
-  // A robot that drives into a wall the map does not have on the way to an exit reads all four sides
-  // and moves its belief by the whole cells (up to this many each way) that fit the map best, then
-  // tries the exit once more (0: off).
+  // A robot that drives into a wall the map does not have on the way to an exit, or finds no exit
+  // reachable from where it believes it stands, reads all four sides and moves its belief by the
+  // whole cells (up to this many each way) that fit the map best, then tries once more (0: off).
   int relocaliseCells = 2;
 };
 
@@ -61,7 +61,7 @@ class HouseMapper {
   const HouseCounters& counters() const { return counters_; }
   int exitsFound() const { return exitsFound_; }
   int exitsUnreached() const { return exitsUnreached_; }   // exits the robot could not get through
-  int relocalisations() const { return relocalisations_; }  // beliefs moved after a blocked travel (see HouseConfig)
+  int relocalisations() const { return relocalisations_; }  // beliefs moved by a standing scan (see HouseConfig)
   int openingsTried() const { return static_cast<int>(openingsTried_.size()); }  // see HouseConfig::maxOpenings
   const sim::SimRobot& robot() const { return robot_; }
   const sim::World& world() const { return world_; }
@@ -88,9 +88,10 @@ class HouseMapper {
   bool step(Dir d);
   // Drives to the exit's inside cell and through it; false when blocked on the way.
   bool passExit(Cell inside, Dir outward, int depth, const network::RoomMap& known);
-  // After a blocked move facing belief_.heading: reads the four sides and moves belief_.cell to the
-  // whole-cell shift that explains them best (StandingScan). True when the belief moved.
-  bool relocalise(const network::RoomMap& known);
+  // Reads the four sides and moves belief_.cell to the whole-cell shift that explains them best
+  // (StandingScan); `blocked`: the direction a move just failed in (nullptr: none). True when the
+  // belief moved.
+  bool relocalise(const network::RoomMap& known, const Dir* blocked);
   PilotConfig pilotConfig() const;  // for the next pilot: starts with the heading uncertainty handed over
 
   const sim::World& world_;
