@@ -69,6 +69,18 @@ bool Pilot::knownWall(Dir d, int32_t& faceMm) const {
   return true;
 }
 
+bool Pilot::straightFace(Dir d) const {
+  Cell c{};
+  int16_t k = 0;
+  if (!firstWall(d, c, k)) return false;
+  const MapLayers& map = explorer_.map();
+  for (int side = -1; side <= 1; side += 2) {
+    const Cell beside = advance(c, rotate(d, side));
+    if (map.at(beside) != CellState::Occupied || map.at(advance(beside, opposite(d))) != CellState::Free) return false;
+  }
+  return true;
+}
+
 int16_t Pilot::wallLine(Dir d, int32_t rangeMm) const {
   // The echo's cell along d: its face lies (k - 1/2) cells from the believed cell's centre.
   const RangeGeometry& g = explorer_.config().geometry;
@@ -144,7 +156,7 @@ void Pilot::observe(Sensor s, const RangeReading& r) {
   if (isVertical(d) != isVertical(explorer_.pose().heading)) observeSide(d, static_cast<int32_t>(r.cm) * 10);
   int32_t faceMm = 0;
   if (!knownWall(d, faceMm)) return;
-  (void)tracker_.measure(d, faceMm - static_cast<int32_t>(r.cm) * 10);
+  (void)tracker_.measure(d, faceMm - static_cast<int32_t>(r.cm) * 10, 0, straightFace(d));
 }
 
 bool Pilot::poseReadWanted(Sensor& s) const {

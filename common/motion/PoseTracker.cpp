@@ -69,15 +69,19 @@ void PoseTracker::rebase(Dir d, int cells, int32_t cellMm) {
   y_ -= static_cast<int64_t>(dy(d)) * cells * cellMm;
 }
 
-bool PoseTracker::measure(Dir d, int32_t offsetMm, int32_t extraVarianceMm2) {
+bool PoseTracker::measure(Dir d, int32_t offsetMm, int32_t extraVarianceMm2, bool straightFace) {
   const int k = isVertical(d) ? 1 : 0;
   const int64_t s = isVertical(d) ? dy(d) : dx(d);  // +1 or -1
   const int64_t predicted = s * (k == 0 ? x_ : y_);
   const int64_t innovation = offsetMm - predicted;
   const int64_t r = static_cast<int64_t>(noise_.readingMm) * noise_.readingMm + extraVarianceMm2;
   const int64_t spread = p_[k][k] + r;  // innovation variance, mm^2
-  // Gate: within 3 sigma of the prediction and within the absolute gate.
-  if (innovation * innovation > 9 * spread || abs64(innovation) > noise_.gateMm) {
+  // Gate: within 3 sigma of the prediction and within the absolute gate; beyond that gate, a straight
+  // wall face within 2 sigma and the wide gate.
+  const int64_t size = abs64(innovation);
+  const bool inGate = size <= noise_.gateMm ||
+                      (straightFace && size <= noise_.wideGateMm && innovation * innovation <= 4 * spread);
+  if (innovation * innovation > 9 * spread || !inGate) {
     ++rejected_;
     return false;
   }

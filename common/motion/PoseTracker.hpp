@@ -13,6 +13,9 @@ struct PoseNoise {
   int32_t driveMradPerCell = 3;     // heading error picked up per cell driven
   int32_t readingMm = 8;            // a filtered reading of a known wall face
   int32_t gateMm = 40;              // readings further than this from the prediction are not trusted
+  // ... unless the landmark is a straight wall face and the filter itself is that unsure: up to this
+  // far (mm) and within 2 sigma of the prediction (a robot that drifted unseen across open space).
+  int32_t wideGateMm = 120;
 };
 
 // PoseTracker: a small Kalman filter, in integers, of where the robot really is relative to the
@@ -37,8 +40,9 @@ class PoseTracker {
   // The explorer now believes it is `cells` further along `d`: move the reference centre.
   void rebase(Dir d, int cells, int32_t cellMm);
   // A measurement of the offset along `d` (mm, + = towards d), with extra variance (mm^2) on top
-  // of the reading's own (the landmark's uncertainty). Returns false when gated out.
-  bool measure(Dir d, int32_t offsetMm, int32_t extraVarianceMm2 = 0);
+  // of the reading's own (the landmark's uncertainty). `straightFace`: the landmark is a straight
+  // wall across the beam, trusted up to PoseNoise::wideGateMm. Returns false when gated out.
+  bool measure(Dir d, int32_t offsetMm, int32_t extraVarianceMm2 = 0, bool straightFace = false);
   // A direct measurement of theta (mrad) with its variance (mrad^2), e.g. from a straight wall
   // read twice along a run. Returns false when gated out (3 sigma).
   bool measureHeading(int32_t thetaMrad, int32_t varianceMrad2);

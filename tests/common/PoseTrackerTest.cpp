@@ -2,6 +2,8 @@
 // heading error, from tables of motions and measurements.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "common/motion/PoseTracker.hpp"
 
 namespace nxtmap {
@@ -97,6 +99,37 @@ TEST(PoseTracker, GateRefusesReadingsThatCannotBeTheKnownWall) {
   EXPECT_EQ(t.rejected(), 2u);
   EXPECT_TRUE(t.measure(Dir::North, 5));
   EXPECT_EQ(t.accepted(), 1u);
+}
+
+TEST(PoseTracker, AStraightWallFaceCorrectsADriftTheGateWouldRefuseWhenTheFilterIsThatUnsure) {
+  // After a quarter turn and `cells` cells driven East with nothing read, the North wall is read
+  // `offset` mm off the prediction: the 40 mm gate refuses it, unless the wall is a straight face and
+  // the offset lies within 2 sigma of the filter's own uncertainty and the 120 mm wide gate.
+  struct Case {
+    const char* what;
+    int cells;
+    int32_t offset;
+    bool straight;
+    bool accepted;
+  };
+  const Case cases[] = {
+      {"3 m unseen, a straight face 80 mm off", 30, 80, true, true},
+      {"3 m unseen, a straight face 80 mm short", 30, -80, true, true},
+      {"3 m unseen, a wall that is not a straight face", 30, 80, false, false},
+      {"3 m unseen, beyond the wide gate", 30, 130, true, false},
+      {"30 cm driven: the filter is sure, 60 mm is another obstacle", 3, 60, true, false},
+      {"30 cm driven, within the ordinary gate", 3, 10, false, true},
+  };
+  for (const Case& c : cases) {
+    PoseTracker t;
+    t.rotated(1571, 1);
+    for (int i = 0; i < c.cells; ++i) t.drove(100, Dir::East);
+    EXPECT_EQ(t.measure(Dir::North, c.offset, 0, c.straight), c.accepted)
+        << c.what << " (sigma " << std::sqrt(static_cast<double>(t.varianceAlong(Dir::North))) << " mm)";
+    if (c.accepted) {
+      EXPECT_GT(t.yMm() * c.offset, 0) << c.what;
+    }
+  }
 }
 
 TEST(PoseTracker, RepeatedReadingsConverge) {
