@@ -173,6 +173,18 @@ struct Wheels {
   uint32_t seed = 12345;  // of the fixed sequence
 };
 
+// Wheels and sonars that err everywhere (small rotations by up to 4 mrad, echoes by up to 17 mm), with
+// the given slip and quarter-turn error; `run` picks the random sequence.
+Wheels noisyWheels(int slipPerMille, int turnMrad, uint32_t run) {
+  Wheels w;
+  w.slipPerMille = slipPerMille;
+  w.turnMrad = turnMrad;
+  w.smallTurnMrad = 4;
+  w.rangeMm = 17;
+  w.seed = run * 7919;
+  return w;
+}
+
 // A rectangular room with its walls on cell faces (mm; the robot starts at the origin facing
 // North, +y; cells are 100 mm, centred on multiples of 100). Ideal sonars: echoes within 1 m are
 // good readings, farther ones up to 2.55 m come back as too far with their distance. Runs the
@@ -310,12 +322,7 @@ TEST(Pilot, SmallOffsetsFromTheCentreLineAreNotSteeredOut) {
     int rotations[2] = {0, 0}, wrong[2] = {0, 0};
     double positionMm[2] = {0, 0};
     for (uint32_t run = 1; run <= 10; ++run) {
-      Wheels w;
-      w.slipPerMille = row.slipPerMille;
-      w.turnMrad = row.turnMrad;
-      w.smallTurnMrad = 4;
-      w.rangeMm = 17;
-      w.seed = run * 7919;
+      const Wheels w = noisyWheels(row.slipPerMille, row.turnMrad, run);
       for (int k = 0; k < 2; ++k) {
         const RoomRun r = runInRoom(k == 0 ? PilotConfig{} : everyCell, -2050, 2050, -1550, 1550, w);
         ASSERT_GT(r.readings, 100);
@@ -343,12 +350,7 @@ TEST(Pilot, AStraightWallFacePullsBackADriftAcrossOpenSpace) {
   for (const auto& row : table) {
     double wide = 0, ordinary = 0;
     for (uint32_t run = 1; run <= 20; ++run) {
-      Wheels w;
-      w.slipPerMille = row.slipPerMille;
-      w.turnMrad = row.turnMrad;
-      w.smallTurnMrad = 4;
-      w.rangeMm = 17;
-      w.seed = run * 7919;
+      const Wheels w = noisyWheels(row.slipPerMille, row.turnMrad, run);
       wide += runInRoom(PilotConfig{}, -3050, 3050, -3050, 3050, w).meanEstimateErrorMm / 20;
       ordinary += runInRoom(narrow, -3050, 3050, -3050, 3050, w).meanEstimateErrorMm / 20;
     }
