@@ -92,7 +92,7 @@ int runSimHouse(const SimHouseOptions& o) {
       << " observable cells (unknown " << s.unknown << ", wrong " << s.wrong << "; wrong elsewhere "
       << s.wrongElsewhere << ")\n"
       << "time units       " << num(c.timeUnits()) << " (between rooms: " << c.travel.cellsMoved << " cells; "
-      << "relocalised " << mapper.relocalisations() << " times)\n"
+      << "relocalisations " << mapper.relocalisations() << ")\n"
       << "sensor requests  " << c.sensorRequests() << "\n"
       << "raw samples      " << c.explore.rawSamples + c.travel.rawSamples << "\n";
   std::cout << out.str() << std::flush;
