@@ -58,8 +58,7 @@ bool Pilot::firstWall(Dir d, Cell& wall, int16_t& k) const {
   return false;
 }
 
-bool Pilot::knownWall(Dir d, int32_t& faceMm) const {
-  Cell c{};
+bool Pilot::knownWall(Dir d, int32_t& faceMm, Cell& c) const {
   int16_t k = 0;
   if (!firstWall(d, c, k) || explorer_.map().evidence(c) < config_.minWallEvidence) return false;
   for (uint16_t i = 0; i < virtualCount_; ++i) {
@@ -69,10 +68,7 @@ bool Pilot::knownWall(Dir d, int32_t& faceMm) const {
   return true;
 }
 
-bool Pilot::straightFace(Dir d) const {
-  Cell c{};
-  int16_t k = 0;
-  if (!firstWall(d, c, k)) return false;
+bool Pilot::straightFace(Cell c, Dir d) const {
   const MapLayers& map = explorer_.map();
   for (int side = -1; side <= 1; side += 2) {
     const Cell beside = advance(c, rotate(d, side));
@@ -155,8 +151,9 @@ void Pilot::observe(Sensor s, const RangeReading& r) {
   if (!config_.correct || (r.status != RangeStatus::Good && !far)) return;
   if (isVertical(d) != isVertical(explorer_.pose().heading)) observeSide(d, static_cast<int32_t>(r.cm) * 10);
   int32_t faceMm = 0;
-  if (!knownWall(d, faceMm)) return;
-  (void)tracker_.measure(d, faceMm - static_cast<int32_t>(r.cm) * 10, 0, straightFace(d));
+  Cell wall{};
+  if (!knownWall(d, faceMm, wall)) return;
+  (void)tracker_.measure(d, faceMm - static_cast<int32_t>(r.cm) * 10, 0, straightFace(wall, d));
 }
 
 bool Pilot::poseReadWanted(Sensor& s) const {
@@ -169,7 +166,8 @@ bool Pilot::poseReadWanted(Sensor& s) const {
     if (readHere_ & bitOf(d)) continue;
     const int64_t v = tracker_.varianceAlong(d);
     int32_t faceMm = 0;
-    if (v > worst && knownWall(d, faceMm)) {
+    Cell wall{};
+    if (v > worst && knownWall(d, faceMm, wall)) {
       worst = v;
       s = cand;
       found = true;

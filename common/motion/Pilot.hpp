@@ -83,10 +83,11 @@ class Pilot {
   DriveAction driveToCentre();
   // The first cell along d that is not free, within the pose range (k cells out): true when it is occupied.
   bool firstWall(Dir d, Cell& wall, int16_t& k) const;
-  bool knownWall(Dir d, int32_t& faceMm) const;
-  // The known wall along d (see knownWall) is part of a straight face across the beam: the cells on
-  // either side of it are walls too, with free cells before them.
-  bool straightFace(Dir d) const;
+  // The first wall along d is a landmark: its face (mm from the believed centre) and its cell.
+  bool knownWall(Dir d, int32_t& faceMm, Cell& wall) const;
+  // The wall cell, seen along d, is part of a straight face across the beam: the cells on either
+  // side of it are walls too, with free cells before them.
+  bool straightFace(Cell wall, Dir d) const;
   bool poseReadWanted(Sensor& s) const;
   void observe(Sensor s, const RangeReading& r);
   RangeReading centred(Sensor s, RangeReading r) const;  // as if read from the believed cell's centre

@@ -6,24 +6,13 @@
 #include <string>
 #include <vector>
 
+#include "DrawnMap.hpp"
 #include "host/house/OpeningSearch.hpp"
 
 namespace nxtmap::house {
 namespace {
 
-network::RoomMap draw(const std::vector<std::string>& rows) {
-  const int h = static_cast<int>(rows.size()), w = static_cast<int>(rows[0].size());
-  network::RoomMap m(0, 0, w, h);
-  for (int r = 0; r < h; ++r) {
-    for (int c = 0; c < w; ++c) {
-      const char ch = rows[static_cast<size_t>(r)][static_cast<size_t>(c)];
-      const Cell cell{static_cast<int16_t>(c), static_cast<int16_t>(h - 1 - r)};
-      if (ch == '#') m.set(cell, CellState::Occupied);
-      if (ch == '.') m.set(cell, CellState::Free);
-    }
-  }
-  return m;
-}
+using test::drawMap;
 
 network::HouseNetwork houseOf(const network::RoomMap& room, const network::RoomTransform& toHouse = {}) {
   network::HouseNetwork n;
@@ -40,7 +29,7 @@ const std::vector<std::string> kOpenTop = {
 };
 
 TEST(OpeningSearch, AWideRunOfFreeCellsFacingUnknownSpace) {
-  const network::HouseNetwork n = houseOf(draw(kOpenTop));
+  const network::HouseNetwork n = houseOf(drawMap(kOpenTop));
   const std::optional<Opening> o = findOpening(n, n.merged(), {});
   ASSERT_TRUE(o.has_value());
   EXPECT_EQ(o->room, 0);
@@ -54,7 +43,7 @@ TEST(OpeningSearch, AWideRunOfFreeCellsFacingUnknownSpace) {
 TEST(OpeningSearch, InTheRoomsFrameWhenTheRoomIsTurned) {
   // The same room turned a quarter clockwise in the house: the opening faces house East.
   const network::RoomTransform toHouse = network::RoomTransform::fromParts(10, 20, 1);
-  const network::HouseNetwork n = houseOf(draw(kOpenTop), toHouse);
+  const network::HouseNetwork n = houseOf(drawMap(kOpenTop), toHouse);
   const std::optional<Opening> o = findOpening(n, n.merged(), {});
   ASSERT_TRUE(o.has_value());
   EXPECT_EQ(o->outward, Dir::North);  // in the room's frame
@@ -74,13 +63,13 @@ TEST(OpeningSearch, NotWhereNoRoomIsLeft) {
        {"#########", "##     ##", "#.......#", "#.......#", "#########"}},
   };
   for (const Case& c : cases) {
-    const network::HouseNetwork n = houseOf(draw(c.rows));
+    const network::HouseNetwork n = houseOf(drawMap(c.rows));
     EXPECT_FALSE(findOpening(n, n.merged(), {}).has_value()) << c.what;
   }
 }
 
 TEST(OpeningSearch, AnOpeningTriedBeforeIsNotOfferedAgain) {
-  const network::HouseNetwork n = houseOf(draw(kOpenTop));
+  const network::HouseNetwork n = houseOf(drawMap(kOpenTop));
   EXPECT_FALSE(findOpening(n, n.merged(), {Cell{3, 3}}).has_value());
   EXPECT_FALSE(findOpening(n, n.merged(), {Cell{4, 2}}).has_value());  // within 2 cells
   EXPECT_TRUE(findOpening(n, n.merged(), {Cell{9, 9}}).has_value());

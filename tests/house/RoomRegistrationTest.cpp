@@ -5,25 +5,13 @@
 #include <string>
 #include <vector>
 
+#include "DrawnMap.hpp"
 #include "host/house/RoomRegistration.hpp"
 
 namespace nxtmap::house {
 namespace {
 
-// Rows top (highest y) first; the lower-left character is cell (x0, y0).
-network::RoomMap draw(const std::vector<std::string>& rows, int x0, int y0) {
-  const int h = static_cast<int>(rows.size()), w = static_cast<int>(rows[0].size());
-  network::RoomMap m(x0, y0, w, h);
-  for (int r = 0; r < h; ++r) {
-    for (int c = 0; c < w; ++c) {
-      const char ch = rows[static_cast<size_t>(r)][static_cast<size_t>(c)];
-      const Cell cell{static_cast<int16_t>(x0 + c), static_cast<int16_t>(y0 + h - 1 - r)};
-      if (ch == '#') m.set(cell, CellState::Occupied);
-      if (ch == '.') m.set(cell, CellState::Free);
-    }
-  }
-  return m;
-}
+using test::drawMap;
 
 // The room already mapped: a room 8 wide with a doorway in its top wall (house frame).
 const std::vector<std::string> kKnown = {
@@ -46,7 +34,7 @@ class RoomRegistrationCases : public ::testing::TestWithParam<Case> {};
 
 TEST_P(RoomRegistrationCases, ShiftsTheFrameBackOntoTheKnownRooms) {
   const Case& k = GetParam();
-  const network::RoomMap known = draw(kKnown, 0, 0);  // house cells x 0..9, y 0..5
+  const network::RoomMap known = drawMap(kKnown, 0, 0);  // house cells x 0..9, y 0..5
   // The new room saw the same walls: in the true frame its cells are the house cells themselves
   // (turned by `quarters`). The believed frame is off by (beliefDx, beliefDy).
   const network::RoomTransform truth = network::RoomTransform::fromParts(0, 0, k.quarters);
@@ -78,8 +66,8 @@ INSTANTIATE_TEST_SUITE_P(Table, RoomRegistrationCases,
                                            Case{"beyond the search: as close as it can", 3, 0, 0, -2, 0}));
 
 TEST(RoomRegistration, NoOverlapMeansNoChange) {
-  const network::RoomMap known = draw(kKnown, 0, 0);
-  const network::RoomMap fresh = draw({"#####", "#...#", "#####"}, 0, 0);
+  const network::RoomMap known = drawMap(kKnown, 0, 0);
+  const network::RoomMap fresh = drawMap({"#####", "#...#", "#####"}, 0, 0);
   const network::RoomTransform far = network::RoomTransform::fromParts(100, 100, 0);
   const RoomRegistration r = registerRoom(fresh, far, known, 2);
   EXPECT_FALSE(r.shifted());

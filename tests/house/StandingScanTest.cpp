@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "DrawnMap.hpp"
 #include "host/house/StandingScan.hpp"
 
 namespace nxtmap::house {
@@ -15,20 +16,8 @@ struct Drawn {
   Cell believed{};
 };
 
-// Rows top (highest y) first; the lower-left character is cell (0, 0).
 Drawn draw(const std::vector<std::string>& rows) {
-  const int h = static_cast<int>(rows.size()), w = static_cast<int>(rows[0].size());
-  Drawn d{network::RoomMap(0, 0, w, h), Cell{}};
-  for (int r = 0; r < h; ++r) {
-    for (int c = 0; c < w; ++c) {
-      const char ch = rows[static_cast<size_t>(r)][static_cast<size_t>(c)];
-      const Cell cell{static_cast<int16_t>(c), static_cast<int16_t>(h - 1 - r)};
-      if (ch == '#') d.map.set(cell, CellState::Occupied);
-      if (ch == '.' || ch == 'B') d.map.set(cell, CellState::Free);
-      if (ch == 'B') d.believed = cell;
-    }
-  }
-  return d;
+  return Drawn{test::drawMap(rows, 0, 0, "#", ".B"), test::markedCell(rows, "B")};
 }
 
 RangeGeometry tenCentimetreCells() {
