@@ -14,6 +14,7 @@ void PoseTracker::reset(int64_t thetaVarianceMrad2) {
   residualUrad_ = 0;
   for (auto& row : p_)
     for (auto& v : row) v = 0;
+  refusedWide_[0] = refusedWide_[1] = 0;
   p_[2][2] = thetaVarianceMrad2 > 0 ? thetaVarianceMrad2 : 0;
 }
 
@@ -75,16 +76,25 @@ bool PoseTracker::measure(Dir d, int32_t offsetMm, int32_t extraVarianceMm2, boo
   const int64_t predicted = s * (k == 0 ? x_ : y_);
   const int64_t innovation = offsetMm - predicted;
   const int64_t r = static_cast<int64_t>(noise_.readingMm) * noise_.readingMm + extraVarianceMm2;
-  const int64_t spread = p_[k][k] + r;  // innovation variance, mm^2
+  int64_t spread = p_[k][k] + r;  // innovation variance, mm^2
   // Gate: within 3 sigma of the prediction and within the absolute gate; beyond that gate, a straight
   // wall face within 2 sigma and the wide gate.
   const int64_t size = abs64(innovation);
   const bool inGate = size <= noise_.gateMm ||
                       (straightFace && size <= noise_.wideGateMm && innovation * innovation <= 4 * spread);
   if (innovation * innovation > 9 * spread || !inGate) {
-    ++rejected_;
-    return false;
+    // A straight face between the gates: taken when it confirms the last such refusal on this axis.
+    const bool wide = noise_.confirmWide && straightFace && size > noise_.gateMm && size <= noise_.wideGateMm;
+    const int8_t sign = s * innovation > 0 ? 1 : -1;
+    if (!wide || refusedWide_[k] != sign) {
+      if (wide) refusedWide_[k] = sign;
+      ++rejected_;
+      return false;
+    }
+    if (p_[k][k] < innovation * innovation) p_[k][k] = innovation * innovation;
+    spread = p_[k][k] + r;
   }
+  refusedWide_[k] = 0;
   // In the measured axis' sign convention the state component is s * state[k].
   int64_t pk[3];
   for (int i = 0; i < 3; ++i) pk[i] = p_[i][k];

@@ -16,6 +16,11 @@ struct PoseNoise {
   // ... unless the landmark is a straight wall face and the filter itself is that unsure: up to this
   // far (mm) and within 2 sigma of the prediction (a robot that drifted unseen across open space).
   int32_t wideGateMm = 120;
+  // A straight face refused between gateMm and wideGateMm is remembered; the next such refusal along
+  // the same axis that moves the robot the same way confirms it: the filter was sure of a wrong
+  // offset (a drift it corrected against a wall mapped a cell off), so it widens its variance along
+  // the axis to that offset and accepts. false: every refusal is final.
+  bool confirmWide = true;
 };
 
 // PoseTracker: a small Kalman filter, in integers, of where the robot really is relative to the
@@ -41,7 +46,8 @@ class PoseTracker {
   void rebase(Dir d, int cells, int32_t cellMm);
   // A measurement of the offset along `d` (mm, + = towards d), with extra variance (mm^2) on top
   // of the reading's own (the landmark's uncertainty). `straightFace`: the landmark is a straight
-  // wall across the beam, trusted up to PoseNoise::wideGateMm. Returns false when gated out.
+  // wall across the beam, trusted up to PoseNoise::wideGateMm, and a second such reading agreeing with
+  // a refused one is taken (PoseNoise::confirmWide). Returns false when gated out.
   bool measure(Dir d, int32_t offsetMm, int32_t extraVarianceMm2 = 0, bool straightFace = false);
   // A direct measurement of theta (mrad) with its variance (mrad^2), e.g. from a straight wall
   // read twice along a run. Returns false when gated out (3 sigma).
@@ -67,6 +73,8 @@ class PoseTracker {
   int64_t residualUrad_ = 0;       // heading error below the mrad, microradians (|.| <= 500)
   int64_t p_[3][3] = {};           // covariance: mm^2, mm*mrad, mrad^2
   uint32_t accepted_ = 0, rejected_ = 0;
+  // Per axis (x, y): the sign (+1, -1) of the correction a refused straight face asked for, 0: none.
+  int8_t refusedWide_[2] = {0, 0};
 };
 
 }  // namespace nxtmap

@@ -163,13 +163,16 @@ TEST(Pilot, StraightWallsBesideTheRunMeasureTheHeadingError) {
 // +-slipPerMille more or less than reported, each quarter turn ends a random angle within
 // +-turnMrad off, each smaller rotation (steering, levelling) within +-smallTurnMrad; each echo
 // comes back within +-rangeMm of the true distance. Seen: every drive stops shortMm before what was
-// commanded. The random errors come from a fixed sequence, so every run is the same.
+// commanded; unseen, the drive numbered kickAfterDrive (1 = the first) ends kickEastMm further East.
+// The random errors come from a fixed sequence, so every run is the same.
 struct Wheels {
   int slipPerMille = 0;
   int turnMrad = 0;
   int smallTurnMrad = 0;
   int rangeMm = 0;
   int32_t shortMm = 0;
+  int kickAfterDrive = 0;  // 0: none
+  int32_t kickEastMm = 0;
   uint32_t seed = 12345;  // of the fixed sequence
 };
 
@@ -208,6 +211,7 @@ RoomRun runInRoom(const PilotConfig& config, double west, double east, double so
   const auto rangeMm = [&](double a) { return rangeToWalls(west, east, south, north, x, y, a); };
   RoomRun out;
   double sum = 0, headingSum = 0;
+  int drives = 0;
   DriveAction a = rig.pilot.step(DriveEvent::start());
   for (int i = 0; i < 400000 && !rig.pilot.finished(); ++i) {
     DriveEvent e = DriveEvent::thought();
@@ -242,6 +246,7 @@ RoomRun runInRoom(const PilotConfig& config, double west, double east, double so
         const double scale = 1.0 + (wheels.slipPerMille > 0 ? uniform(wheels.slipPerMille) : 0) / 1000.0;
         x += done * scale * std::sin(h);
         y += done * scale * std::cos(h);
+        if (++drives == wheels.kickAfterDrive) x += wheels.kickEastMm;
         e = DriveEvent::drivenBy(done);
         break;
       }
@@ -357,6 +362,29 @@ TEST(Pilot, AStraightWallFacePullsBackADriftAcrossOpenSpace) {
     EXPECT_LT(wide, ordinary) << "slip " << row.slipPerMille << " turn " << row.turnMrad;
     std::printf("slip %d turn %d: position error %.1f mm with straight faces trusted further, %.1f without\n",
                 row.slipPerMille, row.turnMrad, wide, ordinary);
+  }
+}
+
+TEST(Pilot, ASecondStraightFaceConfirmsAnOffsetTheFilterWasTooSureToTake) {
+  // A sure filter (every wall read, nothing slips) and one unseen shove East, most of a cell, after
+  // the given drive: the walls East and West now read `kick` mm off, beyond the 40 mm gate and far
+  // beyond 2 sigma. Refused for good, the rest of the room is mapped from the wrong offset; a second
+  // straight face agreeing with the first refusal is taken (PoseNoise::confirmWide). The shoves come
+  // once the side walls are mapped: a shove before that is mapped into them and cannot be seen.
+  const struct { int after; int32_t kick; } table[] = {{6, 90}, {6, -80}, {10, -70}, {15, 80}, {20, -90}};
+  PilotConfig once;
+  once.noise.confirmWide = false;
+  for (const auto& row : table) {
+    Wheels w;
+    w.kickAfterDrive = row.after;
+    w.kickEastMm = row.kick;
+    const RoomRun confirmed = runInRoom(PilotConfig{}, -750, 850, -650, 950, w);
+    const RoomRun refused = runInRoom(once, -750, 850, -650, 950, w);
+    EXPECT_LT(confirmed.meanEstimateErrorMm, refused.meanEstimateErrorMm / 2) << "kick " << row.kick << " after " << row.after;
+    EXPECT_LT(confirmed.wrongCells, refused.wrongCells) << "kick " << row.kick << " after " << row.after;
+    std::printf("kick %d mm after drive %d: position error %.1f mm, %d wrong cells; refused for good %.1f mm, %d\n",
+                row.kick, row.after, confirmed.meanEstimateErrorMm, confirmed.wrongCells, refused.meanEstimateErrorMm,
+                refused.wrongCells);
   }
 }
 

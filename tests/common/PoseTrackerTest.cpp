@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "common/motion/PoseTracker.hpp"
 
@@ -129,6 +130,61 @@ TEST(PoseTracker, AStraightWallFaceCorrectsADriftTheGateWouldRefuseWhenTheFilter
     if (c.accepted) {
       EXPECT_GT(t.yMm() * c.offset, 0) << c.what;
     }
+  }
+}
+
+TEST(PoseTracker, ASecondStraightFaceConfirmsARefusedOffset) {
+  // A sure filter (30 cm driven East) reads walls far off the prediction, one after another: a
+  // straight face between the 40 mm gate and the 120 mm wide gate is refused, and taken when it
+  // confirms the last such refusal on its axis (the same way: North +100 and South -100 both say
+  // "100 mm further North"). An accepted reading on the axis, or one asking the other way, forgets
+  // the refusal; a non-straight wall or another axis does not.
+  struct Reading {
+    Dir d;
+    int32_t offset;
+    bool straight;
+    bool accepted;
+  };
+  struct Case {
+    const char* what;
+    bool confirm;
+    std::vector<Reading> readings;
+    int32_t yAbove, yBelow;  // the final offset North lies in (yAbove, yBelow)
+  };
+  const Case cases[] = {
+      {"twice the same face", true, {{Dir::North, 100, true, false}, {Dir::North, 95, true, true}}, 80, 100},
+      {"from both sides", true, {{Dir::North, 100, true, false}, {Dir::South, -100, true, true}}, 80, 101},
+      {"short twice", true, {{Dir::North, -90, true, false}, {Dir::North, -90, true, true}}, -91, -75},
+      {"the other way", true, {{Dir::North, 100, true, false}, {Dir::North, -100, true, false}}, -5, 5},
+      {"not a straight face", true, {{Dir::North, 100, true, false}, {Dir::North, 100, false, false}}, -5, 5},
+      {"beyond the wide gate", true, {{Dir::North, 130, true, false}, {Dir::North, 130, true, false}}, -5, 5},
+      {"confirmation off", false, {{Dir::North, 100, true, false}, {Dir::North, 100, true, false}}, -5, 5},
+      {"an accepted reading between",
+       true,
+       {{Dir::North, 100, true, false}, {Dir::North, 3, false, true}, {Dir::North, 100, true, false}},
+       -1,
+       8},
+      {"another axis and a corner between",
+       true,
+       {{Dir::North, 100, true, false},
+        {Dir::East, 100, true, false},
+        {Dir::North, 100, false, false},
+        {Dir::North, 100, true, true}},
+       80,
+       101},
+  };
+  for (const Case& c : cases) {
+    PoseNoise noise;
+    noise.confirmWide = c.confirm;
+    PoseTracker t(noise);
+    t.rotated(1571, 1);
+    for (int i = 0; i < 3; ++i) t.drove(100, Dir::East);
+    for (size_t i = 0; i < c.readings.size(); ++i) {
+      const Reading& r = c.readings[i];
+      EXPECT_EQ(t.measure(r.d, r.offset, 0, r.straight), r.accepted) << c.what << ", reading " << i;
+    }
+    EXPECT_GT(t.yMm(), c.yAbove) << c.what;
+    EXPECT_LT(t.yMm(), c.yBelow) << c.what;
   }
 }
 
