@@ -92,7 +92,8 @@ int runSimHouse(const SimHouseOptions& o) {
       << " observable cells (unknown " << s.unknown << ", wrong " << s.wrong << "; wrong elsewhere "
       << s.wrongElsewhere << ")\n"
       << "time units       " << num(c.timeUnits()) << " (between rooms: " << c.travel.cellsMoved << " cells; "
-      << "relocalisations " << mapper.relocalisations() << ")\n"
+      << "relocalisations " << mapper.relocalisations() << "; start room moved by the start readings "
+      << mapper.startShift().x << "," << mapper.startShift().y << ")\n"
       << "sensor requests  " << c.sensorRequests() << "\n"
       << "raw samples      " << c.explore.rawSamples + c.travel.rawSamples << "\n";
   std::cout << out.str() << std::flush;

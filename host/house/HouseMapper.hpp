@@ -13,6 +13,7 @@
 #include "common/interpret/Doorway.hpp"
 #include "common/interpret/RoomInterpretation.hpp"
 #include "host/house/RoomRun.hpp"
+#include "host/house/StartAnchor.hpp"
 #include "host/mapping/FrameTransform.hpp"
 #include "host/mapping/Strategy.hpp"
 #include "host/network/HouseNetwork.hpp"
@@ -39,6 +40,10 @@ struct HouseConfig {
   // reachable from where it believes it stands, reads all four sides and moves its belief by the
   // whole cells (up to this many each way) that fit the map best, then tries once more (0: off).
   int relocaliseCells = 2;
+  // The readings taken at the very start, where the robot surely is, are matched against the
+  // finished start room; a whole-cell shift under which they fit again (and do not as mapped) moves
+  // the start room's frame and the belief with it (see StartAnchor). false: off.
+  bool anchorStart = true;
 };
 
 struct HouseCounters {
@@ -62,6 +67,7 @@ class HouseMapper {
   int exitsFound() const { return exitsFound_; }
   int exitsUnreached() const { return exitsUnreached_; }   // exits the robot could not get through
   int relocalisations() const { return relocalisations_; }  // beliefs moved by a standing scan (see HouseConfig)
+  Cell startShift() const { return startShift_; }  // the start room's frame moved by this (see HouseConfig::anchorStart)
   int openingsTried() const { return static_cast<int>(openingsTried_.size()); }  // see HouseConfig::maxOpenings
   const sim::SimRobot& robot() const { return robot_; }
   const sim::World& world() const { return world_; }
@@ -109,6 +115,7 @@ class HouseMapper {
   int exitsFound_ = 0;
   int exitsUnreached_ = 0;
   int relocalisations_ = 0;
+  Cell startShift_{0, 0};
 };
 
 }  // namespace nxtmap::house

@@ -65,6 +65,13 @@ class RoomRun {
   // The interpretation of the finished map (walls, size, exits, how many rooms it makes).
   const RoomInterpretation& interpretation() const { return interpretation_; }
   int ignoredDoorways() const { return static_cast<int>(candidates_.size()); }  // never became exits
+  // The readings taken where the run started, before the robot first drove or turned, with the
+  // direction (room frame) each looked in: the only ones from a pose known exactly (see StartAnchor).
+  struct StartReading {
+    Dir dir;
+    RangeReading reading;
+  };
+  const std::vector<StartReading>& startReadings() const { return startReadings_; }
 
  private:
   void closeDoors();   // marks shut_ blocked in the map (after every step)
@@ -91,6 +98,8 @@ class RoomRun {
   Explorer* explorer_ = nullptr;
   std::unique_ptr<Pilot> pilot_;
   DriveAction last_;
+  bool moved_ = false;  // the robot drove or turned since the run started
+  std::vector<StartReading> startReadings_;
   std::vector<Cell> closed_;         // virtual door cells (entrance and exits)
   std::vector<Cell> shut_;           // closed_ and guards_ (held blocked each step), lent to the pilot
   std::vector<Cell> guards_;         // the cells beside the entrance along its line (its jambs), closed too
