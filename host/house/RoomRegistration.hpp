@@ -2,7 +2,9 @@
 // drifts from room to room. The new room's map overlaps the rooms already mapped (what it saw through
 // the doorway, the walls they share): the whole-cell shift of its frame, up to maxShift cells each
 // way, under which the two agree best corrects the frame. Walls weigh more than free cells; a shift
-// is taken only when it beats staying put by `margin` (so no overlap means no change).
+// is taken only when it beats staying put by `margin`: some 16 wall cells' worth, so no overlap means
+// no change and a few cells about a doorway cannot move a room (seen a cell off, they often fit a
+// shift by chance).
 #pragma once
 
 #include "host/network/RoomMap.hpp"
@@ -20,6 +22,6 @@ struct RoomRegistration {
 // fresh: the new room's map in its frame; toHouse: its frame as believed; known: the rooms already
 // mapped, merged in the house frame.
 RoomRegistration registerRoom(const network::RoomMap& fresh, const network::RoomTransform& toHouse,
-                              const network::RoomMap& known, int maxShift, int margin = 12);
+                              const network::RoomMap& known, int maxShift, int margin = 48);
 
 }  // namespace nxtmap::house
