@@ -60,33 +60,7 @@ void HouseMapper::mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, 
     toHouse = r.toHouse;
   }
   // The start room: the start readings against the finished map (see StartAnchor).
-  if (fromRoom < 0 && config_.anchorStart) {
-    const RangeGeometry& g = explorerConfig_.geometry;
-    RangeGeometry reach = g;
-    reach.maxCm = static_cast<int16_t>(std::max<int>(g.maxCm, pilotConfig().poseRangeCm));
-    std::vector<AnchorReading> anchor;
-    for (const RoomRun::StartReading& sr : run.startReadings()) {
-      // Every echo the pilot would match against a known wall (out to its pose range, beyond the
-      // mapping range); one too near lies at the adjacent cell's face.
-      const RangeReading& r = sr.reading;
-      if (r.status == RangeStatus::TooNear) anchor.push_back(AnchorReading{sr.dir, g.cellCm * 5});
-      if (r.status == RangeStatus::Good || (r.status == RangeStatus::TooFar && r.cm > 0 && r.cm <= reach.maxCm))
-        anchor.push_back(AnchorReading{sr.dir, (r.cm + g.mountCm) * 10});
-    }
-    AnchorGeometry ag;
-    ag.cellMm = g.cellCm * 10;
-    ag.reachCells = reach.hitCells();
-    ag.wideFromMm = (g.sureCm > 0 ? g.sureCm : g.maxCm) * 10;
-    const Cell s = startAnchorShift(run.fullMap(), Cell{0, 0}, anchor, ag);
-    if (s.x != 0 || s.y != 0) {
-      // Room cell s is where the robot started: it goes where the start is in the house.
-      const Cell moved = toHouse.apply(s), start = toHouse.apply(Cell{0, 0});
-      toHouse = network::RoomTransform::fromParts(toHouse.x() - (moved.x - start.x), toHouse.y() - (moved.y - start.y),
-                                                  toHouse.quarterTurns());
-      startShift_ = s;
-      if (std::getenv("NXTMAP_HOUSE_DEBUG")) std::fprintf(stderr, "  start anchor: frame moved by %d,%d\n", s.x, s.y);
-    }
-  }
+  if (fromRoom < 0 && config_.anchorStart) toHouse = anchoredStart(run, toHouse);
   const Counters& c = run.counters();
   counters_.explore.sensorRequests += c.sensorRequests;
   counters_.explore.rawSamples += c.rawSamples;
@@ -127,6 +101,33 @@ void HouseMapper::mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, 
   belief_.cell = toHouse.apply(run.pose().cell);
   belief_.heading = toHouse.apply(run.pose().heading);
   debugBelief("after room");
+}
+
+network::RoomTransform HouseMapper::anchoredStart(const RoomRun& run, const network::RoomTransform& toHouse) {
+  const RangeGeometry& g = explorerConfig_.geometry;
+  RangeGeometry reach = g;
+  reach.maxCm = static_cast<int16_t>(std::max<int>(g.maxCm, pilotConfig().poseRangeCm));
+  std::vector<AnchorReading> anchor;
+  for (const RoomRun::StartReading& sr : run.startReadings()) {
+    // Every echo the pilot would match against a known wall (out to its pose range, beyond the
+    // mapping range); one too near lies at the adjacent cell's face.
+    const RangeReading& r = sr.reading;
+    if (r.status == RangeStatus::TooNear) anchor.push_back(AnchorReading{sr.dir, g.cellCm * 5});
+    if (r.status == RangeStatus::Good || (r.status == RangeStatus::TooFar && r.cm > 0 && r.cm <= reach.maxCm))
+      anchor.push_back(AnchorReading{sr.dir, (r.cm + g.mountCm) * 10});
+  }
+  AnchorGeometry ag;
+  ag.cellMm = g.cellCm * 10;
+  ag.reachCells = reach.hitCells();
+  ag.wideFromMm = (g.sureCm > 0 ? g.sureCm : g.maxCm) * 10;
+  const Cell s = startAnchorShift(run.fullMap(), Cell{0, 0}, anchor, ag);
+  if (s.x == 0 && s.y == 0) return toHouse;
+  // Room cell s is where the robot started: it goes where the start is in the house.
+  const Cell moved = toHouse.apply(s), start = toHouse.apply(Cell{0, 0});
+  startShift_ = s;
+  if (std::getenv("NXTMAP_HOUSE_DEBUG")) std::fprintf(stderr, "  start anchor: frame moved by %d,%d\n", s.x, s.y);
+  return network::RoomTransform::fromParts(toHouse.x() - (moved.x - start.x), toHouse.y() - (moved.y - start.y),
+                                           toHouse.quarterTurns());
 }
 
 network::RoomMap HouseMapper::knownForTravel() const {

@@ -99,6 +99,9 @@ class HouseMapper {
   // belief moved.
   bool relocalise(const network::RoomMap& known, const Dir* blocked);
   PilotConfig pilotConfig() const;  // for the next pilot: starts with the heading uncertainty handed over
+  // The start room's frame moved by the whole cells under which its start readings fit its map again
+  // (StartAnchor); the given frame when they fit already or no shift is clear. Sets startShift_.
+  network::RoomTransform anchoredStart(const RoomRun& run, const network::RoomTransform& toHouse);
 
   const sim::World& world_;
   HouseConfig config_;
