@@ -14,10 +14,7 @@ int standingScore(const network::RoomMap& known, Cell at, const std::vector<Stan
   int score = 0;
   for (const StandingReading& r : readings) {
     // The first known wall along the beam (1 = the adjacent cell), 0 when none within reach + 1.
-    int wall = 0;
-    for (int k = 1; k <= reachCells + 1 && wall == 0; ++k) {
-      if (known.at(advance(at, r.dir, static_cast<int16_t>(k))) == CellState::Occupied) wall = k;
-    }
+    const int wall = known.firstOccupied(at, r.dir, reachCells + 1);
     if (r.echo) {
       const int hit = geometry.hitCell(static_cast<int16_t>(r.cm));
       if (wall == hit) {

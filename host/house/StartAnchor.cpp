@@ -4,24 +4,16 @@
 
 namespace nxtmap::house {
 namespace {
-// The first wall the map holds along d from `from` (1 = the adjacent cell), 0 when none within reach.
-int firstWall(const network::RoomMap& map, Cell from, Dir d, int reachCells) {
-  for (int k = 1; k <= reachCells; ++k) {
-    if (map.at(advance(from, d, static_cast<int16_t>(k))) == CellState::Occupied) return k;
-  }
-  return 0;
-}
-
 // Whether every reading along the vertical or horizontal axis fits the map seen from `at`: the
 // nearest wall face in the beam, which beyond wideFromMm takes in the lanes on either side too.
 bool fits(const network::RoomMap& map, Cell at, const std::vector<AnchorReading>& readings, bool vertical,
           const AnchorGeometry& g) {
   for (const AnchorReading& r : readings) {
     if (isVertical(r.dir) != vertical) continue;
-    int wall = firstWall(map, at, r.dir, g.reachCells);
+    int wall = map.firstOccupied(at, r.dir, g.reachCells);
     if (r.mm > g.wideFromMm) {
       for (int side = -1; side <= 1; side += 2) {
-        const int k = firstWall(map, advance(at, rotate(r.dir, side)), r.dir, g.reachCells);
+        const int k = map.firstOccupied(advance(at, rotate(r.dir, side)), r.dir, g.reachCells);
         if (k != 0 && (wall == 0 || k < wall)) wall = k;
       }
     }

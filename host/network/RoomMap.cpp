@@ -24,6 +24,13 @@ int RoomMap::count(CellState s) const {
   return static_cast<int>(std::count(cells_.begin(), cells_.end(), s));
 }
 
+int RoomMap::firstOccupied(Cell from, Dir d, int maxCells) const {
+  for (int k = 1; k <= maxCells; ++k) {
+    if (at(advance(from, d, static_cast<int16_t>(k))) == CellState::Occupied) return k;
+  }
+  return 0;
+}
+
 bool RoomMap::operator==(const RoomMap& o) const {
   return minX_ == o.minX_ && minY_ == o.minY_ && width_ == o.width_ && height_ == o.height_ && cells_ == o.cells_;
 }

@@ -31,6 +31,9 @@ class RoomMap {
   // Precondition inside(c).
   void set(Cell c, CellState s) { cells_[index(c)] = s; }
   int count(CellState s) const;
+  // The first occupied cell along d from `from` (1 = the adjacent cell), looking at most maxCells
+  // out; 0 when there is none.
+  int firstOccupied(Cell from, Dir d, int maxCells) const;
   bool operator==(const RoomMap& o) const;
 
  private:

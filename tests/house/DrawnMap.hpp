@@ -37,4 +37,14 @@ inline Cell markedCell(const std::vector<std::string>& rows, const char* marks, 
   return Cell{};
 }
 
+// A drawn room and its one marked cell (the robot, the start...): drawMap plus markedCell.
+struct DrawnRoom {
+  network::RoomMap map;
+  Cell mark{};
+};
+inline DrawnRoom drawRoom(const std::vector<std::string>& rows, const char* walls, const char* frees,
+                          const char* marks) {
+  return DrawnRoom{drawMap(rows, 0, 0, walls, frees), markedCell(rows, marks)};
+}
+
 }  // namespace nxtmap::house::test

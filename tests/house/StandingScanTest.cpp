@@ -11,14 +11,7 @@
 namespace nxtmap::house {
 namespace {
 
-struct Drawn {
-  network::RoomMap map;
-  Cell believed{};
-};
-
-Drawn draw(const std::vector<std::string>& rows) {
-  return Drawn{test::drawMap(rows, 0, 0, "#", ".B"), test::markedCell(rows, "B")};
-}
+test::DrawnRoom draw(const std::vector<std::string>& rows) { return test::drawRoom(rows, "#", ".B", "B"); }
 
 RangeGeometry tenCentimetreCells() {
   RangeGeometry g;
@@ -68,25 +61,25 @@ TEST(StandingScan, FindsTheWholeCellShiftThatExplainsTheReadings) {
   };
   const RangeGeometry g = tenCentimetreCells();
   for (const Case& c : cases) {
-    const Drawn d = draw(c.rows);
+    const test::DrawnRoom d = draw(c.rows);
     const Dir north = Dir::North;
-    const Cell shift = bestStandingShift(d.map, d.believed, c.readings, g, 100, c.blockedNorth ? &north : nullptr);
+    const Cell shift = bestStandingShift(d.map, d.mark, c.readings, g, 100, c.blockedNorth ? &north : nullptr);
     EXPECT_EQ(shift.x, c.expected.x) << c.what;
     EXPECT_EQ(shift.y, c.expected.y) << c.what;
   }
 }
 
 TEST(StandingScan, AWallCellIsNeverWhereTheRobotStands) {
-  const Drawn d = draw({"#####", "#.B.#", "#####"});
+  const test::DrawnRoom d = draw({"#####", "#.B.#", "#####"});
   const RangeGeometry g = tenCentimetreCells();
   const std::vector<StandingReading> readings = {wallAt(Dir::North, 1), wallAt(Dir::South, 1)};
-  EXPECT_GT(standingScore(d.map, d.believed, readings, g, 100, nullptr),
+  EXPECT_GT(standingScore(d.map, d.mark, readings, g, 100, nullptr),
             standingScore(d.map, Cell{2, 2}, readings, g, 100, nullptr));
   EXPECT_LT(standingScore(d.map, Cell{0, 1}, readings, g, 100, nullptr), -1000);
 }
 
 TEST(StandingScan, ScoresEchoesAgainstTheFirstKnownWallAlongTheBeam) {
-  const Drawn d = draw({"#######", "#..B..#", "#######"});
+  const test::DrawnRoom d = draw({"#######", "#..B..#", "#######"});
   const RangeGeometry g = tenCentimetreCells();
   struct Row {
     const char* what;
@@ -101,7 +94,7 @@ TEST(StandingScan, ScoresEchoesAgainstTheFirstKnownWallAlongTheBeam) {
       {"nothing, with the wall adjacent", nothing(Dir::North), -2},
   };
   for (const Row& r : rows) {
-    EXPECT_EQ(standingScore(d.map, d.believed, {r.reading}, g, 100, nullptr), r.expected) << r.what;
+    EXPECT_EQ(standingScore(d.map, d.mark, {r.reading}, g, 100, nullptr), r.expected) << r.what;
   }
 }
 

@@ -59,9 +59,8 @@ TEST(StartAnchor, FindsTheShiftUnderWhichTheStartReadingsFitAgain) {
        {wallAt(Dir::North, 2)}, {0, 0}},
   };
   for (const Case& c : cases) {
-    const network::RoomMap map = test::drawMap(c.rows, 0, 0, "#", ".S");
-    const Cell start = test::markedCell(c.rows, "S");
-    const Cell shift = startAnchorShift(map, start, c.readings, tenCentimetreCells());
+    const test::DrawnRoom d = test::drawRoom(c.rows, "#", ".S", "S");
+    const Cell shift = startAnchorShift(d.map, d.mark, c.readings, tenCentimetreCells());
     EXPECT_EQ(shift.x, c.expected.x) << c.what;
     EXPECT_EQ(shift.y, c.expected.y) << c.what;
   }
@@ -78,13 +77,12 @@ TEST(StartAnchor, AFarEchoMayComeFromTheLaneBesideTheAxis) {
       " #..........",
       " #..........",
   };
-  const network::RoomMap map = test::drawMap(rows, 0, 0, "#", ".S");
-  const Cell start = test::markedCell(rows, "S");
+  const test::DrawnRoom d = test::drawRoom(rows, "#", ".S", "S");
   AnchorGeometry g = tenCentimetreCells();
-  const Cell far = startAnchorShift(map, start, {wallAt(Dir::West, 7)}, g);
+  const Cell far = startAnchorShift(d.map, d.mark, {wallAt(Dir::West, 7)}, g);
   EXPECT_EQ(far.x, 0);
   g.wideFromMm = 1000;  // a narrow beam: only the axis lane
-  const Cell narrow = startAnchorShift(map, start, {wallAt(Dir::West, 7)}, g);
+  const Cell narrow = startAnchorShift(d.map, d.mark, {wallAt(Dir::West, 7)}, g);
   EXPECT_EQ(narrow.x, -1);
 }
 

@@ -11,14 +11,7 @@
 namespace nxtmap::house {
 namespace {
 
-struct Drawn {
-  network::RoomMap map;
-  Cell robot{};
-};
-
-Drawn draw(const std::vector<std::string>& rows) {
-  return Drawn{test::drawMap(rows, 0, 0, "#W", ".R"), test::markedCell(rows, "RW")};
-}
+test::DrawnRoom draw(const std::vector<std::string>& rows) { return test::drawRoom(rows, "#W", ".R", "RW"); }
 
 struct Case {
   const char* what;
@@ -36,15 +29,15 @@ TEST(TravelDistances, FromTheRobotOverFreeCells) {
       {"a wall cell beside the robot is still a wall", {"#####", "#W#.#", "#####"}, Cell{3, 1}, -1},
   };
   for (const Case& c : cases) {
-    const Drawn d = draw(c.rows);
-    const std::vector<int> dist = travelDistances(d.map, d.robot);
+    const test::DrawnRoom d = draw(c.rows);
+    const std::vector<int> dist = travelDistances(d.map, d.mark);
     const size_t i = static_cast<size_t>((c.target.y - d.map.minY()) * d.map.width() + (c.target.x - d.map.minX()));
     EXPECT_EQ(dist[i], c.expected) << c.what;
   }
 }
 
 TEST(TravelDistances, NothingIsReachedFromOutsideTheMap) {
-  const Drawn d = draw({"###", "#.#", "###"});
+  const test::DrawnRoom d = draw({"###", "#.#", "###"});
   for (const int v : travelDistances(d.map, Cell{7, 7})) EXPECT_EQ(v, -1);
 }
 
