@@ -22,11 +22,13 @@ help:
 	@echo "make bench  - benchmarks, measured against their targets"
 	@echo "make firmware - the brick images: build/firmware/nxtmap.{elf,bin} (flash), nxtmap-ram.{elf,bin} (fwexec), nxtmap-sim.elf"
 	@echo "make size   - the brick image's flash/RAM budgets, enforced"
-	@echo "make deps   - install missing Debian packages (quick when all is present)"
+	@echo "make deps   - install the missing Debian packages of every target (make test etc. install their own)"
 	@echo "make fuzz   - fuzz the radio protocol decoder with libFuzzer (FUZZ_SECONDS=600)"
 
+# The packages for the goals asked for (make test: build + test; make deps alone: every target's).
+DEPS_GOALS := $(filter test demo bench fuzz,$(MAKECMDGOALS))
 deps:
-	@bash scripts/deps.sh
+	@bash scripts/deps.sh $(if $(DEPS_GOALS),$(DEPS_GOALS),build test demo bench fuzz)
 
 $(HOST_DIR)/build.ninja: | deps
 	cmake -S . -B $(HOST_DIR) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Release

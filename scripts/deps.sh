@@ -1,21 +1,47 @@
 #!/usr/bin/env bash
-# Installs the Debian packages nxtmap needs, only when one is missing (quick when all are present).
+# Installs the Debian packages one make target needs, only those missing (quick when all are present).
+#   scripts/deps.sh [build|test|demo|bench|fuzz ...]     (no argument: build)
+# Every package is named: apt runs with --no-install-recommends, so nothing arrives as a recommendation.
 set -euo pipefail
-PKGS=(build-essential cmake ninja-build pkg-config
-      libgtest-dev libgmock-dev libbenchmark-dev
-      gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi
-      libcli11-dev libpng-dev libyaml-cpp-dev nlohmann-json3-dev libeigen3-dev
-      gnuplot-nox
-      libunicorn-dev libnxt nxt-firmware libbluetooth-dev
-      clang libclang-rt-14-dev)
-missing=()
-for p in "${PKGS[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+
+# The host build and the ARM7TDMI cross-build (make host, firmware, size).
+BUILD_PKGS=(build-essential cmake ninja-build pkg-config
+            libcli11-dev libpng-dev libyaml-cpp-dev nlohmann-json3-dev libeigen3-dev
+            libunicorn-dev libbluetooth-dev
+            gcc-arm-none-eabi binutils-arm-none-eabi libnewlib-arm-none-eabi
+            libstdc++-arm-none-eabi-newlib)   # libstdc++_nano for the emulator's probe firmwares
+# make test: GoogleTest; gnuplot for the plot tests; LEGO's firmware image and libnxt's fwflash for flash.
+TEST_PKGS=(libgtest-dev libgmock-dev gnuplot-nox nxt-firmware libnxt)
+# make demo: the build alone.
+DEMO_PKGS=()
+# make bench: the PathFinding.js peer (npm, installed into build/peer by the bench itself).
+BENCH_PKGS=(nodejs npm gnuplot-nox)
+# make fuzz: clang's libFuzzer.
+FUZZ_PKGS=(clang libclang-rt-14-dev)
+
+want=("${BUILD_PKGS[@]}")
+for target in "${@:-build}"; do
+  case "$target" in
+    build) ;;
+    test)  want+=("${TEST_PKGS[@]}") ;;
+    demo)  want+=(${DEMO_PKGS[@]+"${DEMO_PKGS[@]}"}) ;;
+    bench) want+=("${BENCH_PKGS[@]}") ;;
+    fuzz)  want+=("${FUZZ_PKGS[@]}") ;;
+    *) echo "deps: unknown target '$target' (build, test, demo, bench, fuzz)" >&2; exit 2 ;;
+  esac
 done
-# Node.js and npm (only the benchmark's peer needs them); a machine may carry its own Node.js.
-command -v node >/dev/null || missing+=(nodejs)
-command -v npm >/dev/null || missing+=(npm)
+
+missing=()
+for p in "${want[@]}"; do
+  case "$p" in  # a machine may carry its own Node.js outside Debian's packages
+    nodejs) command -v node >/dev/null && continue ;;
+    npm)    command -v npm  >/dev/null && continue ;;
+  esac
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' && continue
+  [[ " ${missing[*]-} " == *" $p "* ]] || missing+=("$p")
+done
 [ ${#missing[@]} -eq 0 ] && exit 0
+
 echo "deps: installing ${missing[*]}"
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then
