@@ -9,6 +9,8 @@
 #include <limits>
 
 #include "host/cli/Errors.hpp"
+#include "host/mapping/SimDrive.hpp"
+#include "host/report/TerminalText.hpp"
 
 namespace nxtmap::cli {
 namespace {
@@ -33,10 +35,7 @@ bool parseInt(const std::string& text, int& value) {
 }  // namespace
 
 void printError(const std::string& message) {
-  std::string line = message;
-  for (char& c : line) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
+  std::string line = report::escapeForTerminal(message);
   while (!line.empty() && line.back() == ' ') line.pop_back();
   std::cout.flush();
   std::cerr << "nxtmap: " << line << std::endl;
@@ -102,10 +101,30 @@ double checkRangeM(double rangeM) {
   return rangeM;
 }
 
+std::string countProblem(const std::string& text, uint64_t max) {
+  const std::string t = trim(text);
+  const std::string expected = "must be a whole number 0.." + std::to_string(max) + ", not '" + text + "'";
+  if (t.empty() || t.find_first_not_of("0123456789") != std::string::npos || t.size() > 19) return expected;
+  if (std::strtoull(t.c_str(), nullptr, 10) > max) return expected;
+  return "";
+}
+
 sim::World loadWorld(const std::string& path) {
   sim::WorldLoad load = sim::World::load(path);
   if (!load.world) throw CliError(load.error.empty() ? path + ": cannot load the world" : load.error);
   return std::move(*load.world);
+}
+
+void checkRangeCoversCell(const sim::World& world, double rangeM) {
+  const RangeGeometry g = mapping::sonarGeometryFor(world, 0.05, rangeM, 0.0);
+  if (g.freeCells() >= 1) return;
+  const int cellCm = g.cellCm;
+  char buf[240];
+  std::snprintf(buf, sizeof buf,
+                "--range-m %g reaches less than 1.5 of the world's %d cm cells, so no reading could prove a "
+                "neighbouring cell free: use --range-m %d.%02d or more",
+                rangeM, cellCm, (3 * cellCm + 1) / 2 / 100, (3 * cellCm + 1) / 2 % 100);
+  throw CliError(buf);
 }
 
 void checkStart(const sim::World& world, int col, int row, const std::string& where) {

@@ -14,7 +14,8 @@ class CliError : public std::runtime_error {
   explicit CliError(const std::string& message) : std::runtime_error(message) {}
 };
 
-// Writes "nxtmap: <message>" as a single line on stderr (newlines in the message become spaces).
+// Writes "nxtmap: <message>" as a single line on stderr: newlines become spaces, and control characters and
+// bytes that are not UTF-8 are shown as \xNN (report::escapeForTerminal), so a hostile name cannot drive the terminal.
 void printError(const std::string& message);
 
 }  // namespace nxtmap::cli
