@@ -4,9 +4,12 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
-#include <optional>
+#include <cmath>
 #include <iostream>
+#include <optional>
+#include <sstream>
 #include <thread>
 
 #include "host/cli/Errors.hpp"
@@ -15,13 +18,17 @@
 #include "host/network/HouseFiles.hpp"
 
 namespace nxtmap::cli {
+namespace {
+constexpr double kMaxConnectTimeoutS = 3600;  // an hour: --connect-timeout's upper bound
+}  // namespace
 
 CLI::App* addConnectCommand(CLI::App& app, ConnectOptions& o) {
   CLI::App* c = app.add_subcommand("connect", "talk to a brick: live map, explore, goto, save (type help inside)");
   c->add_option("link", o.link, "bt:00:16:53:XX:XX:XX, serial:/dev/rfcomm0, tcp:HOST:PORT or sim:WORLD[@COL,ROW]")
       ->required();
   c->add_option("--speed", o.speed, "sim: links only: run the stand-in brick this many times faster (default 1)");
-  c->add_option("--connect-timeout", o.connectTimeoutS, "seconds to wait for the brick to answer (default 20)");
+  c->add_option("--connect-timeout", o.connectTimeoutS,
+                "seconds to wait for the brick to answer, (0, 3600] (default 20); also the longest a write may wait");
   c->add_flag("!--no-live", o.live, "do not redraw the map while the brick explores");
   c->add_option("--house", o.house, "load a saved house directory (nxtmap sim-house / save DIR); its room --room goes to the brick");
   c->add_option("--room", o.room, "with --house: the room the brick stands in, by number (default 0); the brick's pose is read in "
@@ -38,6 +45,12 @@ int runConnect(const ConnectOptions& o) {
   }
   if (!(o.speed > 0 && o.speed <= 1000)) throw CliError("connect: --speed must be in (0, 1000]");
   if (o.speed != 1.0 && spec.kind != link::LinkSpec::Kind::Sim) throw CliError("connect: --speed only applies to sim: links");
+  // Checked before any arithmetic: NaN, infinities, huge or negative values would never end the wait.
+  if (!(o.connectTimeoutS > 0 && o.connectTimeoutS <= kMaxConnectTimeoutS)) {
+    throw CliError("connect: --connect-timeout must be a number of seconds in (0, 3600]");
+  }
+  // At least 1 ms: the attempt to open the link and each write wait at most this long.
+  const int waitMs = std::max(1, static_cast<int>(std::lround(o.connectTimeoutS * 1000.0)));
   // A house is checked whole before anything else happens: a bad one is one message, nothing loaded.
   std::optional<network::HouseLoad> house;
   if (!o.house.empty()) {
@@ -61,7 +74,7 @@ int runConnect(const ConnectOptions& o) {
     } catch (const link::LinkError& e) {
       throw CliError(std::string("connect: ") + e.what());
     }
-    opener = [first, spec, speed = o.speed]() mutable -> std::unique_ptr<link::Transport> {
+    opener = [first](const link::WaitLimit&) -> std::unique_ptr<link::Transport> {
       if (!first) throw link::LinkError("the stand-in brick was switched off");
       // The stand-in lives as long as the console: hand out a proxy to the one instance.
       struct Proxy : link::Transport {
@@ -75,10 +88,10 @@ int runConnect(const ConnectOptions& o) {
       return p;
     };
   } else {
-    opener = [spec] { return link::openTransport(spec); };
+    opener = [spec](const link::WaitLimit& limit) { return link::openTransport(spec, limit); };
   }
 
-  link::LinkRunner runner(opener, link::SessionConfig{});
+  link::LinkRunner runner(opener, link::SessionConfig{}, 1000, waitMs);
   runner.start();
   console::Console console(runner, o.link);
   if (house) console.useHouse(std::move(*house->network), house->resolutionM, o.room);
@@ -87,13 +100,14 @@ int runConnect(const ConnectOptions& o) {
   const bool live = o.live && ::isatty(STDOUT_FILENO) != 0;
 
   // Wait for the Hello to be answered.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(o.connectTimeoutS);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(waitMs);
   while (!runner.with([](link::Session& s) { return s.connected() || !s.error().empty(); })) {
     if (std::chrono::steady_clock::now() > deadline) {
       const std::string why = runner.state();
       runner.stop();
-      throw CliError("connect: no answer from the brick on " + o.link + " within " +
-                     std::to_string(static_cast<int>(o.connectTimeoutS)) + " s (" + why + ")");
+      std::ostringstream limit;
+      limit << o.connectTimeoutS;
+      throw CliError("connect: no answer from the brick on " + o.link + " within " + limit.str() + " s (" + why + ")");
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }

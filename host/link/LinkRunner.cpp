@@ -2,8 +2,15 @@
 
 namespace nxtmap::link {
 
-LinkRunner::LinkRunner(Opener opener, const SessionConfig& config, uint32_t retryMs)
-    : opener_(std::move(opener)), retryMs_(retryMs), session_(config), start_(std::chrono::steady_clock::now()) {}
+LinkRunner::LinkRunner(Opener opener, const SessionConfig& config, uint32_t retryMs, int waitMs)
+    : opener_(std::move(opener)),
+      retryMs_(retryMs),
+      waitMs_(waitMs),
+      session_(config),
+      start_(std::chrono::steady_clock::now()) {}
+
+LinkRunner::LinkRunner(InstantOpener opener, const SessionConfig& config, uint32_t retryMs)
+    : LinkRunner([open = std::move(opener)](const WaitLimit&) { return open(); }, config, retryMs) {}
 
 LinkRunner::~LinkRunner() { stop(); }
 
@@ -33,7 +40,7 @@ void LinkRunner::loop() {
   while (running_) {
     if (!transport) {
       try {
-        transport = opener_();
+        transport = opener_(WaitLimit{waitMs_, &running_});
         std::lock_guard<std::mutex> lock(mutex_);
         state_ = "connected to " + transport->describe();
       } catch (const LinkError& e) {

@@ -18,9 +18,14 @@ namespace nxtmap::link {
 
 class LinkRunner {
  public:
-  using Opener = std::function<std::unique_ptr<Transport>()>;
-  // `opener` makes a fresh transport (may throw LinkError: retried every retryMs).
-  LinkRunner(Opener opener, const SessionConfig& config, uint32_t retryMs = 1000);
+  // Makes a fresh transport, waiting at most the limit it is given (may throw LinkError: retried
+  // every retryMs). The limit's keepGoing is the runner's: stop() ends an attempt within 20 ms.
+  using Opener = std::function<std::unique_ptr<Transport>(const WaitLimit&)>;
+  // An opener that never waits (an in-process transport).
+  using InstantOpener = std::function<std::unique_ptr<Transport>()>;
+  // waitMs: how long one attempt to open the link (and one write on it) may take, 1 .. 3600000.
+  LinkRunner(Opener opener, const SessionConfig& config, uint32_t retryMs = 1000, int waitMs = 5000);
+  LinkRunner(InstantOpener opener, const SessionConfig& config, uint32_t retryMs = 1000);
   ~LinkRunner();
   LinkRunner(const LinkRunner&) = delete;
   LinkRunner& operator=(const LinkRunner&) = delete;
@@ -48,6 +53,7 @@ class LinkRunner {
 
   Opener opener_;
   uint32_t retryMs_;
+  int waitMs_;
   mutable std::mutex mutex_;
   Session session_;
   std::string state_ = "connecting";

@@ -1,5 +1,6 @@
 // Real byte transports: the stand-in brick behind a TCP socket and behind a pty, the PC's
-// session in a LinkRunner on the other side; a dropped connection is reconnected.
+// session in a LinkRunner on the other side; a dropped connection is reconnected. Every wait
+// ends: at its limit, or at once when the runner stops.
 #include <gtest/gtest.h>
 #include <netinet/in.h>
 #include <poll.h>
@@ -17,6 +18,7 @@
 #include "host/link/LinkRunner.hpp"
 #include "host/link/SimBrick.hpp"
 #include "host/sim/World.hpp"
+#include "tests/link/LoopbackListener.hpp"
 
 namespace nxtmap::link {
 namespace {
@@ -178,6 +180,72 @@ TEST(Transport, PtyIsASerialLink) {
   ::close(master);
   EXPECT_TRUE(connected);
   EXPECT_TRUE(mapped);
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+TEST(Transport, ConnectingToAHostThatNeverAcceptsGivesUpAtTheLimit) {
+  const test::LoopbackListener host(test::LoopbackListener::Mode::NeverAccepts);
+  ASSERT_TRUE(host.ready());
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    openTransport(parseLinkSpec("tcp:127.0.0.1:" + std::to_string(host.port())), WaitLimit{300, nullptr});
+    FAIL() << "a host that never accepts cannot be connected";
+  } catch (const LinkError& e) {
+    EXPECT_NE(std::string(e.what()).find("no answer within 0.3 s"), std::string::npos) << e.what();
+  }
+  EXPECT_GE(secondsSince(start), 0.29);
+  EXPECT_LT(secondsSince(start), 1.5);
+}
+
+TEST(Transport, AStopEndsAConnectAttemptAtOnce) {
+  const test::LoopbackListener host(test::LoopbackListener::Mode::NeverAccepts);
+  ASSERT_TRUE(host.ready());
+  std::atomic<bool> keepGoing{true};
+  std::thread stopper([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    keepGoing = false;
+  });
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    openTransport(parseLinkSpec("tcp:127.0.0.1:" + std::to_string(host.port())), WaitLimit{60000, &keepGoing});
+    ADD_FAILURE() << "a host that never accepts cannot be connected";
+  } catch (const LinkError& e) {
+    EXPECT_NE(std::string(e.what()).find("stopped"), std::string::npos) << e.what();
+  }
+  stopper.join();
+  EXPECT_LT(secondsSince(start), 1.0);
+}
+
+TEST(Transport, AWriteThePeerNeverTakesGivesUpAtTheLimit) {
+  const test::LoopbackListener host(test::LoopbackListener::Mode::AcceptsSilently);
+  ASSERT_TRUE(host.ready());
+  const std::unique_ptr<Transport> t =
+      openTransport(parseLinkSpec("tcp:127.0.0.1:" + std::to_string(host.port())), WaitLimit{300, nullptr});
+  const std::vector<uint8_t> bytes(64u << 20, 0x55);  // far more than the socket buffers hold
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    t->write(bytes.data(), bytes.size());
+    FAIL() << "64 MiB cannot fit into socket buffers nobody reads";
+  } catch (const TransportClosed& e) {
+    EXPECT_NE(std::string(e.what()).find("the other end took no bytes within 0.3 s"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(secondsSince(start), 1.5);
+}
+
+TEST(Transport, StoppingTheRunnerEndsItsConnectAttemptAtOnce) {
+  const test::LoopbackListener host(test::LoopbackListener::Mode::NeverAccepts);
+  ASSERT_TRUE(host.ready());
+  const LinkSpec spec = parseLinkSpec("tcp:127.0.0.1:" + std::to_string(host.port()));
+  LinkRunner runner([&](const WaitLimit& limit) { return openTransport(spec, limit); }, SessionConfig{}, 100, 60000);
+  runner.start();
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // in the middle of the attempt
+  const auto start = std::chrono::steady_clock::now();
+  runner.stop();
+  EXPECT_LT(secondsSince(start), 1.0);
+  EXPECT_FALSE(runner.with([](Session& s) { return s.connected(); }));
 }
 
 TEST(Transport, OpeningWhatIsNotThereSaysWhy) {
