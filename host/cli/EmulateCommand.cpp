@@ -11,6 +11,7 @@
 #include "host/cli/Errors.hpp"
 #include "host/emu/EmulatedRun.hpp"
 #include "host/emu/LinkServer.hpp"
+#include "host/fileio/OutputTarget.hpp"
 #include "host/report/ExperimentTable.hpp"
 
 namespace nxtmap::cli {
@@ -55,11 +56,8 @@ int runEmulate(const EmulateOptions& o) {
   if (until == "disconnect" && o.listen.empty()) throw CliError("--until disconnect needs --listen");
   run.stopWhenExplored = until == "explored";
   run.stopWhenPcLeaves = until == "disconnect";
-  if (!o.lcd.empty()) {
-    const std::filesystem::path dir = std::filesystem::path(o.lcd).parent_path();
-    if (!dir.empty() && !std::filesystem::is_directory(dir))
-      throw CliError("--lcd: directory '" + dir.string() + "' does not exist");
-  }
+  std::string lcdError;  // --lcd is checked before the run (a missing folder, a device): nothing written yet
+  if (!o.lcd.empty() && !fileio::resolveOutputTarget(o.lcd, lcdError)) throw CliError("--lcd: " + lcdError);
   const sim::World world = loadWorld(o.world);
   checkStart(world, start.col, start.row, "");
   emu::ElfLoad load = emu::ElfImage::load(o.firmware);

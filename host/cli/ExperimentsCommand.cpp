@@ -3,13 +3,14 @@
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <memory>
+#include <sstream>
 
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
 #include "host/cli/ExperimentRunner.hpp"
+#include "host/fileio/AtomicFile.hpp"
+#include "host/fileio/OutputTarget.hpp"
 #include "host/report/ExperimentTable.hpp"
 #include "host/report/Plots.hpp"
 
@@ -23,10 +24,17 @@ std::string withSuffix(const std::string& path, const std::string& suffix) {
   return (p.parent_path() / (p.stem().string() + suffix + p.extension().string())).string();
 }
 
-std::unique_ptr<std::ofstream> openOutput(const std::string& path) {
-  auto out = std::make_unique<std::ofstream>(path);
-  if (!*out) throw CliError("cannot write " + path);
-  return out;
+// Refuses an output that cannot be written (fileio::OutputTarget) before the runs; nothing is written yet.
+void checkOutput(const std::string& path) {
+  std::string error;
+  if (!fileio::resolveOutputTarget(path, error)) throw CliError(error);
+}
+
+// Writes `text` to `path` whole or not at all.
+void writeOutput(const std::string& path, const std::string& text) {
+  std::string error;
+  if (!fileio::writeFileAtomically(path, text, error)) throw CliError(error);
+  std::cout << "wrote " << path << '\n';
 }
 }  // namespace
 
@@ -54,18 +62,17 @@ int runExperiments(const ExperimentsOptions& o) {
   }
   const Suite suite = loadSuite(o.dir);
 
-  // Open every output first so a bad path fails before the runs.
-  std::vector<std::pair<std::string, std::unique_ptr<std::ofstream>>> csvs;
+  // Check every output first so a bad path fails before the runs.
+  std::vector<std::string> csvs;
   if (!o.csv.empty()) {
     for (mapping::Strategy s : strategies) {
-      const std::string path = strategies.size() > 1 ? withSuffix(o.csv, "-" + mapping::strategyName(s)) : o.csv;
-      csvs.emplace_back(path, openOutput(path));
+      csvs.push_back(strategies.size() > 1 ? withSuffix(o.csv, "-" + mapping::strategyName(s)) : o.csv);
+      checkOutput(csvs.back());
     }
   }
-  std::unique_ptr<std::ofstream> seedCsv, markdown;
-  const std::string seedCsvPath = o.csv.empty() ? "" : withSuffix(o.csv, "-seeds");
-  if (!o.csv.empty() && o.seeds > 1) seedCsv = openOutput(seedCsvPath);
-  if (!o.markdown.empty()) markdown = openOutput(o.markdown);
+  const std::string seedCsvPath = !o.csv.empty() && o.seeds > 1 ? withSuffix(o.csv, "-seeds") : "";
+  if (!seedCsvPath.empty()) checkOutput(seedCsvPath);
+  if (!o.markdown.empty()) checkOutput(o.markdown);
 
   const size_t total = suite.scenarios.size() * static_cast<size_t>(o.seeds) * strategies.size();
   const bool tty = stderrIsTerminal();
@@ -95,28 +102,26 @@ int runExperiments(const ExperimentsOptions& o) {
   }
 
   for (size_t i = 0; i < csvs.size(); ++i) {
-    tables[i].writeCsv(*csvs[i].second);
-    csvs[i].second->close();
-    if (!*csvs[i].second) throw CliError("cannot write " + csvs[i].first);
-    std::cout << "wrote " << csvs[i].first << '\n';
+    std::ostringstream csv;
+    tables[i].writeCsv(csv);
+    writeOutput(csvs[i], csv.str());
   }
-  if (seedCsv) {
-    for (size_t i = 0; i < tables.size(); ++i) tables[i].writeSeedCsv(*seedCsv, i == 0);
-    seedCsv->close();
-    std::cout << "wrote " << seedCsvPath << '\n';
+  if (!seedCsvPath.empty()) {
+    std::ostringstream seedCsv;
+    for (size_t i = 0; i < tables.size(); ++i) tables[i].writeSeedCsv(seedCsv, i == 0);
+    writeOutput(seedCsvPath, seedCsv.str());
   }
-  if (markdown) {
-    *markdown << "# nxtmap experiments: " << suite.tsvPath << "\n\n"
-              << "Ours beside the thesis's published figures (Appendix A). Time in cell units (one per cell "
-                 "moved and per 90 degree turn); detected % = occupied cells mapped of those observable from "
-                 "the reachable free space.\n\n";
+  if (!o.markdown.empty()) {
+    std::ostringstream markdown;
+    markdown << "# nxtmap experiments: " << suite.tsvPath << "\n\n"
+             << "Ours beside the thesis's published figures (Appendix A). Time in cell units (one per cell "
+                "moved and per 90 degree turn); detected % = occupied cells mapped of those observable from "
+                "the reachable free space.\n\n";
     for (const report::ExperimentTable& t : tables) {
-      t.writeMarkdown(*markdown);
-      *markdown << '\n';
+      t.writeMarkdown(markdown);
+      markdown << '\n';
     }
-    markdown->close();
-    if (!*markdown) throw CliError("cannot write " + o.markdown);
-    std::cout << "wrote " << o.markdown << '\n';
+    writeOutput(o.markdown, markdown.str());
   }
   if (!o.plots.empty()) {
     std::vector<std::string> written;

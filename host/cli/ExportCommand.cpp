@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "host/cli/Errors.hpp"
+#include "host/fileio/AtomicFile.hpp"
+#include "host/fileio/OutputTarget.hpp"
 #include "host/mapio/MapFiles.hpp"
 #include "host/network/HouseFiles.hpp"
 #include "host/report/MapImage.hpp"
@@ -76,16 +78,8 @@ void writeSvgFile(const network::HouseNetwork& h, const network::RoomMap& m, con
     o << "<text x=\"" << col << "\" y=\"" << row << "\" font-size=\"3\" fill=\"#c03030\">" << r.name << "</text>\n";
   }
   o << "</svg>\n";
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << o.str();
-    out.flush();
-    if (!out) throw CliError(path + ": cannot write the file");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw CliError(path + ": cannot write the file (" + ec.message() + ")");
+  std::string error;
+  if (!fileio::writeFileAtomically(path, o.str(), error)) throw CliError(error);
 }
 
 }  // namespace
@@ -108,6 +102,10 @@ int runExport(const ExportOptions& o) {
   const network::HouseLoad l = network::loadHouse(o.house);
   if (!l.network) throw CliError(l.error);
   const network::HouseNetwork& h = *l.network;
+  std::string outputError;  // both files are checked before either is written
+  for (const std::string& out : {o.png, o.svg}) {
+    if (!out.empty() && !fileio::resolveOutputTarget(out, outputError)) throw CliError(outputError);
+  }
   const network::RoomMap merged = h.merged();
   if (!o.png.empty()) {
     writePngFile(h, merged, o.cellPx, o.png);

@@ -11,6 +11,8 @@
 
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
+#include "host/fileio/AtomicFile.hpp"
+#include "host/fileio/OutputTarget.hpp"
 #include "host/mapio/MapFiles.hpp"
 #include "host/plan/MovingAiScenario.hpp"
 #include "host/plan/ScenarioCheck.hpp"
@@ -56,11 +58,8 @@ int runPaths(const PathsOptions& o) {
       if (!map.inside(c.col, c.row)) throw CliError(where + "has cell " + cellText(c) + " outside the map");
     }
   }
-  std::ofstream csv;
-  if (!o.csv.empty()) {
-    csv.open(o.csv);
-    if (!csv) throw CliError("cannot write " + o.csv);
-  }
+  std::string csvError;
+  if (!o.csv.empty() && !fileio::resolveOutputTarget(o.csv, csvError)) throw CliError(csvError);  // before the runs
 
   plan::PlanOptions options;
   options.maxNodes = o.maxNodes;
@@ -85,7 +84,8 @@ int runPaths(const PathsOptions& o) {
       worstGap = std::max(worstGap, out[i].length - problems[i].optimal);
     }
   }
-  if (csv.is_open()) {
+  if (!o.csv.empty()) {
+    std::ostringstream csv;
     csv << "index,bucket,start_col,start_row,goal_col,goal_row,optimal,length,status,nodes,micros,match\n";
     for (size_t i = 0; i < out.size(); ++i) {
       const plan::ScenarioProblem& p = problems[i];
@@ -95,8 +95,7 @@ int runPaths(const PathsOptions& o) {
           << p.goal.row << ',' << buf << ',' << plan::statusName(out[i].status) << ',' << out[i].nodes << ','
           << report::formatNumber(out[i].micros, 1) << ',' << (out[i].matches ? 1 : 0) << '\n';
     }
-    csv.close();
-    if (!csv) throw CliError("writing " + o.csv + " failed");
+    if (!fileio::writeFileAtomically(o.csv, csv.str(), csvError)) throw CliError(csvError);
   }
 
   std::ostringstream s;

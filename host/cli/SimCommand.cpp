@@ -11,6 +11,7 @@
 
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
+#include "host/fileio/OutputTarget.hpp"
 #include "host/mapio/MapFiles.hpp"
 #include "host/mapping/MapScore.hpp"
 #include "host/mapping/MappingRun.hpp"
@@ -119,6 +120,10 @@ int runSim(const SimOptions& o) {
   if (!o.save.empty()) {
     const std::string ext = std::filesystem::path(o.save).extension().string();
     if (ext != ".yaml" && ext != ".yml") throw CliError("--save must name a .yaml file, not '" + o.save + "'");
+  }
+  std::string outputError;  // the outputs are checked before the run (a missing folder, a device): nothing written yet
+  for (const std::string& out : {o.png, o.save}) {
+    if (!out.empty() && !fileio::resolveOutputTarget(out, outputError)) throw CliError(outputError);
   }
   const sim::World world = loadWorld(o.world);
   checkStart(world, config.startCol, config.startRow, "");

@@ -2,8 +2,15 @@
 
 #include <png.h>
 
+#include <stdio.h>
+
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
 #include <vector>
+
+#include "host/fileio/AtomicFile.hpp"
 
 namespace nxtmap::emu {
 
@@ -30,30 +37,33 @@ bool Lcd::pixel(int x, int y) const {
 }
 
 bool Lcd::savePng(const std::string& path, int scale, std::string& error) const {
-    FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) { error = "cannot write " + path; return false; }
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-    png_infop info = png ? png_create_info_struct(png) : nullptr;
-    if (!png || !info || setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        std::fclose(f);
-        error = "PNG encoding failed for " + path;
-        return false;
-    }
+    // 8-bit grey, encoded in memory (scale 1..16: at most 1600 x 1024 bytes raw), then written whole
+    // or not at all: a failed write leaves `path` as it was.
+    if (scale < 1 || scale > 16) { error = "cannot write " + path + ": LCD scale must lie in 1..16"; return false; }
     const int w = kWidth * scale, h = kHeight * scale;
-    png_init_io(png, f);
-    png_set_IHDR(png, info, static_cast<png_uint_32>(w), static_cast<png_uint_32>(h), 8, PNG_COLOR_TYPE_GRAY,
-                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_write_info(png, info);
-    std::vector<png_byte> row(static_cast<size_t>(w));
+    std::vector<png_byte> grey(static_cast<size_t>(w) * static_cast<size_t>(h));
     for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) row[static_cast<size_t>(x)] = pixel(x / scale, y / scale) ? 0x20 : 0xC8;
-        png_write_row(png, row.data());
+        for (int x = 0; x < w; ++x) {
+            grey[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)] =
+                pixel(x / scale, y / scale) ? 0x20 : 0xC8;
+        }
     }
-    png_write_end(png, nullptr);
-    png_destroy_write_struct(&png, &info);
-    std::fclose(f);
-    return true;
+    png_image png;
+    std::memset(&png, 0, sizeof png);
+    png.version = PNG_IMAGE_VERSION;
+    png.width = static_cast<png_uint_32>(w);
+    png.height = static_cast<png_uint_32>(h);
+    png.format = PNG_FORMAT_GRAY;
+    char* bytes = nullptr;
+    size_t size = 0;
+    FILE* memory = open_memstream(&bytes, &size);
+    const bool encoded = memory && png_image_write_to_stdio(&png, memory, 0, grey.data(), 0, nullptr) != 0;
+    if (memory) std::fclose(memory);
+    std::unique_ptr<char, decltype(&std::free)> owned(bytes, &std::free);
+    png_image_free(&png);
+    if (!encoded) { error = "PNG encoding failed for " + path; return false; }
+    fileio::AtomicFile out;
+    return out.open(path, error) && out.write(bytes, size, error) && out.commit(error);
 }
 
 }  // namespace nxtmap::emu

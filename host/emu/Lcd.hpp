@@ -17,7 +17,8 @@ public:
     bool pixel(int x, int y) const;  // x 0..99, y 0..63
     bool displayOn() const { return on_; }
     uint64_t dataBytes() const { return dataBytes_; }
-    // Writes a PNG (scale x scale pixels per LCD pixel); false with a reason in error.
+    // Writes a PNG (scale x scale pixels per LCD pixel, scale 1..16) whole or not at all (fileio::AtomicFile);
+    // false with the path and the reason in error, `path` then untouched.
     bool savePng(const std::string& path, int scale, std::string& error) const;
 
 private:

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "host/fileio/AtomicFile.hpp"
 #include "host/sim/PgmImage.hpp"
 #include "host/sim/World.hpp"
 
@@ -93,25 +94,6 @@ std::string readLabels(const YAML::Node& node, OccupancyMap& map) {
     }
   }
   return "";
-}
-
-// Writes `data` to a temporary file next to `path`; sets tmpPath. False on failure.
-bool writeTemp(const std::string& path, const std::string& data, std::string& tmpPath, std::string& error) {
-  tmpPath = path + ".tmp" + std::to_string(::getpid());
-  std::ofstream out(tmpPath, std::ios::binary | std::ios::trunc);
-  if (!out) {
-    error = path + ": cannot write (folder missing or not writable)";
-    return false;
-  }
-  out.write(data.data(), static_cast<std::streamsize>(data.size()));
-  out.close();
-  if (!out) {
-    std::error_code ec;
-    fs::remove(tmpPath, ec);
-    error = path + ": write failed";
-    return false;
-  }
-  return true;
 }
 
 std::string pgmBytes(const OccupancyMap& map) {
@@ -270,25 +252,11 @@ bool saveRosMap(const OccupancyMap& map, const std::string& yamlPath, std::strin
   }
   const std::string imageName = pgmNameFor(yamlPath);
   const std::string pgmPath = (fs::path(yamlPath).parent_path() / imageName).string();
-  std::string pgmTmp;
-  std::string yamlTmp;
-  if (!writeTemp(pgmPath, pgmBytes(map), pgmTmp, error)) return false;
-  if (!writeTemp(yamlPath, yamlText(map, imageName), yamlTmp, error)) {
-    std::error_code ec;
-    fs::remove(pgmTmp, ec);
-    return false;
-  }
-  std::error_code ec;
-  fs::rename(pgmTmp, pgmPath, ec);
-  if (!ec) fs::rename(yamlTmp, yamlPath, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(pgmTmp, ignored);
-    fs::remove(yamlTmp, ignored);
-    error = yamlPath + ": cannot move the saved files into place (" + ec.message() + ")";
-    return false;
-  }
-  return true;
+  // Both targets are checked (and their temporary files made) before either is written.
+  fileio::AtomicFile pgm, yaml;
+  if (!pgm.open(pgmPath, error) || !yaml.open(yamlPath, error)) return false;
+  return pgm.write(pgmBytes(map), error) && yaml.write(yamlText(map, imageName), error) && pgm.commit(error) &&
+         yaml.commit(error);
 }
 
 }  // namespace nxtmap::mapio

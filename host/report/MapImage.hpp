@@ -28,7 +28,8 @@ struct RgbImage {
 // The picture of the run's belief over its world's extent.
 RgbImage renderMapImage(const mapping::MappingRun& run, const MapImageOptions& options = {});
 
-// Writes an RGB PNG; false with `error` set when the file cannot be written.
+// Writes an RGB PNG whole or not at all (fileio::AtomicFile: a temporary file beside `path`, renamed over it);
+// false with `error` set (the path and the reason) when it cannot be written, `path` then untouched.
 bool writePng(const std::string& path, const RgbImage& image, std::string& error);
 
 // renderMapImage + writePng.

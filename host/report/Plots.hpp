@@ -2,7 +2,8 @@
 //   fig5_3.png  learning time vs occupancy (runs occ*) and vs start position (runs start*)
 //   fig5_4.png  grid occupancy detection vs occupancy and vs start position
 //   fig5_6.png  sensor usage vs occupancy and vs start position
-// Each figure is written as <name>.gp + <name>-occ.dat + <name>-start.dat and rendered by gnuplot.
+// Each figure is written as <name>.gp + <name>-occ.dat + <name>-start.dat and rendered by gnuplot; every file
+// is written whole or not at all (fileio::AtomicFile), the PNG replaced only when gnuplot succeeded.
 #pragma once
 #include <string>
 #include <vector>
