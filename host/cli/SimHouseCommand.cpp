@@ -59,6 +59,8 @@ int runSimHouse(const SimHouseOptions& o) {
     throw CliError("sim-house: --start COL,ROW is required for this world");
   }
   checkStart(world, config.startCol, config.startRow, "");
+  std::string saveError;  // --save is checked before the run, so a bad target does not cost the mapping run
+  if (!o.save.empty() && !network::checkHouseTarget(o.save, saveError)) throw CliError(saveError);
 
   house::HouseMapper mapper(world, config);
   mapper.run();

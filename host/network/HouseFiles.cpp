@@ -11,6 +11,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "host/fileio/AtomicFile.hpp"
+#include "host/fileio/StagingDirectory.hpp"
 #include "host/mapio/MapFiles.hpp"
 
 namespace nxtmap::network {
@@ -64,17 +66,6 @@ std::string houseYaml(const HouseNetwork& h, double res) {
   return o.str();
 }
 
-bool writeFile(const std::string& path, const std::string& data, std::string& error) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << data;
-  out.flush();
-  if (!out) {
-    error = path + ": cannot write the file";
-    return false;
-  }
-  return true;
-}
-
 // Reads [x, y] pairs.
 bool readCells(const YAML::Node& n, std::vector<Cell>& out) {
   if (!n || !n.IsSequence()) return false;
@@ -110,6 +101,22 @@ mapio::OccupancyMap mergedOccupancyMap(const HouseNetwork& house, double res) {
   return toOccupancyMap(house.merged(), res);
 }
 
+bool checkHouseTarget(const std::string& dir, std::string& error) {
+  const fs::path target = fileio::directoryTarget(dir);
+  std::error_code ec;
+  if (fs::exists(target, ec)) {
+    if (!fs::is_directory(target, ec)) {
+      error = dir + ": exists and is not a directory";
+      return false;
+    }
+    if (!fs::exists(target / kHouseFileName, ec) && !fs::is_empty(target, ec)) {
+      error = dir + ": is neither empty nor a house directory (no " + kHouseFileName + "): not overwritten";
+      return false;
+    }
+  }
+  return fileio::checkDirectoryTarget(dir, error);
+}
+
 bool saveHouse(const HouseNetwork& house, double res, const std::string& dir, std::string& error) {
   if (!house.validate(error)) {
     error = "cannot save the house: " + error;
@@ -121,48 +128,19 @@ bool saveHouse(const HouseNetwork& house, double res, const std::string& dir, st
       return false;
     }
   }
-  const fs::path target = fs::path(dir).lexically_normal();
-  std::error_code ec;
-  const bool exists = fs::exists(target, ec);
-  if (exists) {
-    if (!fs::is_directory(target, ec)) {
-      error = dir + ": exists and is not a directory";
-      return false;
-    }
-    if (!fs::exists(target / kHouseFileName, ec) && !fs::is_empty(target, ec)) {
-      error = dir + ": is neither empty nor a house directory (no " + kHouseFileName + "): not overwritten";
-      return false;
-    }
-  }
-  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  const fs::path stage = parent / (target.filename().string() + ".saving-" + std::to_string(::getpid()));
-  fs::remove_all(stage, ec);
-  if (!fs::create_directories(stage, ec)) {
-    error = stage.string() + ": cannot create the directory (" + ec.message() + ")";
-    return false;
-  }
-  const auto abandon = [&](const std::string& why) {
-    std::error_code ignore;
-    fs::remove_all(stage, ignore);
-    error = why;
-    return false;
-  };
+  if (!checkHouseTarget(dir, error)) return false;
+  // Every file goes into a staging sibling (each flushed to the disk), which then replaces the target whole.
+  fileio::StagingDirectory stage;
+  if (!stage.open(dir, error)) return false;
   for (const RoomNode& r : house.rooms()) {
-    std::string e;
-    if (!mapio::saveRosMap(toOccupancyMap(r.map, res), (stage / (r.name + ".yaml")).string(), e)) return abandon(e);
-  }
-  std::string e;
-  if (!writeFile((stage / kHouseFileName).string(), houseYaml(house, res), e)) return abandon(e);
-  if (exists) {
-    // Swap the new house in with one atomic exchange, then drop the old one.
-    if (::renameat2(AT_FDCWD, stage.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) != 0) {
-      return abandon(dir + ": cannot replace the house directory");
+    if (!mapio::saveRosMap(toOccupancyMap(r.map, res), (stage.path() / (r.name + ".yaml")).string(), error)) {
+      return false;
     }
-  } else if (::rename(stage.c_str(), target.c_str()) != 0) {
-    return abandon(dir + ": cannot create the house directory");
   }
-  fs::remove_all(stage, ec);  // the old house, after an exchange
-  return true;
+  if (!fileio::writeFileAtomically((stage.path() / kHouseFileName).string(), houseYaml(house, res), error)) {
+    return false;
+  }
+  return stage.commit(error);
 }
 
 HouseLoad loadHouse(const std::string& dir) {

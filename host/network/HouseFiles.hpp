@@ -5,10 +5,12 @@
 // Cells in house.yaml are room-frame cells (x right, y up, the room's entrance at 0,0); a room map's
 // lower-left pixel is cell (origin_x / resolution, origin_y / resolution) of its room.
 //
-// Saving is atomic for the whole house: everything is written into a fresh sibling directory,
-// which then replaces the target in one rename (an exchange when the target exists), so a crash
-// leaves either the old house or the new one, never a mixture. An existing target must be a house
-// directory (holding house.yaml) or empty. Loading checks everything before it returns a network:
+// Saving is atomic for the whole house (fileio::StagingDirectory): everything is written into a fresh
+// sibling directory DIR.saving-<pid>, every file flushed to the disk, which then replaces the target in
+// one rename (an exchange when the target exists), so a crash leaves either the old house or the new
+// one, never a mixture; the next save removes staging directories of killed saves. An existing target
+// must be a house directory (holding house.yaml) or empty; the folder it is in must exist (nothing else
+// is created); "DIR/" names DIR. Loading checks everything before it returns a network:
 // a missing room map, a bad gateway or broken YAML gives one message and no network.
 #pragma once
 
@@ -32,6 +34,9 @@ struct HouseLoad {
 bool validRoomName(const std::string& name);
 
 bool saveHouse(const HouseNetwork& house, double resolutionM, const std::string& dir, std::string& error);
+// The checks saveHouse makes of `dir` before it writes anything (for a caller to refuse early): an existing
+// target is a house directory or empty, the folder it goes in exists. False with `error` set.
+bool checkHouseTarget(const std::string& dir, std::string& error);
 HouseLoad loadHouse(const std::string& dir);
 
 // A room map as a ROS-style map (col right, row down; origin = the lower-left cell in metres).
