@@ -76,7 +76,9 @@ struct HelloReplyMsg {
   uint8_t gridHeightLog2 = 6;
   uint16_t mapEpoch = 0;
   uint16_t maxPathCells = kMaxPathCells;
-  bool freshSession = false;   // the session is new to the brick (e.g. it restarted): the PC clears its copy
+  // The session is new to the brick (it restarted, or another PC's session came between): the
+  // PC clears its copy, and does not resend a command it sent before (it may have run).
+  bool freshSession = false;
 };
 size_t encodeHelloReply(const HelloReplyMsg& m, Payload& out);
 bool decodeHelloReply(const uint8_t* p, size_t n, HelloReplyMsg& out);

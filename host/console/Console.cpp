@@ -163,6 +163,10 @@ std::string Console::startPath(const std::vector<Cell>& path, const std::string&
 std::string Console::poll() {
   std::string out;
   out.swap(notes_);
+  if (!runner_.with([](link::Session& s) { return s.takeUnconfirmed(); }).empty()) {
+    out += "the brick did not know this console any more (it restarted, or another console talked to it): the "
+           "command sent last may not have run; it is not sent again\n";
+  }
   out += pollRooms();
   out += pollUpload();
   out += pollGoal();

@@ -74,6 +74,22 @@ std::vector<RoomChange> Session::takeRoomChanges() {
   return out;
 }
 
+std::vector<UnconfirmedCommand> Session::takeUnconfirmed() {
+  std::vector<UnconfirmedCommand> out;
+  out.swap(unconfirmed_);
+  return out;
+}
+
+// The brick answered as a fresh session: it no longer knows which of our sequence numbers it ran.
+// A command that went out before may have run; sending it again could run it twice.
+void Session::forgetTransmittedCommands() {
+  while (!outbox_.empty() && outbox_.front().transmitted) {
+    unconfirmed_.push_back(UnconfirmedCommand{outbox_.front().op, outbox_.front().seq});
+    outbox_.pop_front();
+    ++counters_.commandsUnconfirmed;
+  }
+}
+
 void Session::setPoseFromBrick(const Pose& p) {
   if (pose_ && pose_->cell == p.cell && pose_->heading == p.heading) return;
   posePrevious_ = pose_;
@@ -159,6 +175,7 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
       received_.reset();
       roomId_.reset();   // nor its room counter (it may have restarted)
       roomEpoch_.reset();
+      forgetTransmittedCommands();
     }
     hello_ = reply;
     connected_ = true;
@@ -283,6 +300,7 @@ std::vector<uint8_t> Session::transmit(uint32_t nowMs) {
         if (o.sent) ++counters_.commandRetries;
         else ++counters_.commandsSent;
         o.sent = true;
+        o.transmitted = true;
         o.sentMs = nowMs;
         append(out, o.op, o.seq, o.payload);
       }

@@ -3,6 +3,13 @@
 // the MirrorMap equal to the brick's grid (applying and acknowledging map deltas), sends
 // commands one at a time until each is acknowledged (the same sequence number every time, so
 // the brick runs it once), and starts over with Hello after linkLost().
+//
+// A command runs at most once, and exactly once while the brick knows this session: the
+// session id stays the same for the Session's life (one console run), so after a reconnect the
+// brick still holds the sequence numbers it ran and a resent command whose acknowledgement was
+// lost is only acknowledged. A brick that answers the Hello as a fresh session has forgotten them
+// (it restarted, or another console talked to it in between): a command sent before and never
+// acknowledged may or may not have run, and is not sent again but reported (takeUnconfirmed()).
 #pragma once
 #include <cstdint>
 #include <deque>
@@ -34,6 +41,14 @@ struct SessionCounters {
   uint64_t commandRetries = 0;     // repeated transmissions
   uint64_t commandsAcknowledged = 0;
   uint64_t connects = 0;           // HelloReplies that opened the session
+  uint64_t commandsUnconfirmed = 0;  // sent, never acknowledged, and the brick forgot the session
+};
+
+// A command that was sent but never acknowledged when the brick answered as a fresh session: it
+// may have run before the brick forgot it; it is not sent again.
+struct UnconfirmedCommand {
+  protocol::Op op;
+  uint16_t seq;
 };
 
 // The brick went into another room (NewRoom, or a Status with another room id): the room it
@@ -87,6 +102,8 @@ class Session {
   const std::optional<uint16_t>& roomId() const { return roomId_; }
   // Room changes since the last call, oldest first.
   std::vector<RoomChange> takeRoomChanges();
+  // Commands given up since the last call because the brick forgot this session (see above).
+  std::vector<UnconfirmedCommand> takeUnconfirmed();
   const std::optional<uint16_t>& batteryMillivolts() const { return battery_; }
   const std::optional<uint16_t>& legoBatteryMillivolts() const { return legoBattery_; }
   const std::optional<protocol::HelloReplyMsg>& hello() const { return hello_; }
@@ -101,7 +118,8 @@ class Session {
     protocol::Op op;
     uint16_t seq;
     protocol::Payload payload;
-    bool sent = false;
+    bool sent = false;         // on the current connection
+    bool transmitted = false;  // on any connection: it may have reached the brick
     uint32_t sentMs = 0;
   };
   uint16_t enqueue(protocol::Op op, const protocol::Payload& payload);
@@ -109,6 +127,7 @@ class Session {
   void append(std::vector<uint8_t>& out, protocol::Op op, uint16_t seq, const protocol::Payload& payload);
   void noteRoom(uint16_t id);
   void setPoseFromBrick(const Pose& p);
+  void forgetTransmittedCommands();
 
   SessionConfig config_;
   protocol::FrameDecoder decoder_;
@@ -143,6 +162,7 @@ class Session {
   SessionCounters counters_;
   uint32_t lastMapChangeMs_ = 0;
   std::vector<uint16_t> acknowledgedSeqs_;
+  std::vector<UnconfirmedCommand> unconfirmed_;
 };
 
 }  // namespace nxtmap::link
