@@ -1,11 +1,160 @@
 #include "host/network/HouseNetwork.hpp"
 
 #include <algorithm>
-#include <climits>
 #include <deque>
+#include <optional>
 #include <set>
+#include <string>
+#include <tuple>
+
+#include "host/mapio/OccupancyMap.hpp"
+#include "host/network/CellBox.hpp"
+#include "host/network/HouseLimits.hpp"
 
 namespace nxtmap::network {
+
+namespace {
+
+// A room's box in its own frame: its map's box, or the one cell (minX, minY) for a map with no cells
+// yet (a house file holds such a room as that one unknown cell).
+CellBox roomBox(const RoomMap& m) {
+  return CellBox{m.minX(), m.minY(), std::max(m.minX(), m.maxX()), std::max(m.minY(), m.maxY())};
+}
+
+// The room's box in the house frame. Precondition: the box's corners fit a Cell.
+CellBox houseBox(const RoomNode& r) {
+  const CellBox b = roomBox(r.map);
+  const Cell lo = r.toHouse.apply(Cell{static_cast<int16_t>(b.minX), static_cast<int16_t>(b.minY)});
+  const Cell hi = r.toHouse.apply(Cell{static_cast<int16_t>(b.maxX), static_cast<int16_t>(b.maxY)});
+  return CellBox{std::min<int>(lo.x, hi.x), std::min<int>(lo.y, hi.y), std::max<int>(lo.x, hi.x),
+                 std::max<int>(lo.y, hi.y)};
+}
+
+std::string cellText(Cell c) { return "[" + std::to_string(c.x) + ", " + std::to_string(c.y) + "]"; }
+
+std::string boxText(const CellBox& b) {
+  return "cells " + std::to_string(b.minX) + ".." + std::to_string(b.maxX) + " x " + std::to_string(b.minY) + ".." +
+         std::to_string(b.maxY);
+}
+
+bool withinCoordinates(int v) { return v >= -kMaxCoordCells && v <= kMaxCoordCells; }
+
+bool validNames(const std::vector<RoomNode>& rooms, std::string& error) {
+  if (rooms.size() > static_cast<size_t>(kMaxRooms)) {
+    error = std::to_string(rooms.size()) + " rooms, more than " + std::to_string(kMaxRooms);
+    return false;
+  }
+  std::set<std::string> names;
+  for (const RoomNode& r : rooms) {
+    if (r.name.empty()) {
+      error = "a room has no name";
+      return false;
+    }
+    if (!names.insert(r.name).second) {
+      error = "two rooms are named '" + r.name + "'";
+      return false;
+    }
+  }
+  return true;
+}
+
+// Each room's box and pose within the coordinate range, and all maps together within kMaxRoomCells.
+bool validRooms(const std::vector<RoomNode>& rooms, std::string& error) {
+  const std::string range = std::to_string(-kMaxCoordCells) + ".." + std::to_string(kMaxCoordCells);
+  long cells = 0;
+  for (const RoomNode& r : rooms) {
+    const std::string which = "room '" + r.name + "'";
+    const CellBox b = roomBox(r.map);
+    if (!withinCoordinates(b.minX) || !withinCoordinates(b.minY) || !withinCoordinates(b.maxX) ||
+        !withinCoordinates(b.maxY)) {
+      error = which + ": its map (" + boxText(b) + ") reaches beyond cells " + range + " of the room's frame";
+      return false;
+    }
+    if (!withinCoordinates(r.toHouse.x()) || !withinCoordinates(r.toHouse.y())) {
+      error = which + ": to_house x, y (" + std::to_string(r.toHouse.x()) + ", " + std::to_string(r.toHouse.y()) +
+              ") must lie within " + range + " cells";
+      return false;
+    }
+    cells += static_cast<long>(r.map.width()) * r.map.height();
+    if (cells > kMaxRoomCells) {
+      error = "the room maps hold more than " + std::to_string(kMaxRoomCells) + " cells together";
+      return false;
+    }
+  }
+  return true;
+}
+
+// The rooms' boxes in the house frame span at most kMaxHouseSide cells a side. Precondition:
+// validRooms (so every house-frame cell fits a Cell).
+bool validExtent(const std::vector<RoomNode>& rooms, std::string& error) {
+  if (rooms.empty()) return true;
+  CellBox all = houseBox(rooms.front());
+  for (const RoomNode& r : rooms) all = all.united(houseBox(r));
+  if (all.width() > kMaxHouseSide || all.height() > kMaxHouseSide) {
+    error = "the rooms span " + std::to_string(all.width()) + " x " + std::to_string(all.height()) +
+            " cells in the house frame, more than " + std::to_string(kMaxHouseSide) +
+            " a side (rooms placed too far apart: see their to_house and map origins)";
+    return false;
+  }
+  return true;
+}
+
+bool validLabels(const std::vector<RoomNode>& rooms, std::string& error) {
+  for (const RoomNode& r : rooms) {
+    const CellBox b = roomBox(r.map);
+    for (const auto& [name, c] : r.labels) {
+      if (!mapio::OccupancyMap::validLabelName(name)) {
+        error = "room '" + r.name + "': label name '" + name + "' is not 1-64 of A-Z a-z 0-9 _ - starting with a letter";
+        return false;
+      }
+      if (!b.contains(c)) {
+        error = "room '" + r.name + "': label '" + name + "' at " + cellText(c) + " lies outside the room's map (" +
+                boxText(b) + ")";
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool validGateways(const std::vector<RoomNode>& rooms, const std::vector<Gateway>& gateways, std::string& error) {
+  const int n = static_cast<int>(rooms.size());
+  for (size_t i = 0; i < gateways.size(); ++i) {
+    const Gateway& g = gateways[i];
+    const std::string which = "gateway " + std::to_string(i);
+    if (g.roomA < 0 || g.roomA >= n || g.roomB < 0 || g.roomB >= n) {
+      error = which + " names a room that does not exist";
+      return false;
+    }
+    if (g.roomA == g.roomB) {
+      error = which + " joins room '" + rooms[static_cast<size_t>(g.roomA)].name + "' to itself";
+      return false;
+    }
+    if (g.cellsA.empty() || g.cellsA.size() != g.cellsB.size()) {
+      error = which + " needs the same, non-zero number of cells on both sides";
+      return false;
+    }
+    for (const auto& [room, cells, side] : {std::make_tuple(g.roomA, &g.cellsA, "cells_a"),
+                                            std::make_tuple(g.roomB, &g.cellsB, "cells_b")}) {
+      const RoomNode& r = rooms[static_cast<size_t>(room)];
+      const CellBox near = roomBox(r.map).grown(kGatewayReachCells);
+      for (const Cell c : *cells) {
+        if (!near.contains(c)) {
+          error = which + ": " + side + " " + cellText(c) + " lies outside room '" + r.name + "' (more than " +
+                  std::to_string(kGatewayReachCells) + " cells from its map, " + boxText(roomBox(r.map)) + ")";
+          return false;
+        }
+        if (r.map.at(c) == CellState::Occupied) {
+          error = which + " has a cell that its room's map holds as a wall";
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace
 
 int HouseNetwork::addRoom(RoomNode room) {
   rooms_.push_back(std::move(room));
@@ -22,43 +171,8 @@ int HouseNetwork::roomIndex(const std::string& name) const {
 }
 
 bool HouseNetwork::validate(std::string& error) const {
-  std::set<std::string> names;
-  for (const RoomNode& r : rooms_) {
-    if (r.name.empty()) {
-      error = "a room has no name";
-      return false;
-    }
-    if (!names.insert(r.name).second) {
-      error = "two rooms are named '" + r.name + "'";
-      return false;
-    }
-  }
-  const int n = static_cast<int>(rooms_.size());
-  for (size_t i = 0; i < gateways_.size(); ++i) {
-    const Gateway& g = gateways_[i];
-    const std::string which = "gateway " + std::to_string(i);
-    if (g.roomA < 0 || g.roomA >= n || g.roomB < 0 || g.roomB >= n) {
-      error = which + " names a room that does not exist";
-      return false;
-    }
-    if (g.roomA == g.roomB) {
-      error = which + " joins room '" + rooms_[static_cast<size_t>(g.roomA)].name + "' to itself";
-      return false;
-    }
-    if (g.cellsA.empty() || g.cellsA.size() != g.cellsB.size()) {
-      error = which + " needs the same, non-zero number of cells on both sides";
-      return false;
-    }
-    const auto blocked = [&](int room, const std::vector<Cell>& cells) {
-      const RoomMap& m = rooms_[static_cast<size_t>(room)].map;
-      return std::any_of(cells.begin(), cells.end(), [&](Cell c) { return m.at(c) == CellState::Occupied; });
-    };
-    if (blocked(g.roomA, g.cellsA) || blocked(g.roomB, g.cellsB)) {
-      error = which + " has a cell that its room's map holds as a wall";
-      return false;
-    }
-  }
-  return true;
+  return validNames(rooms_, error) && validRooms(rooms_, error) && validExtent(rooms_, error) &&
+         validLabels(rooms_, error) && validGateways(rooms_, gateways_, error);
 }
 
 std::vector<int> HouseNetwork::roomRoute(int from, int to) const {
@@ -95,23 +209,17 @@ std::vector<int> HouseNetwork::gatewaysBetween(int a, int b) const {
 }
 
 RoomMap HouseNetwork::merged() const {
-  if (rooms_.empty()) return RoomMap(0, 0, 0, 0);
-  int minX = INT_MAX, minY = INT_MAX, maxX = INT_MIN, maxY = INT_MIN;
+  std::optional<CellBox> all;
   for (const RoomNode& r : rooms_) {
-    const RoomMap& m = r.map;
-    if (m.width() == 0 || m.height() == 0) continue;
-    for (const Cell corner : {Cell{static_cast<int16_t>(m.minX()), static_cast<int16_t>(m.minY())},
-                              Cell{static_cast<int16_t>(m.maxX()), static_cast<int16_t>(m.maxY())}}) {
-      const Cell h = r.toHouse.apply(corner);
-      minX = std::min<int>(minX, h.x);
-      minY = std::min<int>(minY, h.y);
-      maxX = std::max<int>(maxX, h.x);
-      maxY = std::max<int>(maxY, h.y);
-    }
+    if (r.map.width() == 0 || r.map.height() == 0) continue;
+    all = all ? all->united(houseBox(r)) : houseBox(r);
   }
-  if (minX > maxX) return RoomMap(0, 0, 0, 0);
-  const int w = maxX - minX + 1, h = maxY - minY + 1;
-  std::vector<int> freeVotes(static_cast<size_t>(w * h), 0), occVotes(static_cast<size_t>(w * h), 0);
+  if (!all) return RoomMap(0, 0, 0, 0);
+  const int w = all->width(), h = all->height();
+  const auto index = [&](Cell hc) {
+    return static_cast<size_t>(hc.y - all->minY) * static_cast<size_t>(w) + static_cast<size_t>(hc.x - all->minX);
+  };
+  std::vector<int> freeVotes(static_cast<size_t>(w) * static_cast<size_t>(h), 0), occVotes(freeVotes.size(), 0);
   for (const RoomNode& r : rooms_) {
     const RoomMap& m = r.map;
     for (int y = m.minY(); y <= m.maxY(); ++y) {
@@ -119,19 +227,17 @@ RoomMap HouseNetwork::merged() const {
         const Cell c{static_cast<int16_t>(x), static_cast<int16_t>(y)};
         const CellState s = m.at(c);
         if (s == CellState::Unknown) continue;
-        const Cell hc = r.toHouse.apply(c);
-        const size_t i = static_cast<size_t>((hc.y - minY) * w + (hc.x - minX));
-        (s == CellState::Free ? freeVotes : occVotes)[i]++;
+        (s == CellState::Free ? freeVotes : occVotes)[index(r.toHouse.apply(c))]++;
       }
     }
   }
-  RoomMap out(minX, minY, w, h);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const size_t i = static_cast<size_t>(y * w + x);
+  RoomMap out(all->minX, all->minY, w, h);
+  for (int y = all->minY; y <= all->maxY; ++y) {
+    for (int x = all->minX; x <= all->maxX; ++x) {
+      const Cell hc{static_cast<int16_t>(x), static_cast<int16_t>(y)};
+      const size_t i = index(hc);
       if (freeVotes[i] == 0 && occVotes[i] == 0) continue;
-      out.set(Cell{static_cast<int16_t>(minX + x), static_cast<int16_t>(minY + y)},
-              occVotes[i] >= freeVotes[i] ? CellState::Occupied : CellState::Free);
+      out.set(hc, occVotes[i] >= freeVotes[i] ? CellState::Occupied : CellState::Free);
     }
   }
   return out;

@@ -38,9 +38,12 @@ class HouseNetwork {
   const std::vector<Gateway>& gateways() const { return gateways_; }
   int roomIndex(const std::string& name) const;  // -1 when absent
 
-  // Checks the network: unique non-empty room names, gateways joining two different existing
-  // rooms with the same non-zero number of cells on each side, every gateway cell free or
-  // unknown in its room... False with a message naming the first problem.
+  // Checks the network: unique non-empty room names; the bounds of HouseLimits (room count, every
+  // room's box and to_house within the coordinate range, all maps' cells, the house frame's extent);
+  // labels inside their room's map; gateways joining two different existing rooms with the same
+  // non-zero number of cells on each side, every gateway cell within kGatewayReachCells of its
+  // room's map and free or unknown there. False with a message naming the first problem. A room
+  // whose map has no cells yet counts as the one cell (minX, minY), as a house file holds it.
   bool validate(std::string& error) const;
 
   // The rooms to pass from `from` to `to` (both included) over gateways, fewest gateways first;

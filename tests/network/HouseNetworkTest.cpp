@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <functional>
+
+#include "host/network/HouseLimits.hpp"
 #include "host/network/HouseNetwork.hpp"
 
 namespace nxtmap::network {
@@ -80,6 +83,62 @@ TEST(HouseNetwork, ValidationNamesTheProblem) {
   wall.addGateway(Gateway{0, 1, {C(3, 2)}, {C(0, 0)}});
   EXPECT_FALSE(wall.validate(e));
   EXPECT_NE(e.find("wall"), std::string::npos);
+}
+
+// The bounds of HouseLimits hold for a network built in memory too (saveHouse validates it), so a
+// house that saves also loads.
+TEST(HouseNetwork, ValidationKeepsTheHouseWithinItsLimits) {
+  struct Case {
+    std::string what;
+    std::function<void(HouseNetwork&)> change;
+    std::string message;  // "" when the network stays valid
+  };
+  const std::vector<Case> cases = {
+      {"a room's box beyond the coordinate range", [](HouseNetwork& n) { n.rooms()[1].map = RoomMap(8190, 0, 4, 3); },
+       "room 'room1': its map (cells 8190..8193 x 0..2) reaches beyond cells -8192..8192"},
+      {"to_house beyond the coordinate range",
+       [](HouseNetwork& n) { n.rooms()[2].toHouse = RoomTransform::fromParts(2147483647, 0, 0); },
+       "room 'room2': to_house x, y (2147483647, 0) must lie within -8192..8192 cells"},
+      {"rooms far apart", [](HouseNetwork& n) { n.rooms()[2].toHouse = RoomTransform::fromParts(0, -8000, 1); },
+       "the rooms span 8 x 8006 cells in the house frame, more than 2048 a side"},
+      {"rooms at the largest extent", [](HouseNetwork& n) { n.rooms()[2].toHouse = RoomTransform::fromParts(2044, 0, 0); },
+       ""},
+      {"a label outside its room", [](HouseNetwork& n) { n.rooms()[0].labels["chair"] = C(4, 0); },
+       "room 'room0': label 'chair' at [4, 0] lies outside the room's map (cells 0..3 x 0..2)"},
+      {"a label on its room's edge", [](HouseNetwork& n) { n.rooms()[0].labels["chair"] = C(3, 2); }, ""},
+      {"a gateway cell far outside its room", [](HouseNetwork& n) { n.addGateway(Gateway{0, 2, {C(30000, 1)}, {C(0, 0)}}); },
+       "gateway 2: cells_a [30000, 1] lies outside room 'room0' (more than 8 cells from its map, cells 0..3 x 0..2)"},
+      {"a gateway cell nine cells out", [](HouseNetwork& n) { n.addGateway(Gateway{0, 2, {C(1, 1)}, {C(-9, 0)}}); },
+       "gateway 2: cells_b [-9, 0] lies outside room 'room2'"},
+      {"a gateway cell eight cells out", [](HouseNetwork& n) { n.addGateway(Gateway{0, 2, {C(1, 1)}, {C(0, -8)}}); }, ""},
+      {"a room with no map yet holds its entrance",
+       [](HouseNetwork& n) {
+         RoomNode r;
+         r.name = "new";
+         r.toHouse = RoomTransform::fromParts(12, 0, 0);
+         n.addGateway(Gateway{2, n.addRoom(r), {C(3, 1)}, {C(0, 0)}});
+       },
+       ""},
+      {"too many rooms",
+       [](HouseNetwork& n) {
+         for (int i = 0; i < kMaxRooms; ++i) n.addRoom(RoomNode{"extra" + std::to_string(i), RoomMap(0, 0, 1, 1), {}, {}});
+       },
+       "259 rooms, more than 256"},
+      {"too many cells",
+       [](HouseNetwork& n) {
+         for (int i = 0; i < 5; ++i) n.addRoom(RoomNode{"big" + std::to_string(i), RoomMap(0, 0, 2048, 2048), {}, {}});
+       },
+       "the room maps hold more than 16777216 cells together"},
+  };
+  for (const Case& c : cases) {
+    HouseNetwork n = threeRooms();
+    c.change(n);
+    std::string e;
+    EXPECT_EQ(n.validate(e), c.message.empty()) << c.what << ": " << e;
+    if (!c.message.empty()) {
+      EXPECT_NE(e.find(c.message), std::string::npos) << c.what << ": " << e;
+    }
+  }
 }
 
 TEST(HouseNetwork, MergedMapVotesAndOccupiedWinsTies) {
