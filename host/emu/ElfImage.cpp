@@ -3,8 +3,8 @@
 #include <elf.h>
 
 #include <cstring>
-#include <fstream>
-#include <iterator>
+
+#include "host/sim/InputFile.hpp"
 
 namespace nxtmap::emu {
 
@@ -24,9 +24,13 @@ struct ElfLoader {
             result.error = path + ": " + why;
             return result;
         };
-        std::ifstream in(path, std::ios::binary);
-        if (!in) return fail("cannot open the firmware file");
-        std::vector<uint8_t> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        std::string readError;
+        const std::optional<std::string> bytes = sim::readInputFile(path, kMaxElfBytes, "firmware file", readError);
+        if (!bytes) {
+            result.error = readError;
+            return result;
+        }
+        const std::vector<uint8_t> file(bytes->begin(), bytes->end());
         Elf32_Ehdr eh{};
         if (!readAt(file, 0, eh) || std::memcmp(eh.e_ident, ELFMAG, SELFMAG) != 0) return fail("not an ELF file");
         if (eh.e_ident[EI_CLASS] != ELFCLASS32 || eh.e_ident[EI_DATA] != ELFDATA2LSB || eh.e_machine != EM_ARM)

@@ -2,6 +2,7 @@
 // at its load address (LMA), so .data's initial image sits in flash. Symbols from .symtab by name.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -15,11 +16,15 @@ constexpr uint32_t kFlashBase = 0x00100000;
 constexpr uint32_t kFlashSize = 0x00040000;  // 256 KiB
 constexpr uint32_t kRamBase = 0x00200000;
 constexpr uint32_t kRamSize = 0x00010000;    // 64 KiB
+// Largest firmware file read, bytes, checked before reading (only regular files are read): 32 times the
+// flash, room for the symbols and debug information of an image that fits it (ours, built with -g: 0.6 MiB).
+constexpr size_t kMaxElfBytes = size_t{8} << 20;
 
 struct ElfLoad;
 
 class ElfImage {
 public:
+    // A regular file of at most kMaxElfBytes; otherwise, or when it is no ARM ELF that fits the chip, an error.
     static ElfLoad load(const std::string& path);
 
     const std::vector<uint8_t>& flash() const { return flash_; }  // kFlashSize bytes, 0xFF where unused

@@ -1,14 +1,14 @@
 #include "host/sim/PgmImage.hpp"
 
+#include "host/sim/InputFile.hpp"
+
 #include <cctype>
-#include <fstream>
-#include <iterator>
 
 namespace nxtmap::sim {
 
 namespace {
 
-constexpr long kMaxPixelsPerSide = 4096;
+constexpr long kMaxPixelsPerSide = kMaxPgmSide;
 
 // Walks the header: whitespace-separated tokens, '#' comments running to the end of the line.
 class HeaderReader {
@@ -57,12 +57,9 @@ private:
 }  // namespace
 
 std::optional<PgmImage> readPgm(const std::string& path, std::string& error) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = path + ": cannot open image file";
-        return std::nullopt;
-    }
-    const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::optional<std::string> file = readInputFile(path, kMaxPgmBytes, "image file", error);
+    if (!file) return std::nullopt;
+    const std::string& data = *file;
     HeaderReader header(data);
     const std::string magic = header.token();
     if (magic != "P5" && magic != "P2") {
