@@ -6,7 +6,7 @@ namespace nxtmap {
 // How a range in centimetres relates to cells. All distances in whole centimetres.
 // The sensor sits `mountCm` ahead of the robot's cell centre; readings are measured from it.
 struct RangeGeometry {
-  int16_t cellCm = 10;   // cell edge: 10 cm in the published experiments, 20 cm on the NXT
+  int16_t cellCm = 10;   // cell edge: 10 cm in the published experiments, 20 cm on the NXT; >= 1 (a divisor)
   int16_t minCm = 5;     // readings at or below are "too near" (published: 5 cm)
   int16_t maxCm = 100;   // readings above are "too far" (published: 1 m)
   int16_t mountCm = 0;   // sensor face ahead of the cell centre

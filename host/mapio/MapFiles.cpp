@@ -1,12 +1,10 @@
 #include "host/mapio/MapFiles.hpp"
 
 #include <unistd.h>
-#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -14,7 +12,8 @@
 #include <system_error>
 
 #include "host/fileio/AtomicFile.hpp"
-#include "host/sim/PgmImage.hpp"
+#include "host/sim/MovingAiFile.hpp"
+#include "host/sim/RosMapFile.hpp"
 #include "host/sim/World.hpp"
 
 namespace nxtmap::mapio {
@@ -37,63 +36,27 @@ std::string formatDouble(double v) {
   return std::string(buf, res.ptr);
 }
 
-bool readFlag(const YAML::Node& node, bool& out) {
-  const std::string s = node.as<std::string>();
-  if (s == "0" || s == "false" || s == "False") {
-    out = false;
-    return true;
-  }
-  if (s == "1" || s == "true" || s == "True") {
-    out = true;
-    return true;
-  }
-  return false;
-}
-
-// A finite double from a scalar; false if it is not one.
-bool readDouble(const YAML::Node& node, double& out) {
-  if (!node.IsScalar()) return false;
-  try {
-    out = node.as<double>();
-  } catch (const YAML::Exception&) {
-    return false;
-  }
-  return std::isfinite(out);
-}
-
-bool readInt(const YAML::Node& node, int& out) {
-  if (!node.IsScalar()) return false;
-  const std::string s = node.Scalar();
-  const auto res = std::from_chars(s.data(), s.data() + s.size(), out);
-  return res.ec == std::errc() && res.ptr == s.data() + s.size();
-}
-
-// Reads `labels:` into the map; returns an error text or "".
-std::string readLabels(const YAML::Node& node, OccupancyMap& map) {
-  if (node.IsNull()) return "";
-  if (!node.IsMap()) return "labels must be a mapping NAME: [col, row] or NAME: [col, row, width, height]";
-  for (const auto& entry : node) {
-    if (!entry.first.IsScalar()) return "label names must be plain words";
-    const std::string name = entry.first.Scalar();
-    if (!OccupancyMap::validLabelName(name)) {
-      return "label name '" + name + "' is not valid (a letter, then letters, digits, '_' or '-', at most 64)";
+// Adds the file's labels to the map; returns an error text or "".
+std::string addLabels(const std::vector<sim::RosMapLabel>& labels, OccupancyMap& map) {
+  for (const sim::RosMapLabel& l : labels) {
+    if (!OccupancyMap::validLabelName(l.name)) {
+      return "label name '" + l.name + "' is not valid (a letter, then letters, digits, '_' or '-', at most 64)";
     }
-    const YAML::Node& v = entry.second;
-    CellBlock b;
-    if (!v.IsSequence() || (v.size() != 2 && v.size() != 4)) {
-      return "label '" + name + "' must be [col, row] or [col, row, width, height]";
-    }
-    int values[4] = {0, 0, 1, 1};
-    for (size_t i = 0; i < v.size(); ++i) {
-      if (!readInt(v[i], values[i])) return "label '" + name + "' has a value that is not a whole number";
-    }
-    b = CellBlock{values[0], values[1], values[2], values[3]};
-    if (!map.setLabel(name, b)) {
-      return "label '" + name + "' lies outside the " + std::to_string(map.width()) + "x" +
+    if (!map.setLabel(l.name, CellBlock{l.col, l.row, l.width, l.height})) {
+      return "label '" + l.name + "' lies outside the " + std::to_string(map.width()) + "x" +
              std::to_string(map.height()) + " map (or has a size below 1)";
     }
   }
   return "";
+}
+
+Occupancy occupancyOf(sim::RosCell cell) {
+  switch (cell) {
+    case sim::RosCell::Free: return Occupancy::Free;
+    case sim::RosCell::Occupied: return Occupancy::Occupied;
+    case sim::RosCell::Unknown: return Occupancy::Unknown;
+  }
+  return Occupancy::Unknown;
 }
 
 std::string pgmBytes(const OccupancyMap& map) {
@@ -140,84 +103,33 @@ std::string yamlText(const OccupancyMap& map, const std::string& imageName) {
 }  // namespace
 
 MapLoad loadMovingAiMap(const std::string& path) {
-  const sim::WorldLoad w = sim::World::loadMovingAi(path);
-  if (!w.world) return fail(w.error);
-  return MapLoad{fromWorld(*w.world), {}};
+  std::string error;
+  const std::optional<sim::MovingAiGrid> grid = sim::readMovingAiFile(path, error);
+  if (!grid) return fail(error);
+  OccupancyMap map(grid->width, grid->height, Occupancy::Free, sim::kMovingAiResolutionM);
+  for (int r = 0; r < grid->height; ++r) {
+    for (int c = 0; c < grid->width; ++c) {
+      const size_t i = static_cast<size_t>(r) * static_cast<size_t>(grid->width) + static_cast<size_t>(c);
+      if (grid->blocked[i] != 0) map.set(c, r, Occupancy::Occupied);
+    }
+  }
+  return MapLoad{std::move(map), {}};
 }
 
 MapLoad loadRosMap(const std::string& yamlPath) {
-  std::string imageName;
-  double resolution = 0.0;
-  double occupiedThresh = 0.0;
-  double freeThresh = 0.0;
-  bool negate = false;
-  MapOrigin origin;
-  YAML::Node doc;
-  try {
-    doc = YAML::LoadFile(yamlPath);
-  } catch (const YAML::BadFile&) {
-    return fail(yamlPath + ": cannot open file");
-  } catch (const YAML::Exception& e) {
-    return fail(yamlPath + ": " + e.what());
-  }
-  if (!doc.IsMap()) return fail(yamlPath + ": not a YAML mapping of map_server keys");
-  for (const char* key : {"image", "resolution", "occupied_thresh", "free_thresh"}) {
-    if (!doc[key]) return fail(yamlPath + ": missing key '" + key + "'");
-  }
-  if (!doc["image"].IsScalar() || doc["image"].Scalar().empty()) return fail(yamlPath + ": 'image' must name a file");
-  imageName = doc["image"].Scalar();
-  if (!readDouble(doc["resolution"], resolution) || !(resolution > 0.0)) {
-    return fail(yamlPath + ": 'resolution' must be a number > 0");
-  }
-  if (!readDouble(doc["occupied_thresh"], occupiedThresh) || !readDouble(doc["free_thresh"], freeThresh)) {
-    return fail(yamlPath + ": 'occupied_thresh' and 'free_thresh' must be numbers");
-  }
-  if (!(freeThresh >= 0.0 && freeThresh <= occupiedThresh && occupiedThresh <= 1.0)) {
-    return fail(yamlPath + ": thresholds must satisfy 0 <= free_thresh <= occupied_thresh <= 1");
-  }
-  if (doc["negate"] && (!doc["negate"].IsScalar() || !readFlag(doc["negate"], negate))) {
-    return fail(yamlPath + ": 'negate' must be 0 or 1");
-  }
-  if (doc["origin"]) {
-    const YAML::Node o = doc["origin"];
-    if (!o.IsSequence() || o.size() != 3 || !readDouble(o[0], origin.x) || !readDouble(o[1], origin.y) ||
-        !readDouble(o[2], origin.yaw)) {
-      return fail(yamlPath + ": 'origin' must be [x, y, yaw] (three numbers)");
-    }
-  }
-  if (doc["mode"]) {
-    const std::string mode = doc["mode"].IsScalar() ? doc["mode"].Scalar() : "?";
-    if (mode != "trinary") return fail(yamlPath + ": mode '" + mode + "' not supported (only trinary)");
-  }
-
-  fs::path imagePath(imageName);
-  if (imagePath.is_relative()) imagePath = fs::path(yamlPath).parent_path() / imagePath;
   std::string error;
-  const std::optional<sim::PgmImage> img = sim::readPgm(imagePath.string(), error);
-  if (!img) return fail(yamlPath + ": " + error);
-  if (img->width > OccupancyMap::kMaxSide || img->height > OccupancyMap::kMaxSide) {
-    return fail(yamlPath + ": image larger than " + std::to_string(OccupancyMap::kMaxSide) + " pixels a side");
-  }
-
-  OccupancyMap map(img->width, img->height, Occupancy::Unknown, resolution, origin);
-  for (int r = 0; r < img->height; ++r) {
-    for (int c = 0; c < img->width; ++c) {
-      const size_t i = static_cast<size_t>(r) * static_cast<size_t>(img->width) + static_cast<size_t>(c);
-      const double shade = static_cast<double>(img->pixels[i]) / img->maxval;
-      const double occ = negate ? shade : 1.0 - shade;
-      Occupancy s = Occupancy::Unknown;
-      if (occ > occupiedThresh) {
-        s = Occupancy::Occupied;
-      } else if (occ < freeThresh) {
-        s = Occupancy::Free;
-      }
-      map.set(c, r, s);
+  const std::optional<sim::RosMapFile> file = sim::readRosMapFile(yamlPath, error);
+  if (!file) return fail(error);
+  const MapOrigin origin{file->originX, file->originY, file->originYaw};
+  OccupancyMap map(file->width, file->height, Occupancy::Unknown, file->resolutionM, origin);
+  for (int r = 0; r < file->height; ++r) {
+    for (int c = 0; c < file->width; ++c) {
+      const size_t i = static_cast<size_t>(r) * static_cast<size_t>(file->width) + static_cast<size_t>(c);
+      map.set(c, r, occupancyOf(file->cells[i]));
     }
   }
-  if (doc["labels"]) {
-    const std::string labelError = readLabels(doc["labels"], map);
-    if (!labelError.empty()) return fail(yamlPath + ": " + labelError);
-  }
+  const std::string labelError = addLabels(file->labels, map);
+  if (!labelError.empty()) return fail(yamlPath + ": " + labelError);
   return MapLoad{std::move(map), {}};
 }
 

@@ -1,15 +1,18 @@
 // MapFiles: reading and writing OccupancyMap files.
 //
-// Reading
+// Reading (one reader per format, shared with the simulator's worlds: host/sim/MovingAiFile, RosMapFile)
 //  - Moving AI ".map" (type octile): '.' and 'G' free; '@', 'O', 'T', 'S', 'W' occupied; no unknown cells.
-//    Resolution 0.10 m, origin (0, 0, 0). CRLF line endings tolerated. (Parsed by sim::World::loadMovingAi.)
+//    Resolution 0.10 m, origin (0, 0, 0). CRLF line endings tolerated.
 //  - ROS map_server YAML + the PGM image it names (P5 or P2, path relative to the YAML), trinary mode:
 //    shade = pixel / maxval; occ = negate ? shade : 1 - shade; occ > occupied_thresh -> Occupied,
 //    occ < free_thresh -> Free, otherwise Unknown. Image row 0 is the map's top row (row 0).
 //    Required keys: image, resolution, occupied_thresh, free_thresh; optional: origin [x, y, yaw] (default 0s),
-//    negate (0/1, default 0), mode (only "trinary"), labels. Unknown keys are ignored.
+//    negate (0/1, default 0), mode (only "trinary"), labels. Unknown keys are ignored. Resolution 0.001 .. 100 m,
+//    origin x, y within +-100 km, yaw within +-6.3 rad (sim::RosMapFile's bounds).
 //  - Optional `labels:` mapping in the YAML, NAME: [col, row] (one cell) or NAME: [col, row, width, height]
 //    (a block of cells, top-left cell first); cells count like the map's (col right, row down from the top).
+//  - Only regular files are read, each of a bounded size checked before reading (sim::InputFile): a .map at
+//    most 18 MiB, a YAML 1 MiB, a PGM 100 MiB.
 //
 // Writing (ROS map_server YAML + PGM, like map_saver, 'trinary' mode)
 //  - The PGM is P5, 8 bit: Occupied 0, Free 254, Unknown 205; the YAML says negate 0, occupied_thresh 0.65,

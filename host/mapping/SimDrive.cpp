@@ -9,6 +9,8 @@ namespace nxtmap::mapping {
 
 RangeGeometry sonarGeometryFor(const sim::World& world, double minRangeM, double rangeM, double beamHalfAngleDeg) {
   RangeGeometry g;
+  // A loaded world's cells are whole centimetres, World::kMinCellCm..kMaxCellCm (World::resolutionProblem),
+  // so cellCm, a divisor in RangeGeometry, is never 0 and fits its int16_t.
   g.cellCm = static_cast<int16_t>(std::lround(world.resolutionM() * 100.0));
   g.minCm = static_cast<int16_t>(std::lround(minRangeM * 100.0));
   g.maxCm = static_cast<int16_t>(std::lround(rangeM * 100.0));

@@ -3,6 +3,12 @@
 #include "tests/sim/SimTestSupport.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <limits>
 
 namespace nxtmap::sim {
 namespace {
@@ -143,7 +149,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadYaml{"noResolution", "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n", "missing key 'resolution'"},
         BadYaml{"noImage", "!resolution: 0.1\noccupied_thresh: 0.65\nfree_thresh: 0.196\n", "missing key 'image'"},
         BadYaml{"scaleMode", "mode: scale\nresolution: 0.1\noccupied_thresh: 0.65\nfree_thresh: 0.196\n", "only trinary"},
-        BadYaml{"zeroResolution", "resolution: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n", "resolution must be > 0"},
+        BadYaml{"zeroResolution", "resolution: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n", "'resolution' must be a number > 0"},
         BadYaml{"badThresholds", "resolution: 0.1\noccupied_thresh: 0.1\nfree_thresh: 0.5\n", "thresholds"},
         BadYaml{"missingImage", "!image: nothere.pgm\nresolution: 0.1\noccupied_thresh: 0.65\nfree_thresh: 0.2\n", "cannot open image"},
         BadYaml{"notPgm", "!image: notpgm.pgm\nresolution: 0.1\noccupied_thresh: 0.65\nfree_thresh: 0.2\n", "not a PGM"},
@@ -159,6 +165,102 @@ TEST(WorldLoadDispatch, ByExtension) {
     const WorldLoad missing = World::load(dataPath("absent.map"));
     EXPECT_FALSE(missing.world);
     EXPECT_NE(missing.error.find("cannot open"), std::string::npos) << missing.error;
+}
+
+// The simulator's cells: whole centimetres, 4 .. 169 cm (World::kMinCellCm .. kMaxCellCm).
+TEST(WorldResolution, OnlyWholeCentimetresTheRobotCanMapAreAccepted) {
+    for (double ok : {0.04, 0.05, 0.1, 0.15, 0.2, 0.5, 1.0, 1.69}) {
+        EXPECT_EQ(World::resolutionProblem(ok), "") << ok;
+    }
+    for (double bad : {0.0, -0.1, 0.004, 0.01, 0.03, 0.025, 0.105, 0.125, 1.7, 1e-300, 1e300,
+                       std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+        const std::string why = World::resolutionProblem(bad);
+        EXPECT_NE(why.find("is not one the simulator can use: its cells must be a whole number of centimetres, "
+                           "4 .. 169 cm (0.04 .. 1.69 m)"),
+                  std::string::npos)
+            << bad << ": " << why;
+    }
+}
+
+struct BadWorldFile {
+    const char* label;
+    std::function<std::string(const TempDir&)> make;  // writes the files, returns the world's path
+    const char* expected;
+};
+
+std::function<std::string(const TempDir&)> rosWorld(const std::string& resolution) {
+    return [resolution](const TempDir& d) {
+        return d.write("w.yaml", "image: " + dataPath("room6x4.pgm") + "\nresolution: " + resolution +
+                                     "\norigin: [0, 0, 0]\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
+    };
+}
+
+std::function<std::string(const TempDir&)> linkTo(const std::string& target, const std::string& name) {
+    return [target, name](const TempDir& d) {
+        std::filesystem::create_symlink(target, d.path(name));
+        return d.path(name);
+    };
+}
+
+class WorldLoadBad : public ::testing::TestWithParam<BadWorldFile> {};
+
+TEST_P(WorldLoadBad, IsRefusedAtOnceWithAClearMessage) {
+    TempDir tmp("world_bad");
+    const std::string path = GetParam().make(tmp);
+    const auto start = std::chrono::steady_clock::now();
+    const WorldLoad res = World::load(path);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
+    EXPECT_FALSE(res.world);
+    EXPECT_EQ(res.error.rfind(path + ": ", 0), 0u) << res.error;
+    EXPECT_NE(res.error.find(GetParam().expected), std::string::npos) << res.error;
+}
+
+const char* const kNotSimulated = "is not one the simulator can use";
+
+INSTANTIATE_TEST_SUITE_P(
+    Variants, WorldLoadBad,
+    ::testing::Values(
+        BadWorldFile{"resolutionTiny", rosWorld("0.004"), "resolution 0.004 m is not one the simulator can use"},
+        BadWorldFile{"resolutionCentimetre", rosWorld("0.01"), kNotSimulated},
+        BadWorldFile{"resolutionBetweenCentimetres", rosWorld("0.125"), "resolution 0.125 m"},
+        BadWorldFile{"resolutionTooCoarse", rosWorld("2"), kNotSimulated},
+        BadWorldFile{"resolutionDenormal", rosWorld("1e-300"), "'resolution' 1e-300 is out of range"},
+        BadWorldFile{"resolutionHuge", rosWorld("1e300"), "'resolution' 1e+300 is out of range"},
+        BadWorldFile{"resolutionNegative", rosWorld("-0.1"), "'resolution' must be a number > 0"},
+        BadWorldFile{"resolutionNan", rosWorld(".nan"), "'resolution' must be a number > 0"},
+        BadWorldFile{"mapDevZero", linkTo("/dev/zero", "zero.map"), "is a device, not a regular file"},
+        BadWorldFile{"yamlDevZero", linkTo("/dev/zero", "zero.yaml"), "is a device, not a regular file"},
+        BadWorldFile{"mapFolder",
+                     [](const TempDir& d) {
+                         std::filesystem::create_directory(d.path("room.map"));
+                         return d.path("room.map");
+                     },
+                     "is a directory, not a file"},
+        BadWorldFile{"mapHuge",
+                     [](const TempDir& d) {
+                         const std::string path = d.write("huge.map", "type octile\n");
+                         EXPECT_EQ(::truncate(path.c_str(), static_cast<off_t>(kMaxMovingAiBytes) + 1), 0);
+                         return path;
+                     },
+                     "larger than 18 MiB, the largest file accepted"}),
+    [](const ::testing::TestParamInfo<BadWorldFile>& p) { return std::string(p.param.label); });
+
+TEST(WorldLoad, AMovingAiWorldNeedsAResolutionTheSimulatorCanUse) {
+    const WorldLoad res = World::loadMovingAi(dataPath("small.map"), 0.004);
+    EXPECT_FALSE(res.world);
+    EXPECT_NE(res.error.find(kNotSimulated), std::string::npos) << res.error;
+}
+
+TEST(WorldLoad, TheLargestMovingAiFileIsRead) {
+    TempDir tmp("world_large");
+    // 4096 rows of 4096 cells with CRLF line ends: the largest world, within kMaxMovingAiBytes.
+    std::string text = "type octile\r\nheight 4096\r\nwidth 4096\r\nmap\r\n";
+    const std::string row = std::string(4096, '.') + "\r\n";
+    for (int r = 0; r < 4096; ++r) text += row;
+    ASSERT_LE(text.size(), kMaxMovingAiBytes);
+    const WorldLoad res = World::load(tmp.write("big.map", text));
+    ASSERT_TRUE(res.world) << res.error;
+    EXPECT_EQ(res.world->width(), 4096);
 }
 
 TEST(WorldFromRows, MarksBlockedAndPadsShortRows) {
