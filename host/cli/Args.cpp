@@ -101,12 +101,13 @@ double checkRangeM(double rangeM) {
   return rangeM;
 }
 
-std::string countProblem(const std::string& text, uint64_t max) {
+std::string countProblem(const std::string& text, uint64_t min, uint64_t max) {
   const std::string t = trim(text);
-  const std::string expected = "must be a whole number 0.." + std::to_string(max) + ", not '" + text + "'";
+  const std::string expected =
+      "must be a whole number " + std::to_string(min) + ".." + std::to_string(max) + ", not '" + text + "'";
   if (t.empty() || t.find_first_not_of("0123456789") != std::string::npos || t.size() > 19) return expected;
-  if (std::strtoull(t.c_str(), nullptr, 10) > max) return expected;
-  return "";
+  const uint64_t v = std::strtoull(t.c_str(), nullptr, 10);
+  return v < min || v > max ? expected : "";
 }
 
 sim::World loadWorld(const std::string& path) {

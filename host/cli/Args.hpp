@@ -27,8 +27,15 @@ std::vector<mapping::Strategy> parseStrategies(const std::string& text);
 // A trusted maximum range in metres: above the 5 cm minimum, within the sonar's reach.
 double checkRangeM(double rangeM);
 
+// "" when `text` is a count min..max in decimal digits (spaces around tolerated), otherwise why not: a check for
+// CLI11 options, run on the text before it is converted (CLI11 would take "-1" as the largest count).
+std::string countProblem(const std::string& text, uint64_t min, uint64_t max);
+
 // World::load, its error text on failure.
 sim::World loadWorld(const std::string& path);
+// The trusted range must cover 1.5 of the world's cells (RangeGeometry::freeCells() >= 1: the adjacent cell
+// wholly); otherwise no reading proves a neighbour free and the robot maps next to nothing.
+void checkRangeCoversCell(const sim::World& world, double rangeM);
 // The start must be a free cell inside the world.
 void checkStart(const sim::World& world, int col, int row, const std::string& where);
 

@@ -126,6 +126,7 @@ int runSim(const SimOptions& o) {
     if (!out.empty() && !fileio::resolveOutputTarget(out, outputError)) throw CliError(outputError);
   }
   const sim::World world = loadWorld(o.world);
+  checkRangeCoversCell(world, config.rangeM);
   checkStart(world, config.startCol, config.startRow, "");
 
   report::MapTextOptions textOptions;

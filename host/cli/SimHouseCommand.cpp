@@ -58,6 +58,7 @@ int runSimHouse(const SimHouseOptions& o) {
   } else if (!plan || !house::defaultStart(*plan, config.startCol, config.startRow)) {
     throw CliError("sim-house: --start COL,ROW is required for this world");
   }
+  checkRangeCoversCell(world, config.rangeM);
   checkStart(world, config.startCol, config.startRow, "");
   std::string saveError;  // --save is checked before the run, so a bad target does not cost the mapping run
   if (!o.save.empty() && !network::checkHouseTarget(o.save, saveError)) throw CliError(saveError);

@@ -44,13 +44,15 @@ struct RunOutput {
   std::string out, err;
 };
 
-// Runs `nxtmap <args>` (args already shell-quoted as needed) from the repository root.
-inline RunOutput runCli(const std::string& args) {
+// Runs `nxtmap <args>` (args already shell-quoted as needed) from the repository root. With killAfterS > 0 the
+// run is killed after that many seconds (coreutils timeout; the exit code is then 137).
+inline RunOutput runCli(const std::string& args, int killAfterS = 0) {
   static int counter = 0;
   TempDir tmp("run" + std::to_string(counter++));
   const std::string outPath = tmp.path("out"), errPath = tmp.path("err");
-  const std::string cmd = "cd " + shellQuote(NXTMAP_SOURCE_DIR) + " && " + shellQuote(NXTMAP_CLI_PATH) + " " + args +
-                          " > " + shellQuote(outPath) + " 2> " + shellQuote(errPath) + " < /dev/null";
+  const std::string limit = killAfterS > 0 ? "timeout --signal=KILL " + std::to_string(killAfterS) + " " : "";
+  const std::string cmd = "cd " + shellQuote(NXTMAP_SOURCE_DIR) + " && " + limit + shellQuote(NXTMAP_CLI_PATH) + " " +
+                          args + " > " + shellQuote(outPath) + " 2> " + shellQuote(errPath) + " < /dev/null";
   const int status = std::system(cmd.c_str());
   RunOutput r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
