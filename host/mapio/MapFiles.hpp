@@ -7,7 +7,7 @@
 //    shade = pixel / maxval; occ = negate ? shade : 1 - shade; occ > occupied_thresh -> Occupied,
 //    occ < free_thresh -> Free, otherwise Unknown. Image row 0 is the map's top row (row 0).
 //    Required keys: image, resolution, occupied_thresh, free_thresh; optional: origin [x, y, yaw] (default 0s),
-//    negate (0/1, default 0), mode (only "trinary"), labels. Unknown keys are ignored. Resolution 0.001 .. 100 m,
+//    negate (0/1, default 0), mode (only "trinary"), labels. Unknown keys are ignored. Resolution 0.01 .. 10 m,
 //    origin x, y within +-100 km, yaw within +-6.3 rad (sim::RosMapFile's bounds).
 //  - Optional `labels:` mapping in the YAML, NAME: [col, row] (one cell) or NAME: [col, row, width, height]
 //    (a block of cells, top-left cell first); cells count like the map's (col right, row down from the top).

@@ -23,10 +23,11 @@
 
 namespace nxtmap::sim {
 
-// A map resolution from 1 mm to 100 m per cell: finer or coarser is no map of a room or a house. With the
-// origin's bound it keeps the origin within +-1e8 cells of the map, far inside an int.
-constexpr double kMinResolutionM = 0.001;
-constexpr double kMaxResolutionM = 100.0;
+// A map resolution from 1 cm to 10 m per cell: the sonar reads whole centimetres, so a finer map holds
+// nothing our robot could make or use, and a cell coarser than 10 m is no map of a room or a house. With the
+// origin's bound it keeps the origin within +-1e7 cells of the map, far inside an int.
+constexpr double kMinResolutionM = 0.01;
+constexpr double kMaxResolutionM = 10.0;
 constexpr double kMaxOriginM = 100000.0;    // |origin x|, |origin y|, metres (100 km)
 constexpr double kMaxOriginYawRad = 6.3;    // |origin yaw|, radians (a whole turn either way)
 constexpr size_t kMaxRosYamlBytes = size_t{1} << 20;  // the YAML file, bytes (labels included)

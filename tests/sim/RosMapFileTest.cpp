@@ -67,8 +67,8 @@ TEST_P(RosMapFileBad, IsRefusedAtOnceWithAClearMessage) {
     EXPECT_EQ(error.find('\n'), std::string::npos) << error;
 }
 
-const char* const kResolutionNumber = "'resolution' must be a number > 0, in 0.001 .. 100 m per cell";
-const char* const kResolutionRange = "is out of range: it must be in 0.001 .. 100 m per cell";
+const char* const kResolutionNumber = "'resolution' must be a number > 0, in 0.01 .. 10 m per cell";
+const char* const kResolutionRange = "is out of range: it must be in 0.01 .. 10 m per cell";
 const char* const kOriginNumbers = "'origin' must be [x, y, yaw] (three numbers)";
 const char* const kOriginRange = "is out of range: x and y must lie within +-100000 m, yaw within +-6.3 rad";
 
@@ -82,9 +82,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadRos{"resolutionText", with("resolution: fine"), kResolutionNumber},
         BadRos{"resolutionList", with("resolution: [0.1]"), kResolutionNumber},
         BadRos{"resolutionDenormal", with("resolution: 1e-300"), kResolutionRange},
-        BadRos{"resolutionBelowAMillimetre", with("resolution: 0.0009"), kResolutionRange},
+        BadRos{"resolutionBelowACentimetre", with("resolution: 0.004"), kResolutionRange},
         BadRos{"resolutionHuge", with("resolution: 1e300"), kResolutionRange},
-        BadRos{"resolutionAbove100m", with("resolution: 100.5"), kResolutionRange},
+        BadRos{"resolutionAbove10m", with("resolution: 10.5"), kResolutionRange},
         BadRos{"originNan", with("origin: [.nan, 0.0, 0.0]"), kOriginNumbers},
         BadRos{"originInf", with("origin: [0.0, .inf, 0.0]"), kOriginNumbers},
         BadRos{"originYawNegInf", with("origin: [0.0, 0.0, -.inf]"), kOriginNumbers},
@@ -145,8 +145,8 @@ TEST(RosMapFile, AcceptsTheBoundsAndReadsTheCellsOriginAndLabels) {
         const char* origin;
         double res, x, y, yaw;
     };
-    for (const Good& g : {Good{"0.001", "[100000, -100000, 6.3]", 0.001, 100000, -100000, 6.3},
-                          Good{"100", "[-100000, 100000, -6.3]", 100, -100000, 100000, -6.3},
+    for (const Good& g : {Good{"0.01", "[100000, -100000, 6.3]", 0.01, 100000, -100000, 6.3},
+                          Good{"10", "[-100000, 100000, -6.3]", 10, -100000, 100000, -6.3},
                           Good{"0.05", "[-1.5, 2.25, 0.5]", 0.05, -1.5, 2.25, 0.5}}) {
         const std::string yaml = "image: m.pgm\nresolution: " + std::string(g.resolution) + "\norigin: " + g.origin +
                                  "\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\nlabels:\n  door: [1, 0]\n"

@@ -220,7 +220,8 @@ const char* const kNotSimulated = "is not one the simulator can use";
 INSTANTIATE_TEST_SUITE_P(
     Variants, WorldLoadBad,
     ::testing::Values(
-        BadWorldFile{"resolutionTiny", rosWorld("0.004"), "resolution 0.004 m is not one the simulator can use"},
+        BadWorldFile{"resolutionTiny", rosWorld("0.004"), "'resolution' 0.004 is out of range: it must be in 0.01 .. 10 m"},
+        BadWorldFile{"resolutionQuarterCentimetres", rosWorld("0.025"), "resolution 0.025 m is not one the simulator can use"},
         BadWorldFile{"resolutionCentimetre", rosWorld("0.01"), kNotSimulated},
         BadWorldFile{"resolutionBetweenCentimetres", rosWorld("0.125"), "resolution 0.125 m"},
         BadWorldFile{"resolutionTooCoarse", rosWorld("2"), kNotSimulated},
