@@ -23,10 +23,6 @@ mapio::Occupancy toOcc(CellState s) {
   return s == CellState::Free ? mapio::Occupancy::Free
                               : (s == CellState::Occupied ? mapio::Occupancy::Occupied : mapio::Occupancy::Unknown);
 }
-CellState fromOcc(mapio::Occupancy o) {
-  return o == mapio::Occupancy::Free ? CellState::Free
-                                     : (o == mapio::Occupancy::Occupied ? CellState::Occupied : CellState::Unknown);
-}
 
 std::string cellList(const std::vector<Cell>& cells) {
   std::ostringstream o;
@@ -64,18 +60,6 @@ std::string houseYaml(const HouseNetwork& h, double res) {
       << "    cells_b: " << cellList(g.cellsB) << "\n";
   }
   return o.str();
-}
-
-// Reads [x, y] pairs.
-bool readCells(const YAML::Node& n, std::vector<Cell>& out) {
-  if (!n || !n.IsSequence()) return false;
-  for (const YAML::Node& c : n) {
-    if (!c.IsSequence() || c.size() != 2) return false;
-    const int x = c[0].as<int>(), y = c[1].as<int>();
-    if (x < INT16_MIN || x > INT16_MAX || y < INT16_MIN || y > INT16_MAX) return false;
-    out.push_back(Cell{static_cast<int16_t>(x), static_cast<int16_t>(y)});
-  }
-  return true;
 }
 
 }  // namespace
@@ -141,132 +125,6 @@ bool saveHouse(const HouseNetwork& house, double res, const std::string& dir, st
     return false;
   }
   return stage.commit(error);
-}
-
-HouseLoad loadHouse(const std::string& dir) {
-  HouseLoad out;
-  const fs::path file = fs::path(dir) / kHouseFileName;
-  const std::string where = file.string();
-  std::error_code ec;
-  if (!fs::exists(file, ec)) {
-    out.error = where + ": no house file (is " + dir + " a house directory?)";
-    return out;
-  }
-  HouseNetwork net;
-  try {
-    const YAML::Node y = YAML::LoadFile(file.string());
-    if (!y.IsMap() || !y["format"] || y["format"].as<std::string>() != "nxtmap-house-1") {
-      out.error = where + ": not an nxtmap house file (format: nxtmap-house-1 expected)";
-      return out;
-    }
-    const double res = y["resolution"] ? y["resolution"].as<double>() : 0.0;
-    if (!(res > 0.0 && res <= 10.0)) {
-      out.error = where + ": resolution must be a number of metres above 0";
-      return out;
-    }
-    out.resolutionM = res;
-    const YAML::Node rooms = y["rooms"];
-    if (!rooms || !rooms.IsSequence() || rooms.size() == 0) {
-      out.error = where + ": 'rooms' must be a non-empty list";
-      return out;
-    }
-    for (const YAML::Node& r : rooms) {
-      RoomNode node;
-      node.name = r["name"] ? r["name"].as<std::string>() : "";
-      if (!validRoomName(node.name)) {
-        out.error = where + ": room name '" + node.name + "' is not 1-64 of A-Z a-z 0-9 _ - starting with a letter";
-        return out;
-      }
-      if (net.roomIndex(node.name) >= 0) {
-        out.error = where + ": two rooms are named '" + node.name + "'";
-        return out;
-      }
-      const std::string mapFile = r["map"] ? r["map"].as<std::string>() : "";
-      if (mapFile.empty() || mapFile.find('/') != std::string::npos) {
-        out.error = where + ": room '" + node.name + "' needs 'map', a file name in the house directory";
-        return out;
-      }
-      const mapio::MapLoad ml = mapio::loadRosMap((fs::path(dir) / mapFile).string());
-      if (!ml.map) {
-        out.error = where + ": room '" + node.name + "': " + ml.error;
-        return out;
-      }
-      const mapio::OccupancyMap& m = *ml.map;
-      const double ox = m.origin().x / res, oy = m.origin().y / res;
-      if (std::fabs(m.resolutionM() - res) > 1e-9 || std::fabs(ox - std::round(ox)) > 1e-6 ||
-          std::fabs(oy - std::round(oy)) > 1e-6 || m.origin().yaw != 0.0) {
-        out.error = where + ": room '" + node.name + "': its map's resolution or origin is not on the house's cell grid";
-        return out;
-      }
-      node.map = RoomMap(static_cast<int>(std::lround(ox)), static_cast<int>(std::lround(oy)), m.width(), m.height());
-      for (int row = 0; row < m.height(); ++row) {
-        for (int col = 0; col < m.width(); ++col) node.map.set(mapCellToRoom(node.map, col, row), fromOcc(m.at(col, row)));
-      }
-      const YAML::Node t = r["to_house"];
-      if (!t || !t.IsMap() || !t["x"] || !t["y"] || !t["quarter_turns_clockwise"]) {
-        out.error = where + ": room '" + node.name + "' needs to_house {x, y, quarter_turns_clockwise}";
-        return out;
-      }
-      const int q = t["quarter_turns_clockwise"].as<int>();
-      if (q < 0 || q > 3) {
-        out.error = where + ": room '" + node.name + "': quarter_turns_clockwise must be 0..3";
-        return out;
-      }
-      node.toHouse = RoomTransform::fromParts(t["x"].as<int>(), t["y"].as<int>(), q);
-      if (const YAML::Node labels = r["labels"]) {
-        if (!labels.IsMap()) {
-          out.error = where + ": room '" + node.name + "': labels must be a mapping NAME: [x, y]";
-          return out;
-        }
-        for (const auto& kv : labels) {
-          const std::string name = kv.first.as<std::string>();
-          const YAML::Node v = kv.second;
-          if (!mapio::OccupancyMap::validLabelName(name) || !v.IsSequence() || v.size() != 2) {
-            out.error = where + ": room '" + node.name + "': label '" + name + "' must be NAME: [x, y]";
-            return out;
-          }
-          node.labels[name] = Cell{static_cast<int16_t>(v[0].as<int>()), static_cast<int16_t>(v[1].as<int>())};
-        }
-      }
-      net.addRoom(std::move(node));
-    }
-    if (const YAML::Node gws = y["gateways"]) {
-      if (!gws.IsSequence()) {
-        out.error = where + ": 'gateways' must be a list";
-        return out;
-      }
-      for (size_t i = 0; i < gws.size(); ++i) {
-        const YAML::Node g = gws[i];
-        const std::string which = where + ": gateway " + std::to_string(i);
-        if (!g.IsMap() || !g["rooms"] || !g["rooms"].IsSequence() || g["rooms"].size() != 2) {
-          out.error = which + " needs rooms: [A, B]";
-          return out;
-        }
-        Gateway gw;
-        gw.roomA = net.roomIndex(g["rooms"][0].as<std::string>());
-        gw.roomB = net.roomIndex(g["rooms"][1].as<std::string>());
-        if (gw.roomA < 0 || gw.roomB < 0) {
-          out.error = which + " names a room that is not in the house";
-          return out;
-        }
-        if (!readCells(g["cells_a"], gw.cellsA) || !readCells(g["cells_b"], gw.cellsB)) {
-          out.error = which + ": cells_a and cells_b must be lists of [x, y]";
-          return out;
-        }
-        net.addGateway(std::move(gw));
-      }
-    }
-  } catch (const YAML::Exception& e) {
-    out.error = where + ": broken YAML (" + e.what() + ")";
-    return out;
-  }
-  std::string e;
-  if (!net.validate(e)) {
-    out.error = where + ": " + e;
-    return out;
-  }
-  out.network = std::move(net);
-  return out;
 }
 
 }  // namespace nxtmap::network

@@ -37,6 +37,9 @@ bool saveHouse(const HouseNetwork& house, double resolutionM, const std::string&
 // The checks saveHouse makes of `dir` before it writes anything (for a caller to refuse early): an existing
 // target is a house directory or empty, the folder it goes in exists. False with `error` set.
 bool checkHouseTarget(const std::string& dir, std::string& error);
+// Reads and checks a house directory (HouseReader.cpp): house.yaml only when it is a regular file of at
+// most kMaxHouseFileBytes; every number in it and in the room maps within HouseLimits (resolution
+// 0.001..10 m, cells and to_house within -8192..8192, the house at most 2048 cells a side, ...).
 HouseLoad loadHouse(const std::string& dir);
 
 // A room map as a ROS-style map (col right, row down; origin = the lower-left cell in metres).

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "host/network/HouseFiles.hpp"
+#include "host/network/HouseLimits.hpp"
 #include "tests/support/TempDir.hpp"
 
 namespace nxtmap::network {
@@ -153,10 +154,28 @@ TEST(HouseFiles, BrokenHousesGiveOneMessageAndNoNetwork) {
       {replaced("rooms: [hall, kitchen]", "rooms: [hall, hall]"), "to itself"},
       {replaced("cells_a: [[3, 0]]", "cells_a: [[3, 0], [3, 1]]"), "same, non-zero number"},
       {replaced("cells_a: [[3, 0]]", "cells_a: [[0, -1]]"), "wall"},
-      {replaced("cells_a: [[3, 0]]", "cells_a: [[3, \"x\"]]"), "broken YAML"},
+      {replaced("cells_a: [[3, 0]]", "cells_a: [[3, \"x\"]]"), "gateway 0: cells_a [0] y must be a whole number"},
       {replaced("quarter_turns_clockwise: 1", "quarter_turns_clockwise: 5"), "0..3"},
       {replaced("resolution: 0.1", "resolution: -1"), "resolution"},
       {replaced("name: kitchen", "name: hall"), "two rooms"},
+      // Numbers beyond the house's bounds (HouseLimits), each named.
+      {replaced("resolution: 0.1", "resolution: .nan"), "resolution must be a number of metres in 0.001..10"},
+      {replaced("resolution: 0.1", "resolution: 1e-300"), "resolution must be a number of metres in 0.001..10"},
+      {replaced("{x: 4, y: 0,", "{x: 2147483647, y: 0,"), "room 'kitchen': to_house x must be a whole number in -8192..8192"},
+      {replaced("{x: 4, y: 0,", "{x: 4, y: -8193,"), "room 'kitchen': to_house y must be a whole number in -8192..8192"},
+      {replaced("{x: 4, y: 0,", "{x: 1e300, y: 0,"), "room 'kitchen': to_house x must be a whole number"},
+      {replaced("{x: 4, y: 0,", "{x: 4.5, y: 0,"), "room 'kitchen': to_house x must be a whole number"},
+      {replaced("quarter_turns_clockwise: 1", "quarter_turns_clockwise: 4294967297"), "quarter_turns_clockwise"},
+      {replaced("chair: [1, 1]", "chair: [70000, 1]"), "room 'hall': label 'chair' x must be a whole number in -8192..8192"},
+      {replaced("chair: [1, 1]", "chair: [1, -99999999999]"), "label 'chair' y must be a whole number"},
+      {replaced("chair: [1, 1]", "chair: [40, 1]"), "label 'chair' at [40, 1] lies outside the room's map"},
+      {replaced("cells_a: [[3, 0]]", "cells_a: [[3, 70000]]"), "gateway 0: cells_a [0] y must be a whole number"},
+      {replaced("cells_b: [[0, -1]]", "cells_b: [[0, -1], [1e9, 0]]"), "gateway 0: cells_b [1] x must be a whole number"},
+      {replaced("cells_a: [[3, 0]]", "cells_a: [[3000, 0]]"), "gateway 0: cells_a [3000, 0] lies outside room 'hall'"},
+      {replaced("cells_b: [[0, -1]]", "cells_b: [[-11, -1]]"), "gateway 0: cells_b [-11, -1] lies outside room 'kitchen'"},
+      // Rooms placed far apart: every number in range, the house frame too wide to merge.
+      {replaced("{x: 4, y: 0,", "{x: 8000, y: 0,"), "the rooms span 8003 x 4 cells in the house frame, more than 2048"},
+      {replaced("{x: 0, y: 0,", "{x: -8192, y: 8192,"), "more than 2048 a side"},
   };
   for (const Case& c : cases) {
     const HouseLoad l = tryWith(c.text);
@@ -165,6 +184,48 @@ TEST(HouseFiles, BrokenHousesGiveOneMessageAndNoNetwork) {
     EXPECT_EQ(l.error.find('\n'), std::string::npos);
   }
   EXPECT_TRUE(tryWith(good).network);
+  // At the bounds: still a house.
+  EXPECT_TRUE(tryWith(replaced("{x: 4, y: 0,", "{x: 2000, y: 0,")).network);
+  EXPECT_TRUE(tryWith(replaced("cells_b: [[0, -1]]", "cells_b: [[-10, -1]]")).network);  // 8 cells beyond the map
+
+  // A room map whose origin puts it far from its room's entrance (a far origin once wrote outside the
+  // heap; one still in range built a 4 GB merged map).
+  const std::string hallMap = slurp(t.path("h/hall.yaml"));
+  const auto hallWith = [&](const std::string& origin) {
+    std::string s = hallMap;
+    const std::string from = "origin: [-0.1, -0.1, 0]";
+    const size_t at = s.find(from);
+    EXPECT_NE(at, std::string::npos);
+    std::ofstream(t.path("h/hall.yaml"), std::ios::binary | std::ios::trunc) << s.replace(at, from.size(), origin);
+    return loadHouse(t.path("h"));
+  };
+  const std::vector<Case> origins = {
+      {"origin: [4000, 0, 0]", "room 'hall': its map's origin [4000, 0] m lies beyond cells -8192..8192"},
+      {"origin: [0, -1e300, 0]", "room 'hall'"},
+      {"origin: [819.1, 0, 0]", "room 'hall': its map (5 x 4 cells from cell 8191, 0) reaches beyond cells -8192..8192"},
+      {"origin: [400, 0, 0]", "the rooms span"},
+      {"origin: [0.05, 0, 0]", "not on the house's cell grid"},
+  };
+  for (const Case& c : origins) {
+    const HouseLoad l = hallWith(c.text);
+    EXPECT_FALSE(l.network) << c.text;
+    EXPECT_NE(l.error.find(c.message), std::string::npos) << l.error;
+    EXPECT_EQ(l.error.find('\n'), std::string::npos);
+  }
+  EXPECT_TRUE(hallWith("origin: [-0.1, -0.1, 0]").network);
+
+  // house.yaml is read only as a regular file of at most 1 MiB; at most 256 rooms.
+  const HouseLoad big = tryWith(good + "# " + std::string(kMaxHouseFileBytes, 'x') + "\n");
+  EXPECT_FALSE(big.network);
+  EXPECT_NE(big.error.find("larger than 1 MiB, the largest house file accepted"), std::string::npos) << big.error;
+  std::string crowd = "format: nxtmap-house-1\nresolution: 0.1\nrooms:\n";
+  for (int i = 0; i <= kMaxRooms; ++i) crowd += "  - {name: r" + std::to_string(i) + ", map: hall.yaml}\n";
+  EXPECT_NE(tryWith(crowd).error.find("'rooms' lists 257 rooms, more than 256"), std::string::npos);
+  std::filesystem::remove(t.path("h/house.yaml"));
+  std::filesystem::create_directory(t.path("h/house.yaml"));
+  EXPECT_NE(loadHouse(t.path("h")).error.find("is a directory"), std::string::npos);
+  std::filesystem::remove(t.path("h/house.yaml"));
+  tryWith(good);
   std::filesystem::remove(t.path("h/hall.pgm"));
   EXPECT_FALSE(loadHouse(t.path("h")).network);
   EXPECT_NE(loadHouse(t.path("nowhere")).error.find("no house file"), std::string::npos);
