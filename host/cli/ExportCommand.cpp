@@ -107,6 +107,12 @@ int runExport(const ExportOptions& o) {
     if (!out.empty() && !fileio::resolveOutputTarget(out, outputError)) throw CliError(outputError);
   }
   const network::RoomMap merged = h.merged();
+  constexpr long kMaxPngPixels = 8192L * 8192;  // the picture's RGB buffer stays within 192 MiB
+  if (!o.png.empty() && static_cast<long>(merged.width()) * merged.height() * o.cellPx * o.cellPx > kMaxPngPixels) {
+    throw CliError("export: the house is " + std::to_string(merged.width()) + " x " + std::to_string(merged.height()) +
+                   " cells; at --cell-px " + std::to_string(o.cellPx) + " its picture would hold more than " +
+                   std::to_string(kMaxPngPixels) + " pixels: give a smaller --cell-px");
+  }
   if (!o.png.empty()) {
     writePngFile(h, merged, o.cellPx, o.png);
     std::cout << "wrote " << o.png << "\n";

@@ -6,6 +6,7 @@
 // y in metres grows upwards: row 0 holds the plan's highest y.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,7 +36,20 @@ struct HousePlanLoad {
   std::string error;  // names the file and the problem when plan is empty
 };
 
-// Reads and rasterises a HouseExpo JSON file; resolution in metres per cell (0.01 .. 1).
+// The bounds of an accepted plan. HouseExpo's plans have from a dozen to a few hundred outline points
+// and are a few tens of metres across at most. Rasterising takes O(rows x points + cells): at most
+// 4096 x 4096 edge tests and cells, well under a second.
+constexpr size_t kMaxPlanFileBytes = 1024 * 1024;  // the JSON file
+constexpr size_t kMaxPlanPoints = 4096;            // outline points in `verts`
+constexpr size_t kMaxPlanRoomBoxes = 256;          // boxes in `room_category`, all categories; also room_num's bound
+constexpr double kMaxPlanCoordM = 1000.0;          // every coordinate within -1000..1000 m
+constexpr double kMaxPlanSideM = 100.0;            // the outline's width and height, metres
+// The rasterised world is at most sim::World::kMaxSide cells a side as well (4096: 41 m at 0.01 m).
+
+// Reads and rasterises a HouseExpo JSON file; resolution in metres per cell (0.01 .. 1). The file must be
+// a regular file of at most kMaxPlanFileBytes; every number must be finite and within the bounds above;
+// a room box must overlap the outline's bounding box (it is clipped to the world); a room category is
+// 1..48 of [A-Za-z0-9_-] (it names a label); `id`, when given, 1..128 printable ASCII characters.
 HousePlanLoad loadHouseExpo(const std::string& path, double resolutionM = 0.10);
 // The same from the JSON text; `name` is used in messages and as the world's name.
 HousePlanLoad parseHouseExpo(const std::string& json, const std::string& name, double resolutionM = 0.10);
