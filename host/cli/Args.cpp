@@ -110,6 +110,14 @@ std::string countProblem(const std::string& text, uint64_t min, uint64_t max) {
   return v < min || v > max ? expected : "";
 }
 
+// 10^12 expansions take a search on the largest map (4096 x 4096 cells) days: a bigger number is no limit at
+// all, a typing error.
+std::string maxNodesProblem(const std::string& text) {
+  constexpr uint64_t kMaxNodesLimit = 1000000000000ULL;
+  const std::string problem = countProblem(text, 1, kMaxNodesLimit);
+  return problem.empty() ? problem : problem + " (leave it out for no limit)";
+}
+
 sim::World loadWorld(const std::string& path) {
   sim::WorldLoad load = sim::World::load(path);
   if (!load.world) throw CliError(load.error.empty() ? path + ": cannot load the world" : load.error);

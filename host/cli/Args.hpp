@@ -30,6 +30,8 @@ double checkRangeM(double rangeM);
 // "" when `text` is a count min..max in decimal digits (spaces around tolerated), otherwise why not: a check for
 // CLI11 options, run on the text before it is converted (CLI11 would take "-1" as the largest count).
 std::string countProblem(const std::string& text, uint64_t min, uint64_t max);
+// The check of --max-nodes (path, paths): 1..10^12 expansions, or the option left out for no limit.
+std::string maxNodesProblem(const std::string& text);
 
 // World::load, its error text on failure.
 sim::World loadWorld(const std::string& path);

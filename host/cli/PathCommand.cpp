@@ -17,9 +17,6 @@ namespace nxtmap::cli {
 namespace {
 
 constexpr int kAutoDrawSide = 200;  // --draw auto draws maps up to this many cells a side
-// --max-nodes: 1..10^12 expansions (10^12 take a search on the largest map, 4096 x 4096 cells, days: a bigger
-// number is no limit at all, a typing error). Without the option there is no limit.
-constexpr uint64_t kMaxNodesLimit = 1000000000000ULL;
 
 std::string cellText(plan::MapCell c) { return std::to_string(c.col) + "," + std::to_string(c.row); }
 
@@ -109,10 +106,7 @@ CLI::App* addPathCommand(CLI::App& app, PathOptions& o) {
   c->add_flag("--through-unknown", o.throughUnknown, "allow unknown cells (default: never used)");
   c->add_option("--draw", o.draw, "draw the map with the path: auto (up to 200 cells a side), always, never");
   c->add_option("--max-nodes", o.maxNodes, "give up after this many expanded nodes, 1..10^12 (default: no limit)")
-      ->check([](const std::string& text) {
-        const std::string problem = countProblem(text, 1, kMaxNodesLimit);
-        return problem.empty() ? problem : problem + " (leave it out for no limit)";
-      });
+      ->check(maxNodesProblem);
   return c;
 }
 

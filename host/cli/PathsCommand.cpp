@@ -33,7 +33,8 @@ CLI::App* addPathsCommand(CLI::App& app, PathsOptions& o) {
   c->add_option("--scen", o.scen, "Moving AI scenario file (.scen, version 1)")->required();
   c->add_option("--algo", o.algo, "seed, astar, jps, jps+ or dijkstra (default astar)");
   c->add_option("--csv", o.csv, "write one line per problem as CSV");
-  c->add_option("--max-nodes", o.maxNodes, "per problem: give up after this many expanded nodes (default: no limit)");
+  c->add_option("--max-nodes", o.maxNodes, "per problem: give up after this many expanded nodes, 1..10^12 (default: no limit)")
+      ->check(maxNodesProblem);
   return c;
 }
 

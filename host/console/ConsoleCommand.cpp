@@ -7,13 +7,17 @@
 namespace nxtmap::console {
 namespace {
 
-int parseCell(const std::string& s, const char* what) {
-  if (s.empty() || s.size() > 5) throw ConsoleError(std::string(what) + " '" + s + "' is not a cell number");
+// A whole number of at most 5 digits (0-99999): `what` names the field and `unit` what it counts.
+int parseWhole(const std::string& s, const char* what, const char* unit) {
+  const std::string wrong = std::string(what) + " '" + s + "' is not " + unit;
+  if (s.empty() || s.size() > 5) throw ConsoleError(wrong);
   for (char c : s) {
-    if (!std::isdigit(static_cast<unsigned char>(c))) throw ConsoleError(std::string(what) + " '" + s + "' is not a cell number (0, 1, 2, ...)");
+    if (!std::isdigit(static_cast<unsigned char>(c))) throw ConsoleError(wrong + " (0, 1, 2, ...)");
   }
   return std::stoi(s);
 }
+
+int parseCell(const std::string& s, const char* what) { return parseWhole(s, what, "a cell number"); }
 
 void expectArgs(const std::vector<std::string>& w, size_t n, const char* form) {
   if (w.size() != n) throw ConsoleError(std::string("usage: ") + form);
@@ -109,7 +113,7 @@ ConsoleCommand parseConsoleCommand(const std::string& line) {
     c.name = w[1];
     c.seconds = 600;
     if (w.size() == 3) {
-      c.seconds = parseCell(w[2], "seconds");
+      c.seconds = parseWhole(w[2], "wait: SECONDS", "a whole number of seconds");
       if (c.seconds < 1) throw ConsoleError("wait: SECONDS must be at least 1");
     }
   } else if (k == "help" || k == "?") {

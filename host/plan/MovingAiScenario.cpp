@@ -2,12 +2,16 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <iterator>
 #include <sstream>
 
+#include "host/sim/InputFile.hpp"
+
 namespace nxtmap::plan {
 namespace {
+
+// The largest scenario file read: Moving AI's biggest benchmark sets hold a few thousand problems of ~60 bytes.
+constexpr size_t kMaxScenarioBytes = 32u << 20;
 
 bool toInt(const std::string& s, int& out) {
   const auto res = std::from_chars(s.data(), s.data() + s.size(), out);
@@ -22,8 +26,10 @@ bool toDouble(const std::string& s, double& out) {
 }  // namespace
 
 ScenarioLoad loadScenario(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return ScenarioLoad{std::nullopt, path + ": cannot open file"};
+  std::string error;
+  const std::optional<std::string> bytes = sim::readInputFile(path, kMaxScenarioBytes, "scenario file", error);
+  if (!bytes) return ScenarioLoad{std::nullopt, error};
+  std::istringstream in(*bytes);
   std::vector<ScenarioProblem> problems;
   std::string line;
   int lineNo = 0;

@@ -62,6 +62,8 @@ TEST(Console, BadGoalsAndMalformedCommandsGetOneClearMessageAndTheRobotStays) {
       {"goto 3", "nxtmap: usage: goto C R  or  goto near LABEL"},
       {"goto -1 4", "nxtmap: column '-1' is not a cell number (0, 1, 2, ...)"},
       {"goto x y", "nxtmap: column 'x' is not a cell number (0, 1, 2, ...)"},
+      {"wait goal nan", "nxtmap: wait: SECONDS 'nan' is not a whole number of seconds (0, 1, 2, ...)"},
+      {"wait goal 1e300", "nxtmap: wait: SECONDS '1e300' is not a whole number of seconds (0, 1, 2, ...)"},
       {"label 9lives 1 1", "nxtmap: label 9lives: a name is 1..64 letters, digits, _ or -, starting with a letter"},
       {"fly away", "nxtmap: unknown command 'fly' (type help for the list)"},
       {"save", "nxtmap: usage: save DIR  or  save FILE.yaml"},
