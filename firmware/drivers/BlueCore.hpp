@@ -14,7 +14,13 @@ namespace nxtmap::fw {
 //   CONNECT_RESULT(1, handle) -> OPEN_STREAM(handle) -> BC4 CMD line (ADC6 > 0x200) -> ARM7_CMD
 //   (PA27) high = stream mode: from then on the UART carries the PC's byte stream, passed through
 //   raw (readByte / write); the telegram framing (NXT 2-byte length) is the caller's.
-//   The CMD line going low (link lost) -> ARM7_CMD low -> OPEN_PORT again (linkEpoch() counts it).
+//   The CMD line going low (link lost) -> the stream's unsent bytes dropped and the transmitter
+//   stopped, then ARM7_CMD low (so no stream byte reaches the module as part of a command) -> OPEN_PORT
+//   again (linkEpoch() counts it). A REQUEST_CONNECTION is taken while the port is being opened too:
+//   the module only sends it with the port open (a PC may dial in before PORT_OPEN_RESULT arrives).
+// Command-mode messages come back to back (36 bytes at most: 0.8 ms); a partial message that gets no
+// byte for kMessageGapMs is noise (e.g. the tail of a message cut by the switch from stream mode) and
+// the parser starts over at the next byte, so it never swallows the messages after it.
 // Received bytes arrive in the USART1 interrupt (onInterrupt, one RXRDY per byte) into a ring;
 // transmission uses the USART1 PDC from a transmit ring. poll() runs in the main loop.
 // Bus: read(addr), write(addr, value), address(pointer) = the bus address a PDC takes.
@@ -22,7 +28,8 @@ template <class Bus>
 class BlueCore {
  public:
   enum class State : uint8_t { Off, Resetting, WaitReset, OpenPort, Listening, Accepting, OpeningStream, Stream };
-  static constexpr uint32_t kResetMs = 100, kResetWaitMs = 5000, kReplyMs = 500, kStreamWaitMs = 2000;
+  static constexpr uint32_t kResetMs = 100, kResetWaitMs = 5000, kReplyMs = 500, kStreamWaitMs = 2000,
+                            kMessageGapMs = 20;
   static constexpr uint16_t kCmdThreshold = 0x200;
   static constexpr uint8_t kPin[4] = {'1', '2', '3', '4'};
 
@@ -75,12 +82,13 @@ class BlueCore {
     const uint16_t cmd = static_cast<uint16_t>(bus_.read(reg::kAdcCdr6) & 0x3FF);
     bus_.write(reg::kAdcCr, 2u);  // START the next conversion
     if (state_ == State::Stream) {
-      if (cmd < kCmdThreshold) {  // link lost: back to command mode
-        bus_.write(reg::kPioCodr, reg::kPinBtArm7Cmd);
-        ++linkEpoch_;
-        enter(State::OpenPort, nowMs);
-      }
+      if (cmd < kCmdThreshold) leaveStream(nowMs);
       return;
+    }
+    if (rx_.size() != 0) {
+      lastRxMs_ = nowMs;
+    } else if (nowMs - lastRxMs_ >= kMessageGapMs) {
+      parser_.reset();  // a partial message that stopped is noise
     }
     uint8_t b;
     while (rx_.pop(b)) {
@@ -109,6 +117,23 @@ class BlueCore {
     state_ = s;
     sinceMs_ = nowMs;
     sent_ = false;
+  }
+  // The link is gone (CMD line low): the PC's unread bytes and the bytes still queued for it are
+  // dropped, the transmitter stops (RSTTX abandons the byte being shifted out), and only then ARM7_CMD
+  // goes low: from here every byte to the module is a command again.
+  void leaveStream(uint32_t nowMs) {
+    using namespace reg;
+    bus_.write(kUs1Ptcr, 1u << 9);  // TXTDIS
+    bus_.write(kUs1Cr, 1u << 3);    // RSTTX
+    bus_.write(kUs1Cr, 1u << 6);    // TXEN
+    tx_.clear();
+    inFlight_ = 0;
+    rx_.clear();
+    parser_.reset();
+    lastRxMs_ = nowMs;
+    bus_.write(kPioCodr, kPinBtArm7Cmd);
+    ++linkEpoch_;
+    enter(State::OpenPort, nowMs);
   }
   void command(uint8_t code, const uint8_t* payload, uint8_t n) {
     uint8_t frame[kBcMaxPayload + 4];
@@ -168,7 +193,7 @@ class BlueCore {
       for (uint8_t i = 0; i < 7; ++i) answer[i] = p[i];
       for (uint8_t i = 0; i < 4; ++i) answer[7 + i] = kPin[i];
       command(bc::kPinCode, answer, sizeof(answer));
-    } else if (code == bc::kRequestConnection && state_ == State::Listening) {
+    } else if (code == bc::kRequestConnection && (state_ == State::Listening || state_ == State::OpenPort)) {
       const uint8_t yes = 1;
       command(bc::kAcceptConnection, &yes, 1);
       enter(State::Accepting, nowMs);
@@ -205,6 +230,7 @@ class BlueCore {
   uint32_t linkEpoch_ = 0;
   uint16_t inFlight_ = 0;
   uint32_t sinceMs_ = 0;
+  uint32_t lastRxMs_ = 0;  // last poll that found received bytes (command mode)
   bool sent_ = false;
   volatile State state_ = State::Off;
 };

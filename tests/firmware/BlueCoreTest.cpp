@@ -12,13 +12,17 @@ using namespace reg;
 
 // USART1 + PDC + the BC4 module at register level. The module answers OPEN_PORT, ACCEPT_CONNECTION
 // and OPEN_STREAM (raising its CMD line, read through ADC channel 6), checks the ARM's checksum rule,
-// and in stream mode exchanges raw bytes.
+// and while the ARM holds ARM7_CMD high exchanges raw bytes (data mode). A PDC transfer may be held
+// (holdTx) to stand for bytes still on their way; TXTDIS abandons it.
 struct Bc4 {
   FakeBus bus;
   std::deque<uint8_t> toArm;
   std::vector<uint8_t> fromArm;          // raw bytes received (stream mode)
   std::vector<std::vector<uint8_t>> commands;  // command frames received (command mode)
-  bool cmdLine = false, resetHeld = true, badChecksum = false, indicateReset = true;
+  bool cmdLine = false, resetHeld = true, badChecksum = false, indicateReset = true, answerOpenPort = true;
+  bool armCmd = false;                   // ARM7_CMD (PA27): high = data mode
+  bool holdTx = false;
+  std::vector<uint8_t> heldTx;           // a PDC transfer not sent yet
   std::vector<uint8_t> pinAnswer;
 
   Bc4() {
@@ -29,6 +33,9 @@ struct Bc4 {
       return false;
     };
     bus.onWrite = [this](uint32_t a, uint32_t v) {
+      if (a == kPioSodr && (v & kPinBtArm7Cmd)) armCmd = true;
+      if (a == kPioCodr && (v & kPinBtArm7Cmd)) armCmd = false;
+      if (a == kUs1Ptcr && (v & (1u << 9))) heldTx.clear();  // TXTDIS: the transfer is abandoned
       if (a == kPioCodr && (v & kPinBtReset)) resetHeld = true;
       if (a == kPioSodr && (v & kPinBtReset) && resetHeld) {
         resetHeld = false;
@@ -36,10 +43,16 @@ struct Bc4 {
       }
       if (a == kUs1Ptcr && (v & (1u << 8))) {  // TXTEN: the PDC sends TCR bytes from TPR at once
         const uint8_t* p = bus.pointer(bus.regs[kUs1Tpr]);
-        for (uint32_t i = 0; i < bus.regs[kUs1Tcr]; ++i) received(p[i]);
-        bus.regs[kUs1Tcr] = 0;
+        heldTx.assign(p, p + bus.regs[kUs1Tcr]);
+        if (!holdTx) releaseTx();
       }
     };
+  }
+  void releaseTx() {
+    const std::vector<uint8_t> bytes = std::move(heldTx);
+    heldTx.clear();
+    for (uint8_t b : bytes) received(b);
+    bus.regs[kUs1Tcr] = 0;
   }
   void reply(uint8_t code, std::vector<uint8_t> payload) {
     std::vector<uint8_t> f{static_cast<uint8_t>(payload.size() + 3), code};
@@ -53,7 +66,7 @@ struct Bc4 {
   }
   std::vector<uint8_t> partial;
   void received(uint8_t b) {
-    if (cmdLine) { fromArm.push_back(b); return; }
+    if (armCmd) { fromArm.push_back(b); return; }
     partial.push_back(b);
     if (partial.size() < 2 || partial.size() < static_cast<size_t>(partial[0]) + 1) return;
     std::vector<uint8_t> f;
@@ -64,7 +77,7 @@ struct Bc4 {
     if (static_cast<uint16_t>(sum + got) != 0) { badChecksum = true; return; }
     commands.push_back(f);
     const uint8_t code = f[1];
-    if (code == 0x03) reply(0x1B, {0x01, 0x00});               // PORT_OPEN_RESULT: open
+    if (code == 0x03 && answerOpenPort) reply(0x1B, {0x01, 0x00});  // PORT_OPEN_RESULT: open
     if (code == 0x09 && f[2] == 1) reply(0x13, {0x01, 0x05});  // CONNECT_RESULT: ok, handle 5
     if (code == 0x0B && f[2] == 5) cmdLine = true;             // OPEN_STREAM(5)
     if (code == 0x0A) pinAnswer.assign(f.begin() + 2, f.end() - 2);
@@ -137,6 +150,118 @@ TEST(BlueCore, FromResetToStreamModeOnAnIncomingConnection) {
   EXPECT_NE(m.bus.writesTo(kPioCodr).back() & kPinBtArm7Cmd, 0u);
   EXPECT_TRUE(m.sawCommand(0x03));
   EXPECT_FALSE(bt.write(hello, 4));
+}
+
+// Boots the driver and takes a PC's connection up to stream mode.
+template <class Bt>
+void toStream(Bc4& m, Bt& bt, uint32_t& now) {
+  bt.init(kMck, now);
+  runMs(m, bt, now, 160);
+  m.requestConnection();
+  runMs(m, bt, now, 10);
+  ASSERT_TRUE(bt.streaming());
+}
+
+TEST(BlueCore, LosingTheLinkMidTransferSendsNoStreamByteAsACommand) {
+  Bc4 m;
+  BlueCore<FakeBus> bt(m.bus);
+  uint32_t now = 0;
+  toStream(m, bt, now);
+  m.holdTx = true;  // a frame for the PC is still being sent when the link drops
+  const uint8_t frame[] = {0x02, 0x00, 0xAB, 0xCD};
+  ASSERT_TRUE(bt.write(frame, 4));
+  m.cmdLine = false;
+  m.commands.clear();
+  const size_t before = m.bus.writes.size();
+  runMs(m, bt, now, 2);
+  m.holdTx = false;
+  m.releaseTx();
+  runMs(m, bt, now, 5);
+  EXPECT_TRUE(m.fromArm.empty()) << "the PC is gone: its frame is dropped";
+  EXPECT_FALSE(m.badChecksum) << "a stream byte reached the module as part of a command";
+  ASSERT_FALSE(m.commands.empty());
+  for (const auto& c : m.commands) EXPECT_EQ(c[1], 0x03) << "only OPEN_PORT after the loss";
+  // The transmitter stops before ARM7_CMD goes low.
+  size_t stopAt = 0, lowAt = 0;
+  for (size_t i = before; i < m.bus.writes.size(); ++i) {
+    const auto& w = m.bus.writes[i];
+    if (!stopAt && w.first == kUs1Ptcr && (w.second & (1u << 9))) stopAt = i;
+    if (!lowAt && w.first == kPioCodr && (w.second & kPinBtArm7Cmd)) lowAt = i;
+  }
+  EXPECT_NE(stopAt, 0u);
+  EXPECT_LT(stopAt, lowAt);
+}
+
+TEST(BlueCore, TheNextPcIsAcceptedAfterALinkLoss) {
+  Bc4 m;
+  BlueCore<FakeBus> bt(m.bus);
+  uint32_t now = 0;
+  toStream(m, bt, now);
+  for (uint32_t pc = 1; pc <= 3; ++pc) {
+    m.cmdLine = false;
+    runMs(m, bt, now, 1);
+    m.toArm.insert(m.toArm.end(), {0x05, 0x1A});  // the first bytes of a message cut by the link loss
+    runMs(m, bt, now, 30);
+    EXPECT_EQ(bt.linkEpoch(), pc);
+    m.requestConnection();
+    runMs(m, bt, now, 10);
+    EXPECT_TRUE(bt.streaming()) << "PC " << pc + 1;
+  }
+}
+
+TEST(BlueCore, AConnectionRequestWhileThePortOpensIsAccepted) {
+  Bc4 m;
+  BlueCore<FakeBus> bt(m.bus);
+  uint32_t now = 0;
+  m.answerOpenPort = false;  // PORT_OPEN_RESULT still on its way when the PC dials in
+  bt.init(kMck, now);
+  runMs(m, bt, now, 160);
+  ASSERT_TRUE(m.sawCommand(0x03));
+  ASSERT_EQ(bt.state(), BlueCore<FakeBus>::State::OpenPort);
+  m.requestConnection();
+  runMs(m, bt, now, 10);
+  EXPECT_TRUE(m.sawCommand(0x09));  // ACCEPT_CONNECTION
+  EXPECT_TRUE(bt.streaming());
+}
+
+// A fragment (a length byte, then nothing) is dropped after kMessageGapMs, so the messages after it
+// are read; a message whose bytes straddle main-loop passes is still taken whole.
+TEST(BlueCore, ANoiseFragmentDoesNotSwallowTheMessagesAfterIt) {
+  struct Case {
+    std::vector<uint8_t> fragment;
+    uint32_t silenceMs;
+  };
+  const std::vector<Case> cases{
+      {{0x1B}, BlueCore<FakeBus>::kMessageGapMs},              // a length of 27, then silence
+      {{0x23, 0x99}, 50},                                      // the longest length
+      {{0x0A, 0x16, 1, 2, 3}, BlueCore<FakeBus>::kMessageGapMs},  // half of a message
+  };
+  for (const Case& c : cases) {
+    Bc4 m;
+    BlueCore<FakeBus> bt(m.bus);
+    uint32_t now = 0;
+    bt.init(kMck, now);
+    runMs(m, bt, now, 160);
+    ASSERT_EQ(bt.state(), BlueCore<FakeBus>::State::Listening);
+    m.toArm.insert(m.toArm.end(), c.fragment.begin(), c.fragment.end());
+    runMs(m, bt, now, c.silenceMs + 1);
+    m.requestConnection();
+    runMs(m, bt, now, 10);
+    EXPECT_TRUE(m.sawCommand(0x09)) << "after a fragment of " << c.fragment.size() << " bytes";
+  }
+  // Straddling passes: REQUEST_CONNECTION in two halves, 3 ms apart.
+  Bc4 m;
+  BlueCore<FakeBus> bt(m.bus);
+  uint32_t now = 0;
+  bt.init(kMck, now);
+  runMs(m, bt, now, 160);
+  m.requestConnection();
+  std::deque<uint8_t> rest(m.toArm.begin() + 5, m.toArm.end());
+  m.toArm.resize(5);
+  runMs(m, bt, now, 3);
+  m.toArm = rest;
+  runMs(m, bt, now, 10);
+  EXPECT_TRUE(m.sawCommand(0x09));
 }
 
 TEST(BlueCore, AnswersAPinRequestWith1234) {
