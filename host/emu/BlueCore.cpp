@@ -30,8 +30,8 @@ void BlueCore::reply(uint8_t cmd, const std::vector<uint8_t>& payload) {
 
 void BlueCore::fromArm(uint8_t b) {
     if (!running_) return;
-    if (streaming()) {
-        if (link_ && connected_) {
+    if (dataMode()) {  // stream data: to the PC while a stream is open, else lost with the link
+        if (link_ && connected_ && streamOpen_) {
             link_->send(&b, 1);
             ++toPc_;
         }
@@ -82,13 +82,13 @@ void BlueCore::command(const std::vector<uint8_t>& f) {
 
 bool BlueCore::hasByteForArm() const {
     if (!running_) return false;
-    if (!toArm_.empty()) return true;
-    return streaming() && !pcIn_.empty();
+    return dataMode() ? streamOpen_ && !pcIn_.empty() : !toArm_.empty();
 }
 
 uint8_t BlueCore::takeByteForArm() {
-    if (toArm_.empty()) ++fromPc_;
-    std::deque<uint8_t>& q = !toArm_.empty() ? toArm_ : pcIn_;
+    const bool stream = dataMode();
+    if (stream) ++fromPc_;
+    std::deque<uint8_t>& q = stream ? pcIn_ : toArm_;
     const uint8_t b = q.front();
     q.pop_front();
     return b;
@@ -110,13 +110,16 @@ void BlueCore::pollLink() {
         std::vector<uint8_t> p = kBdAddr;
         reply(0x16, p);  // REQUEST_CONNECTION
     }
-    if (!pc && pcWasConnected_) {
+    if (!pc && pcWasConnected_) {  // the PC hung up: its undelivered bytes go with the link
         connected_ = requested_ = streamOpen_ = announced_ = false;
-        reply(0x1A, {1, 1});  // the PC hung up
+        pcIn_.clear();
+        reply(0x1A, {1, 1});  // CLOSE_CONNECTION_RESULT, delivered once the ARM is in command mode
     }
     pcWasConnected_ = pc;
+    // Until the brick accepts, and while the input is full, the PC's bytes wait on its side (its
+    // transport's window closes: back-pressure, as the radio's flow control would).
     const size_t before = pcIn_.size();
-    if (connected_) link_->receive(pcIn_);  // until the brick accepts, the PC's bytes wait on its side
+    if (connected_ && before < kPcInputBytes) link_->receive(pcIn_, kPcInputBytes - before);
     if (pcIn_.size() != before) clock_.poke();
 }
 
@@ -127,6 +130,7 @@ void BlueCore::advanceTo(uint64_t now) {
         bootAt_ = kNever;
         toArm_.clear();
         frame_.clear();
+        pcIn_.clear();
         portOpen_ = requested_ = connected_ = streamOpen_ = false;
     }
     if (reset && !running_ && bootAt_ == kNever) bootAt_ = now + kBootCycles;

@@ -4,6 +4,13 @@
 // usual queries; a PC connecting on the LinkEndpoint while the port is open raises REQUEST_CONNECTION;
 // ACCEPT_CONNECTION -> CONNECT_RESULT; OPEN_STREAM -> the CMD signal (ADC channel 6) goes high; then with
 // PA27 high bytes pass through unchanged both ways (stream mode).
+// The ARM selects the mode with ARM7_CMD (PA27): high = data, low = command. In data mode the ARM's bytes
+// are stream data (lost when no stream is open) and only the PC's bytes reach it; in command mode only
+// the module's messages do. So when the PC hangs up (the CMD signal drops, CLOSE_CONNECTION_RESULT is
+// queued) the message waits until the ARM has lowered ARM7_CMD, and the ARM's last stream bytes are
+// never taken for a command. The PC's bytes not yet delivered go with the link.
+// Input bound: at most kPcInputBytes from the PC wait here (the module's buffer plus the radio's
+// window); beyond that the transport is not read, so its own flow control holds the PC back.
 #pragma once
 
 #include "host/emu/IoDevice.hpp"
@@ -43,11 +50,14 @@ public:
     bool connected() const { return connected_; }
     uint64_t bytesToPc() const { return toPc_; }
     uint64_t bytesFromPc() const { return fromPc_; }
+    static constexpr size_t kPcInputBytes = 4096;             // most bytes from the PC held here
+    size_t pcBuffered() const { return pcIn_.size(); }        // 0..kPcInputBytes
 
 private:
     void command(const std::vector<uint8_t>& f);  // [cmd][payload...] of a checked frame
     void reply(uint8_t cmd, const std::vector<uint8_t>& payload);
     void pollLink();
+    bool dataMode() const { return pio_.level(kArmCmdPin); }  // ARM7_CMD high
 
     Clock& clock_;
     Pioa& pio_;
@@ -56,7 +66,7 @@ private:
     uint64_t bootAt_ = kNever;     // RESET_INDICATION due
     std::vector<uint8_t> frame_;   // command-mode bytes from the ARM being assembled
     std::deque<uint8_t> toArm_;
-    std::deque<uint8_t> pcIn_;     // stream bytes waiting for the ARM
+    std::deque<uint8_t> pcIn_;     // stream bytes waiting for the ARM, at most kPcInputBytes
     bool portOpen_ = false, requested_ = false, connected_ = false, streamOpen_ = false;
     bool pcWasConnected_ = false;
     bool announced_ = false;       // REQUEST_CONNECTION sent for the current PC connection

@@ -8,6 +8,7 @@
 #include <termios.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -15,11 +16,18 @@
 
 namespace nxtmap::emu {
 
+namespace {
+const int kRadioWindowBytes = 4096;  // SO_RCVBUF asked for; Linux doubles it for its own bookkeeping
+}  // namespace
+
 TcpLink::TcpLink(int port) : port_(port) {
     listen_ = ::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
     if (listen_ < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
     const int one = 1;
     ::setsockopt(listen_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+    // A PC's connection gets a receive window of about a radio's (accepted sockets inherit it), so a
+    // PC that sends faster than the brick reads is held back within a few KiB.
+    ::setsockopt(listen_, SOL_SOCKET, SO_RCVBUF, &kRadioWindowBytes, sizeof kRadioWindowBytes);
     sockaddr_in a{};
     a.sin_family = AF_INET;
     a.sin_port = htons(static_cast<uint16_t>(port));
@@ -37,11 +45,18 @@ TcpLink::~TcpLink() {
 }
 
 void TcpLink::drop() {
-    if (client_ >= 0) ::close(client_);
+    if (client_ >= 0) {
+        ::close(client_);
+        hungUp_ = true;
+    }
     client_ = -1;
 }
 
 bool TcpLink::connected() {
+    if (hungUp_) {  // the brick sees this PC leave before the next one, even one already waiting
+        hungUp_ = false;
+        return false;
+    }
     if (client_ < 0) client_ = ::accept4(listen_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
     return client_ >= 0;
 }
@@ -59,11 +74,15 @@ void TcpLink::send(const uint8_t* d, size_t n) {
     }
 }
 
-void TcpLink::receive(std::deque<uint8_t>& out) {
+void TcpLink::receive(std::deque<uint8_t>& out, size_t maxBytes) {
     uint8_t buf[512];
-    while (client_ >= 0) {
-        const ssize_t r = ::recv(client_, buf, sizeof buf, 0);
-        if (r > 0) { out.insert(out.end(), buf, buf + r); continue; }
+    while (client_ >= 0 && maxBytes > 0) {
+        const ssize_t r = ::recv(client_, buf, std::min(sizeof buf, maxBytes), 0);
+        if (r > 0) {
+            out.insert(out.end(), buf, buf + r);
+            maxBytes -= static_cast<size_t>(r);
+            continue;
+        }
         if (r == 0 || (errno != EAGAIN && errno != EINTR)) drop();  // the PC hung up
         break;
     }
@@ -109,12 +128,13 @@ void PtyLink::send(const uint8_t* d, size_t n) {
     }
 }
 
-void PtyLink::receive(std::deque<uint8_t>& out) {
+void PtyLink::receive(std::deque<uint8_t>& out, size_t maxBytes) {
     uint8_t buf[512];
-    for (;;) {
-        const ssize_t r = ::read(master_, buf, sizeof buf);
+    while (maxBytes > 0) {
+        const ssize_t r = ::read(master_, buf, std::min(sizeof buf, maxBytes));
         if (r <= 0) break;
         out.insert(out.end(), buf, buf + r);
+        maxBytes -= static_cast<size_t>(r);
     }
 }
 

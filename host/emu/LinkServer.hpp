@@ -1,7 +1,8 @@
 // LinkServer: the PC ends of the emulated Bluetooth link. TcpLink listens on 127.0.0.1:PORT for one PC
 // at a time (a connect = the PC dialling the brick; a hang-up = the link dropping). PtyLink opens a
 // pseudo-terminal in raw mode whose slave name a serial tool (or the console) opens like /dev/rfcomm0;
-// it counts as connected from the start.
+// it counts as connected from the start. Both hand the brick at most what it asks for and leave the rest
+// unread, so the kernel's flow control (the TCP window, the pty's buffer) holds the PC back.
 #pragma once
 
 #include "host/emu/LinkEndpoint.hpp"
@@ -18,13 +19,14 @@ public:
     ~TcpLink() override;
     bool connected() override;
     void send(const uint8_t* data, size_t n) override;
-    void receive(std::deque<uint8_t>& out) override;
+    void receive(std::deque<uint8_t>& out, size_t maxBytes) override;
     bool waitForActivity(int timeoutMs) override;
     int port() const { return port_; }
 
 private:
     void drop();
     int listen_ = -1, client_ = -1, port_ = 0;
+    bool hungUp_ = false;  // a PC left and connected() has not said so yet
 };
 
 class PtyLink : public LinkEndpoint {
@@ -34,7 +36,7 @@ public:
     const std::string& slaveName() const { return name_; }
     bool connected() override { return true; }
     void send(const uint8_t* data, size_t n) override;
-    void receive(std::deque<uint8_t>& out) override;
+    void receive(std::deque<uint8_t>& out, size_t maxBytes) override;
     bool waitForActivity(int timeoutMs) override;
 
 private:
