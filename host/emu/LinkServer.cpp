@@ -62,15 +62,22 @@ bool TcpLink::connected() {
 }
 
 void TcpLink::send(const uint8_t* d, size_t n) {
+    int stalledMs = 0;  // wall time the PC has taken no byte
     while (client_ >= 0 && n > 0) {
         const ssize_t w = ::send(client_, d, n, MSG_NOSIGNAL);
-        if (w > 0) { d += w; n -= static_cast<size_t>(w); continue; }
-        if (w < 0 && (errno == EAGAIN || errno == EINTR)) {
-            pollfd p{client_, POLLOUT, 0};
-            ::poll(&p, 1, 100);
+        if (w > 0) {
+            d += w;
+            n -= static_cast<size_t>(w);
+            stalledMs = 0;
             continue;
         }
-        drop();
+        if (w < 0 && (errno == EAGAIN || errno == EINTR) && stalledMs < kStallLimitMs) {
+            pollfd p{client_, POLLOUT, 0};
+            ::poll(&p, 1, 100);
+            stalledMs += 100;
+            continue;
+        }
+        drop();  // an error, or a PC that reads nothing: the link is lost, as a radio's would be
     }
 }
 

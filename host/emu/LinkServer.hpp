@@ -23,6 +23,10 @@ public:
     bool waitForActivity(int timeoutMs) override;
     int port() const { return port_; }
 
+    // A PC that takes no byte for this long (wall time, ms) while the brick sends is dropped, so a client that
+    // never reads cannot stall the emulated brick (a Bluetooth link's supervision timeout does the same).
+    static constexpr int kStallLimitMs = 2000;
+
 private:
     void drop();
     int listen_ = -1, client_ = -1, port_ = 0;

@@ -46,9 +46,13 @@ void RgbImage::pixel(int x, int y, uint8_t& r, uint8_t& g, uint8_t& b) const {
   b = p[2];
 }
 
+int pictureCellPx(int worldSide, int askedPx) {
+  return std::clamp(std::min(askedPx, kMaxPictureSide / std::max(worldSide, 1)), 1, 64);
+}
+
 RgbImage renderMapImage(const mapping::MappingRun& run, const MapImageOptions& options) {
   const sim::World& world = run.world();
-  const int px = std::clamp(options.cellPx, 1, 64);
+  const int px = pictureCellPx(std::max(world.width(), world.height()), options.cellPx);
   RgbImage img;
   img.width = world.width() * px;
   img.height = world.height() * px;

@@ -11,8 +11,15 @@ class MappingRun;
 
 namespace nxtmap::report {
 
+// The largest side of a map picture, pixels (192 MiB of RGB at most; the world's 4096 cells at 1 px fit).
+constexpr int kMaxPictureSide = 8192;
+
+// Pixels per cell for a world `worldSide` cells on its longer side: as asked (1..64), fewer for a large world so
+// the picture keeps within kMaxPictureSide pixels a side (a 4096-cell world at 8 px would take 3.2 GB).
+int pictureCellPx(int worldSide, int askedPx);
+
 struct MapImageOptions {
-  int cellPx = 8;            // pixels per cell side (1..64)
+  int cellPx = 8;            // pixels per cell side (1..64; fewer when the world is too large for it)
   bool overlayTruth = true;  // mark missed obstacles and wrong cells against the world
   bool gridLines = true;     // thin lines between cells (when cellPx >= 6)
 };

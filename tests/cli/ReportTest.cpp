@@ -205,3 +205,17 @@ TEST(ExperimentTable, MalformedLinesAreNamed) {
 
 }  // namespace
 }  // namespace nxtmap::report
+
+TEST(MapImage, PictureOfALargeWorldKeepsWithinItsBound) {
+  struct Row {
+    int side, asked, px;
+  };
+  const Row rows[] = {{22, 8, 8},      {1024, 8, 8},  {1025, 8, 7},  {4096, 8, 2},
+                      {8192, 8, 1},    {16384, 8, 1}, {10, 100, 64}, {10, 0, 1}};
+  for (const Row& r : rows) {
+    EXPECT_EQ(nxtmap::report::pictureCellPx(r.side, r.asked), r.px) << r.side << " cells at " << r.asked;
+    if (r.side <= nxtmap::report::kMaxPictureSide) {
+      EXPECT_LE(r.side * nxtmap::report::pictureCellPx(r.side, r.asked), nxtmap::report::kMaxPictureSide);
+    }
+  }
+}

@@ -10,6 +10,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <deque>
 #include <string>
 
@@ -154,6 +155,24 @@ TEST(PtyLink, ReceiveTakesAtMostWhatItIsAskedFor) {
         if (in.size() == before) ::usleep(1000);
     }
     EXPECT_EQ(in.size(), 1500u);
+    ::close(pc);
+}
+
+// A PC that connects and never reads: the brick's bytes fill the socket's buffers, and after kStallLimitMs with
+// no byte taken the link is dropped, so the emulated brick goes on (before, send() waited for ever).
+TEST(TcpLink, APcThatNeverReadsIsDroppedAndDoesNotStallTheBrick) {
+    const std::unique_ptr<TcpLink> link = listenSomewhere();
+    ASSERT_TRUE(link) << "no free port";
+    const int pc = dialLoopback(link->port());
+    ASSERT_GE(pc, 0);
+    ASSERT_TRUE(link->connected());
+    const std::string frame(4096, 'x');
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < 64 * 256 && link->connected(); ++i)  // up to 64 MiB, far past any socket buffer
+        link->send(reinterpret_cast<const uint8_t*>(frame.data()), frame.size());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_FALSE(link->connected()) << "the silent PC is still attached";
+    EXPECT_LT(seconds, 3.0 * TcpLink::kStallLimitMs / 1000.0);
     ::close(pc);
 }
 
