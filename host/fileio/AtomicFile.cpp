@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "host/fileio/LeftBehind.hpp"
 #include "host/fileio/OutputTarget.hpp"
 
 namespace nxtmap::fileio {
@@ -15,6 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kMaxTempAttempts = 1000;  // unique names tried before giving up
+constexpr const char* kTempInfix = ".tmp-";   // "<target>.tmp-<pid>-<n>"
 
 std::string folderOf(const std::string& file) {
   const fs::path p(file);
@@ -49,7 +51,8 @@ bool AtomicFile::open(const std::string& target, std::string& error) {
     fd_ = t->streamFd;
     return true;
   }
-  const std::string base = target_ + ".tmp-" + std::to_string(::getpid()) + "-";
+  removeLeftBehind(target_, kTempInfix, false);  // temporary files of killed writers of this target
+  const std::string base = target_ + kTempInfix + std::to_string(::getpid()) + "-";
   for (int n = 0; n < kMaxTempAttempts; ++n) {
     const std::string candidate = base + std::to_string(n);
     fd_ = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);

@@ -1,15 +1,14 @@
 #include "host/fileio/StagingDirectory.hpp"
 
 #include <fcntl.h>
-#include <signal.h>
 #include <stdio.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <charconv>
 
 #include "host/fileio/AtomicFile.hpp"
+#include "host/fileio/LeftBehind.hpp"
 #include "host/fileio/OutputTarget.hpp"
 
 namespace nxtmap::fileio {
@@ -19,20 +18,6 @@ namespace fs = std::filesystem;
 constexpr const char* kStagingInfix = ".saving-";
 
 fs::path folderOf(const fs::path& target) { return target.has_parent_path() ? target.parent_path() : fs::path("."); }
-
-// The pid in a staging name "<name>.saving-<pid>", or 0 when `entry` is not one for `name`.
-pid_t stagingPid(const std::string& entry, const std::string& name) {
-  const std::string prefix = name + kStagingInfix;
-  if (entry.size() <= prefix.size() || entry.compare(0, prefix.size(), prefix) != 0) return 0;
-  long pid = 0;
-  const char* first = entry.data() + prefix.size();
-  const char* last = entry.data() + entry.size();
-  const auto res = std::from_chars(first, last, pid);
-  if (res.ec != std::errc() || res.ptr != last || pid <= 0 || pid > INT32_MAX) return 0;
-  return static_cast<pid_t>(pid);
-}
-
-bool processAlive(pid_t pid) { return ::kill(pid, 0) == 0 || errno != ESRCH; }
 
 }  // namespace
 
@@ -55,17 +40,7 @@ bool StagingDirectory::fail(const std::string& why, std::string& error) {
   return false;
 }
 
-void StagingDirectory::removeStaleSiblings() const {
-  std::error_code ec;
-  const std::string name = target_.filename().string();
-  for (const fs::directory_entry& e : fs::directory_iterator(folderOf(target_), ec)) {
-    const pid_t pid = stagingPid(e.path().filename().string(), name);
-    if (pid != 0 && (pid == ::getpid() || !processAlive(pid))) {
-      std::error_code ignored;
-      fs::remove_all(e.path(), ignored);
-    }
-  }
-}
+void StagingDirectory::removeStaleSiblings() const { removeLeftBehind(target_, kStagingInfix, true); }
 
 bool checkDirectoryTarget(const std::string& dir, std::string& error) {
   const fs::path target = directoryTarget(dir);

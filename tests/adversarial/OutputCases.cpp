@@ -2,14 +2,13 @@
 // folder in place of a file; a full disk (/dev/full). A refused write leaves every file as it was (the
 // /dev/full device node included); a trailing slash on a house folder is legitimate; a staging folder left by
 // a killed save is cleaned up by the next save.
-#include <signal.h>
-
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "tests/adversarial/AdversarialCase.hpp"
 #include "tests/adversarial/Fixtures.hpp"
+#include "tests/support/EndedPid.hpp"
 
 namespace nxtmap::adversarial {
 namespace {
@@ -30,14 +29,6 @@ AdversarialCase works(const std::string& name, std::vector<std::string> args, st
   c.creates = std::move(creates);
   c.timeoutS = 120;
   return c;
-}
-
-// A pid that no process has now (for a staging folder left by a killed save).
-int deadPid() {
-  for (int pid = 999999; pid > 1000; --pid) {
-    if (::kill(pid, 0) != 0 && errno == ESRCH) return pid;
-  }
-  return 999999;
 }
 
 const std::vector<std::pair<std::string, std::string>> kBadTargets = {
@@ -83,7 +74,7 @@ std::vector<AdversarialCase> outputCases() {
                                 {"sim-house", "{src}/worlds/houses/three-rooms.map", "--start", "8,8", "--save",
                                  "{dir}/out/house"},
                                 {"out/house/house.yaml"}, [](const CaseDirs& d) {
-                                  d.write("out/house.saving-" + std::to_string(deadPid()) + "/house.yaml", "torn");
+                                  d.write("out/house.saving-" + std::to_string(test::endedPid()) + "/house.yaml", "torn");
                                 });
   stale.check = [](const CaseDirs& d) -> std::string {
     for (const auto& e : std::filesystem::directory_iterator(d.path("out"))) {

@@ -12,21 +12,13 @@
 
 #include "host/fileio/AtomicFile.hpp"
 #include "host/fileio/StagingDirectory.hpp"
+#include "tests/support/EndedPid.hpp"
 #include "tests/support/TempDir.hpp"
 
 namespace nxtmap::fileio {
 namespace {
 namespace fs = std::filesystem;
 using test::TempDir;
-
-// The pid of a process that has ended (forked, exited, reaped).
-pid_t deadPid() {
-  const pid_t child = ::fork();
-  if (child == 0) ::_exit(0);
-  int status = 0;
-  ::waitpid(child, &status, 0);
-  return child;
-}
 
 TEST(StagingDirectory, TargetsDropTrailingSlashes) {
   const std::vector<std::pair<std::string, std::string>> cases = {
@@ -71,9 +63,9 @@ TEST(StagingDirectory, AMissingFolderIsRefusedAndNothingIsCreated) {
 
 TEST(StagingDirectory, StaleStagingOfDeadProcessesIsRemovedByTheNextSave) {
   TempDir t("stage_stale");
-  const std::string dead = t.path("dir.saving-" + std::to_string(deadPid()));
+  const std::string dead = t.path("dir.saving-" + std::to_string(test::endedPid()));
   const std::string alive = t.path("dir.saving-1");  // pid 1 lives as long as the system
-  const std::string otherTarget = t.path("other.saving-" + std::to_string(deadPid()));
+  const std::string otherTarget = t.path("other.saving-" + std::to_string(test::endedPid()));
   for (const std::string& d : {dead, alive, otherTarget}) t.write(fs::path(d).filename().string() + "/x", "x");
   StagingDirectory stage;
   std::string error;
