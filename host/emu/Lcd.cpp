@@ -1,16 +1,8 @@
 #include "host/emu/Lcd.hpp"
 
-#include <png.h>
-
-#include <stdio.h>
-
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <memory>
 #include <vector>
 
-#include "host/fileio/AtomicFile.hpp"
+#include "host/fileio/PngFile.hpp"
 
 namespace nxtmap::emu {
 
@@ -41,29 +33,14 @@ bool Lcd::savePng(const std::string& path, int scale, std::string& error) const 
     // or not at all: a failed write leaves `path` as it was.
     if (scale < 1 || scale > 16) { error = "cannot write " + path + ": LCD scale must lie in 1..16"; return false; }
     const int w = kWidth * scale, h = kHeight * scale;
-    std::vector<png_byte> grey(static_cast<size_t>(w) * static_cast<size_t>(h));
+    std::vector<uint8_t> grey(static_cast<size_t>(w) * static_cast<size_t>(h));
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             grey[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)] =
                 pixel(x / scale, y / scale) ? 0x20 : 0xC8;
         }
     }
-    png_image png;
-    std::memset(&png, 0, sizeof png);
-    png.version = PNG_IMAGE_VERSION;
-    png.width = static_cast<png_uint_32>(w);
-    png.height = static_cast<png_uint_32>(h);
-    png.format = PNG_FORMAT_GRAY;
-    char* bytes = nullptr;
-    size_t size = 0;
-    FILE* memory = open_memstream(&bytes, &size);
-    const bool encoded = memory && png_image_write_to_stdio(&png, memory, 0, grey.data(), 0, nullptr) != 0;
-    if (memory) std::fclose(memory);
-    std::unique_ptr<char, decltype(&std::free)> owned(bytes, &std::free);
-    png_image_free(&png);
-    if (!encoded) { error = "PNG encoding failed for " + path; return false; }
-    fileio::AtomicFile out;
-    return out.open(path, error) && out.write(bytes, size, error) && out.commit(error);
+    return fileio::writePngFile(path, w, h, 1, grey.data(), error);
 }
 
 }  // namespace nxtmap::emu

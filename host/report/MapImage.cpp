@@ -1,16 +1,8 @@
 #include "host/report/MapImage.hpp"
 
-#include <png.h>
-
-#include <stdio.h>
-
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <memory>
 
-#include "host/fileio/AtomicFile.hpp"
+#include "host/fileio/PngFile.hpp"
 #include "host/mapping/MappingRun.hpp"
 
 namespace nxtmap::report {
@@ -99,32 +91,7 @@ RgbImage renderMapImage(const mapping::MappingRun& run, const MapImageOptions& o
 }
 
 bool writePng(const std::string& path, const RgbImage& image, std::string& error) {
-  if (image.width <= 0 || image.height <= 0) {
-    error = "cannot write " + path + ": empty image";
-    return false;
-  }
-  // Encoded in memory first (at most about the size of the RGB picture already held), then written to a
-  // temporary file beside the target and renamed over it: a failed write leaves the target as it was.
-  png_image png;
-  std::memset(&png, 0, sizeof png);
-  png.version = PNG_IMAGE_VERSION;
-  png.width = static_cast<png_uint_32>(image.width);
-  png.height = static_cast<png_uint_32>(image.height);
-  png.format = PNG_FORMAT_RGB;
-  char* bytes = nullptr;
-  size_t size = 0;
-  FILE* memory = open_memstream(&bytes, &size);
-  const bool encoded = memory && png_image_write_to_stdio(&png, memory, 0, image.rgb.data(), 0, nullptr) != 0;
-  if (memory) std::fclose(memory);
-  std::unique_ptr<char, decltype(&std::free)> owned(bytes, &std::free);
-  if (!encoded) {
-    error = "cannot write " + path + ": " + (memory ? png.message : "out of memory");
-    png_image_free(&png);
-    return false;
-  }
-  png_image_free(&png);
-  fileio::AtomicFile out;
-  return out.open(path, error) && out.write(bytes, size, error) && out.commit(error);
+  return fileio::writePngFile(path, image.width, image.height, 3, image.rgb.data(), error);
 }
 
 bool writeMapPng(const std::string& path, const mapping::MappingRun& run, const MapImageOptions& options,
