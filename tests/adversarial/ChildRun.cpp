@@ -1,5 +1,7 @@
 #include "tests/adversarial/ChildRun.hpp"
 
+#include "tests/support/FileText.hpp"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -14,13 +16,6 @@
 
 namespace nxtmap::adversarial {
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // In the child: stdin, stdout, stderr onto the given files, then exec; never returns.
 [[noreturn]] void execChild(const std::string& program, const std::vector<std::string>& args, const std::string& cwd,
@@ -75,8 +70,8 @@ ChildResult runChild(const std::string& program, const std::vector<std::string>&
     r.exitCode = WEXITSTATUS(status);
   }
   ::kill(-pid, SIGKILL);  // anything it left running in its group
-  r.out = slurp(outPath);
-  r.err = slurp(errPath);
+  r.out = test::readWholeFile(outPath);
+  r.err = test::readWholeFile(errPath);
   return r;
 }
 

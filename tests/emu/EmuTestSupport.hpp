@@ -3,11 +3,14 @@
 
 #include "host/emu/Brick.hpp"
 #include "host/emu/ElfImage.hpp"
+#include "host/emu/LinkServer.hpp"
 #include "host/sim/World.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace nxtmap::emu::test {
@@ -50,5 +53,17 @@ struct ProbeRun {
     TestPort& port() { return *brick->testPort(); }
     std::string fault() const { return brick->machine().fault().describe(); }
 };
+
+// A TcpLink listening on a free loopback port from `firstPort` on (null if none was free). Different tests start
+// from different ports so that parallel test processes rarely try the same one.
+inline std::unique_ptr<TcpLink> listenOnFreePort(int firstPort) {
+  for (int p = firstPort + ::getpid() % 2000; p < firstPort + 8000; p += 97) {
+    try {
+      return std::make_unique<TcpLink>(p);
+    } catch (const std::runtime_error&) {
+    }
+  }
+  return nullptr;
+}
 
 }  // namespace nxtmap::emu::test

@@ -46,16 +46,6 @@ TEST(TcpLink, PcClientTalksToTheFirmwareThroughTheBridge) {
     ::close(pc);
 }
 
-std::unique_ptr<TcpLink> listenSomewhere() {
-    for (int p = 42050 + getpid() % 2000; p < 48000; p += 97) {
-        try {
-            return std::make_unique<TcpLink>(p);
-        } catch (const std::runtime_error&) {
-        }
-    }
-    return nullptr;
-}
-
 int dialLoopback(int port) {
     const int s = ::socket(AF_INET, SOCK_STREAM, 0);
     sockaddr_in a{};
@@ -72,7 +62,7 @@ int dialLoopback(int port) {
 // A PC that hangs up is seen to leave (connected() false once) before the next one, even when that one
 // already waits in the backlog: the brick must see a new connection, not one stream going on.
 TEST(TcpLink, APcLeavingIsSeenEvenWhenTheNextOneWaits) {
-    const std::unique_ptr<TcpLink> link = listenSomewhere();
+    const std::unique_ptr<TcpLink> link = listenOnFreePort(42050);
     ASSERT_TRUE(link) << "no free port";
     const int first = dialLoopback(link->port());
     ASSERT_GE(first, 0);
@@ -100,7 +90,7 @@ TEST(TcpLink, APcLeavingIsSeenEvenWhenTheNextOneWaits) {
 
 // receive() takes at most what it is asked for; the rest stays in the socket.
 TEST(TcpLink, ReceiveTakesAtMostWhatItIsAskedFor) {
-    const std::unique_ptr<TcpLink> link = listenSomewhere();
+    const std::unique_ptr<TcpLink> link = listenOnFreePort(42050);
     ASSERT_TRUE(link) << "no free port";
     const int pc = dialLoopback(link->port());
     ASSERT_GE(pc, 0);
@@ -161,7 +151,7 @@ TEST(PtyLink, ReceiveTakesAtMostWhatItIsAskedFor) {
 // A PC that connects and never reads: the brick's bytes fill the socket's buffers, and after kStallLimitMs with
 // no byte taken the link is dropped, so the emulated brick goes on (before, send() waited for ever).
 TEST(TcpLink, APcThatNeverReadsIsDroppedAndDoesNotStallTheBrick) {
-    const std::unique_ptr<TcpLink> link = listenSomewhere();
+    const std::unique_ptr<TcpLink> link = listenOnFreePort(42050);
     ASSERT_TRUE(link) << "no free port";
     const int pc = dialLoopback(link->port());
     ASSERT_GE(pc, 0);

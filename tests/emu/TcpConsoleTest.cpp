@@ -22,17 +22,6 @@ namespace {
 
 #ifdef NXTMAP_EMU_FIRMWARE_DIR
 
-// A TcpLink on a free loopback port (null if none was free).
-std::unique_ptr<TcpLink> listenOnFreePort() {
-  for (int p = 48000 + getpid() % 2000; p < 56000; p += 89) {
-    try {
-      return std::make_unique<TcpLink>(p);
-    } catch (const std::runtime_error&) {
-    }
-  }
-  return nullptr;
-}
-
 // A connected, non-blocking loopback client socket (-1 on failure). sendBufferBytes > 0 fixes SO_SNDBUF.
 int dial(int port, int sendBufferBytes = 0) {
   const int s = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
@@ -114,7 +103,7 @@ uint32_t msOf(uint64_t cycles) { return static_cast<uint32_t>(cycles / (kMckHz /
 // dials in after a gap (none, a few ms, a while) and must be answered too.
 TEST(TcpConsoles, EachConsoleAfterTheLastQuitsGetsAnswers) {
   if (!std::filesystem::exists(std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap.elf")) GTEST_SKIP() << "no nxtmap.elf";
-  const std::unique_ptr<TcpLink> link = listenOnFreePort();
+  const std::unique_ptr<TcpLink> link = listenOnFreePort(48000);
   ASSERT_TRUE(link) << "no free port";
   const ElfImage image = firmware();
   const sim::World world = smallRoom();
@@ -166,7 +155,7 @@ TEST(TcpConsoles, EachConsoleAfterTheLastQuitsGetsAnswers) {
 // and a console on the same connection is answered soon after the flood stops.
 TEST(TcpConsoles, AFloodIsHeldBackAndTheBrickStillAnswers) {
   if (!std::filesystem::exists(std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap.elf")) GTEST_SKIP() << "no nxtmap.elf";
-  const std::unique_ptr<TcpLink> link = listenOnFreePort();
+  const std::unique_ptr<TcpLink> link = listenOnFreePort(48000);
   ASSERT_TRUE(link) << "no free port";
   const ElfImage image = firmware();
   const sim::World world = smallRoom();

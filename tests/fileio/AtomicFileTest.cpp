@@ -20,6 +20,7 @@
 #include "host/fileio/AtomicFile.hpp"
 #include "host/fileio/OutputTarget.hpp"
 #include "tests/support/FileSizeLimit.hpp"
+#include "tests/support/FileText.hpp"
 #include "tests/support/TempDir.hpp"
 
 namespace nxtmap::fileio {
@@ -27,31 +28,16 @@ namespace {
 namespace fs = std::filesystem;
 using test::TempDir;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// The names in `dir`, sorted.
-std::vector<std::string> entries(const std::string& dir) {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 TEST(AtomicFile, WritesANewFileAndReplacesAnOldOneKeepingItsMode) {
   TempDir t("atomic_ok");
   std::string error;
   ASSERT_TRUE(writeFileAtomically(t.path("a.txt"), "first", error)) << error;
-  EXPECT_EQ(slurp(t.path("a.txt")), "first");
+  EXPECT_EQ(test::readWholeFile(t.path("a.txt")), "first");
   ASSERT_EQ(::chmod(t.path("a.txt").c_str(), 0640), 0);
   ASSERT_TRUE(writeFileAtomically(t.path("a.txt"), "second, longer", error)) << error;
-  EXPECT_EQ(slurp(t.path("a.txt")), "second, longer");
+  EXPECT_EQ(test::readWholeFile(t.path("a.txt")), "second, longer");
   EXPECT_EQ(fs::status(t.path("a.txt")).permissions(), fs::perms(0640));
-  EXPECT_EQ(entries(t.path()), std::vector<std::string>{"a.txt"});
+  EXPECT_EQ(test::folderEntries(t.path()), std::vector<std::string>{"a.txt"});
 }
 
 TEST(AtomicFile, AFailedWriteLeavesTheOldFileByteForByteAndSaysWhy) {
@@ -63,10 +49,10 @@ TEST(AtomicFile, AFailedWriteLeavesTheOldFileByteForByteAndSaysWhy) {
     const test::FileSizeLimit limit(4096);
     EXPECT_FALSE(writeFileAtomically(target, std::string(64 * 1024, 'n'), error));
   }
-  EXPECT_EQ(slurp(target), old);
+  EXPECT_EQ(test::readWholeFile(target), old);
   EXPECT_NE(error.find(target), std::string::npos) << error;
   EXPECT_NE(error.find("File too large"), std::string::npos) << error;
-  EXPECT_EQ(entries(t.path()), std::vector<std::string>{"keep.bin"}) << "the temporary file is removed";
+  EXPECT_EQ(test::folderEntries(t.path()), std::vector<std::string>{"keep.bin"}) << "the temporary file is removed";
 }
 
 TEST(AtomicFile, AnUncommittedFileLeavesNoTrace) {
@@ -79,8 +65,8 @@ TEST(AtomicFile, AnUncommittedFileLeavesNoTrace) {
     ASSERT_TRUE(f.write(std::string("new"), error)) << error;
     EXPECT_TRUE(fs::exists(f.tempPath()));
   }
-  EXPECT_EQ(slurp(target), "old");
-  EXPECT_EQ(entries(t.path()), std::vector<std::string>{"keep.txt"});
+  EXPECT_EQ(test::readWholeFile(target), "old");
+  EXPECT_EQ(test::folderEntries(t.path()), std::vector<std::string>{"keep.txt"});
 }
 
 struct RefusedCase {
@@ -106,7 +92,7 @@ TEST(OutputTarget, TargetsThatAreNotRegularFilesAreRefusedAndLeftAsTheyWere) {
       {"no name", "", "no file name"},
   };
   if (haveDevFull) cases.push_back({"a device", "/dev/full", "it is a device"});
-  const std::vector<std::string> namesBefore = entries(t.path());
+  const std::vector<std::string> namesBefore = test::folderEntries(t.path());
   for (const RefusedCase& c : cases) {
     SCOPED_TRACE(c.name);
     std::string error;
@@ -121,7 +107,7 @@ TEST(OutputTarget, TargetsThatAreNotRegularFilesAreRefusedAndLeftAsTheyWere) {
     EXPECT_TRUE(S_ISCHR(after.st_mode)) << "/dev/full is still the device";
     EXPECT_EQ(after.st_rdev, before.st_rdev);
   }
-  EXPECT_EQ(entries(t.path()), namesBefore) << "nothing created, nothing removed";
+  EXPECT_EQ(test::folderEntries(t.path()), namesBefore) << "nothing created, nothing removed";
   EXPECT_TRUE(fs::is_directory(t.path("folder")));
   EXPECT_TRUE(fs::is_empty(t.path("folder")));
 }
@@ -133,7 +119,7 @@ TEST(OutputTarget, ASymbolicLinkToAFileStaysALink) {
   std::string error;
   ASSERT_TRUE(writeFileAtomically(t.path("link.txt"), "new", error)) << error;
   EXPECT_TRUE(fs::is_symlink(t.path("link.txt")));
-  EXPECT_EQ(slurp(real), "new");
+  EXPECT_EQ(test::readWholeFile(real), "new");
 }
 
 TEST(OutputTarget, StandardStreamsAreWrittenInPlace) {
@@ -164,7 +150,7 @@ TEST(AtomicFile, AFullDiskIsNamedAsTheReason) {
       std::ofstream(target, std::ios::binary) << "old bytes";
       std::string error;
       const bool ok = writeFileAtomically(target, std::string(256 * 1024, 'n'), error);
-      const bool kept = slurp(target) == "old bytes" && entries(mountPoint) == std::vector<std::string>{"keep.bin"};
+      const bool kept = test::readWholeFile(target) == "old bytes" && test::folderEntries(mountPoint) == std::vector<std::string>{"keep.bin"};
       report = std::string(ok ? "written" : kept ? "kept" : "damaged") + "|" + error;
     }
     const ssize_t n = ::write(fds[1], report.data(), report.size());

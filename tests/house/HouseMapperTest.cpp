@@ -8,6 +8,7 @@
 #include "host/house/HouseMapper.hpp"
 #include "host/house/HouseScore.hpp"
 #include "host/network/HouseFiles.hpp"
+#include "tests/support/FileText.hpp"
 #include "tests/support/TempDir.hpp"
 
 namespace nxtmap::house {
@@ -91,13 +92,6 @@ TEST(HouseMapper, SameSeedSameHouse) {
 namespace nxtmap::house {
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 const std::string kWorlds = std::string(NXTMAP_SOURCE_DIR) + "/worlds/";
 
 TEST(HouseMapper, AMappedHouseSavesReloadsAndSavesTheSameBytes) {
@@ -119,7 +113,7 @@ TEST(HouseMapper, AMappedHouseSavesReloadsAndSavesTheSameBytes) {
   for (const auto& f : std::filesystem::directory_iterator(t.path("a"))) {
     ++files;
     const std::string name = f.path().filename().string();
-    EXPECT_EQ(slurp(t.path("a/" + name)), slurp(t.path("b/" + name))) << name;
+    EXPECT_EQ(test::readWholeFile(t.path("a/" + name)), test::readWholeFile(t.path("b/" + name))) << name;
   }
   EXPECT_EQ(files, 1 + 2 * static_cast<int>(m.network().rooms().size()));
 }

@@ -11,39 +11,26 @@
 
 #include "host/mapio/MapFiles.hpp"
 #include "tests/support/FileSizeLimit.hpp"
+#include "tests/support/FileText.hpp"
 #include "tests/support/TempDir.hpp"
 
 namespace nxtmap::mapio {
 namespace {
 namespace fs = std::filesystem;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::vector<std::string> entries(const std::string& dir) {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 TEST(MapSave, AWriteErrorKeepsBothOldFilesAndNamesTheReason) {
   test::TempDir t("mapsave_error");
   std::string error;
   ASSERT_TRUE(saveRosMap(OccupancyMap(4, 3, Occupancy::Free), t.path("room.yaml"), error)) << error;
-  const std::string yaml = slurp(t.path("room.yaml")), pgm = slurp(t.path("room.pgm"));
+  const std::string yaml = test::readWholeFile(t.path("room.yaml")), pgm = test::readWholeFile(t.path("room.pgm"));
   {
     const test::FileSizeLimit limit(1024);  // the 100 x 100 PGM (10 000 bytes) does not fit
     EXPECT_FALSE(saveRosMap(OccupancyMap(100, 100, Occupancy::Occupied), t.path("room.yaml"), error));
   }
   EXPECT_NE(error.find("room.pgm: File too large"), std::string::npos) << error;
-  EXPECT_EQ(slurp(t.path("room.yaml")), yaml);
-  EXPECT_EQ(slurp(t.path("room.pgm")), pgm);
-  EXPECT_EQ(entries(t.path()), (std::vector<std::string>{"room.pgm", "room.yaml"}));
+  EXPECT_EQ(test::readWholeFile(t.path("room.yaml")), yaml);
+  EXPECT_EQ(test::readWholeFile(t.path("room.pgm")), pgm);
+  EXPECT_EQ(test::folderEntries(t.path()), (std::vector<std::string>{"room.pgm", "room.yaml"}));
 }
 
 TEST(MapSave, ATargetThatIsNotAFileIsRefusedBeforeAnythingIsWritten) {
@@ -52,10 +39,10 @@ TEST(MapSave, ATargetThatIsNotAFileIsRefusedBeforeAnythingIsWritten) {
   std::string error;
   EXPECT_FALSE(saveRosMap(OccupancyMap(4, 3, Occupancy::Free), t.path("room.yaml"), error));
   EXPECT_NE(error.find("room.pgm: it is a directory"), std::string::npos) << error;
-  EXPECT_EQ(entries(t.path()), std::vector<std::string>{"room.pgm"});
+  EXPECT_EQ(test::folderEntries(t.path()), std::vector<std::string>{"room.pgm"});
   EXPECT_FALSE(saveRosMap(OccupancyMap(4, 3, Occupancy::Free), t.path("none/room.yaml"), error));
   EXPECT_NE(error.find("does not exist"), std::string::npos) << error;
-  EXPECT_EQ(entries(t.path()), std::vector<std::string>{"room.pgm"});
+  EXPECT_EQ(test::folderEntries(t.path()), std::vector<std::string>{"room.pgm"});
 }
 
 }  // namespace
