@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 #include <utility>
 
 namespace nxtmap::sim {
@@ -49,6 +50,16 @@ World World::fromRows(const std::vector<std::string>& rows, double resolutionM) 
         }
     }
     return World(static_cast<int>(w), static_cast<int>(rows.size()), resolutionM, "rows", std::move(cells));
+}
+
+World World::fromCells(int width, int height, double resolutionM, std::string name, std::vector<uint8_t> cells) {
+    if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide ||
+        cells.size() != static_cast<size_t>(width) * static_cast<size_t>(height)) {
+        throw std::invalid_argument("World::fromCells: " + std::to_string(width) + " x " + std::to_string(height) +
+                                    " cells do not match " + std::to_string(cells.size()) + " values");
+    }
+    for (uint8_t& c : cells) c = static_cast<uint8_t>(c != 0 ? 1 : 0);
+    return World(width, height, resolutionM, std::move(name), std::move(cells));
 }
 
 WorldLoad World::load(const std::string& path) {

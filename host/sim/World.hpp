@@ -52,6 +52,9 @@ public:
     static WorldLoad load(const std::string& path);
     // For tests: '#' or '@' blocked, '.' or ' ' free (anything else blocked); short rows padded free.
     static World fromRows(const std::vector<std::string>& rows, double resolutionM = 0.10);
+    // From computed cells (a scene's truth raster): width, height 1..kMaxSide; cells row-major
+    // width * height, nonzero = blocked (stored as 1).
+    static World fromCells(int width, int height, double resolutionM, std::string name, std::vector<uint8_t> cells);
 
 private:
     World(int width, int height, double resolutionM, std::string name, std::vector<uint8_t> cells);
