@@ -111,11 +111,15 @@ private:
         return Vec2(number(n[0], what + " x", kMaxCoordM), number(n[1], what + " y", kMaxCoordM));
     }
 
-    std::vector<Vec2> points(const YAML::Node& n, const std::string& what) const {
+    std::vector<Vec2> points(const YAML::Node& n, const std::string& what) {
         if (!n.IsSequence()) refuse(at(n), what + " must be a list of points [[x, y], ...] in metres");
         if (n.size() > kMaxPolygonPoints) {
             refuse(at(n), what + " has " + std::to_string(n.size()) + " points; at most " +
                               std::to_string(kMaxPolygonPoints));
+        }
+        pointsRead_ += n.size();
+        if (pointsRead_ > kMaxWorldPoints) {
+            refuse(at(n), "the world has more than " + std::to_string(kMaxWorldPoints) + " points in all");
         }
         std::vector<Vec2> out;
         for (size_t i = 0; i < n.size(); ++i) out.push_back(point(n[i], what + "[" + std::to_string(i) + "]"));
@@ -130,7 +134,7 @@ private:
         return *s;
     }
 
-    DraftShape outline(const YAML::Node& n) const {
+    DraftShape outline(const YAML::Node& n) {
         if (!n.IsMap()) refuse(at(n), "'outline' must be a mapping {polygon: [[x, y], ...], surface: hard}");
         knownKeys(n, "outline", {"polygon", "surface"});
         if (!n["polygon"]) refuse(at(n), "outline: missing 'polygon' (the room's corners [[x, y], ...])");
@@ -142,7 +146,7 @@ private:
         return s;
     }
 
-    void obstacles(const YAML::Node& n, std::vector<DraftShape>& out) const {
+    void obstacles(const YAML::Node& n, std::vector<DraftShape>& out) {
         if (n.IsNull()) return;
         if (!n.IsSequence()) refuse(at(n), "'obstacles' must be a list of polygon, circle and wall entries");
         if (n.size() > kMaxObstacles) {
@@ -152,7 +156,7 @@ private:
         for (size_t i = 0; i < n.size(); ++i) out.push_back(obstacle(n[i], i));
     }
 
-    DraftShape obstacle(const YAML::Node& n, size_t index) const {
+    DraftShape obstacle(const YAML::Node& n, size_t index) {
         DraftShape s;
         s.at = at(n);
         s.label = "obstacles[" + std::to_string(index) + "]";
@@ -207,6 +211,7 @@ private:
     }
 
     std::string file_;
+    size_t pointsRead_ = 0;  // polygon and wall points so far (kMaxWorldPoints)
 };
 
 }  // namespace

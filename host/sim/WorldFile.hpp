@@ -30,11 +30,12 @@
 //
 // Checks (each refusal is one line "FILE[:LINE]: WHERE: problem", LINE 1-based, WHERE e.g. "obstacles[2]
 // (sofa)", index from 0): the marker key; unknown or repeated keys; numbers finite, coordinates within
-// +-kMaxCoordM, the outline within kMaxExtentM a side; polygons of >= 3 distinct points, with an area, not
-// crossing themselves (every pair of sides); walls of >= 2 distinct points; 0 < radius <= kMaxRadiusM;
-// surface names; obstacles inside the outline (touching allowed), obstacle polygons not overlapping one
-// another (the even-odd rule would make their overlap free); the start inside the outline and not inside
-// or on an obstacle. Whether the robot's body fits at the start is the caller's check.
+// +-kMaxCoordM, the outline within kMaxExtentM a side, counts within the kMax bounds below; polygons of >= 3
+// distinct points, with an area, not crossing themselves (every pair of sides); walls of >= 2 distinct
+// points; 0 < radius <= kMaxRadiusM; surface names; obstacles inside the outline (touching allowed),
+// obstacle polygons not overlapping one another (the even-odd rule would make their overlap free); the start
+// inside the outline and not inside or on an obstacle. Whether the robot's body fits at the start is the
+// caller's check.
 #pragma once
 
 #include "host/sim/Scene.hpp"
@@ -52,6 +53,8 @@ constexpr double kMaxExtentM = 200.0;      // the outline's width and height, me
 constexpr double kMaxRadiusM = 5.0;        // a circle's radius, metres
 constexpr size_t kMaxObstacles = 2000;     // entries under obstacles
 constexpr size_t kMaxPolygonPoints = 1000; // points of one polygon or wall
+constexpr size_t kMaxWorldPoints = 10000;  // polygon and wall points in all (keeps the checks, which compare
+                                           // sides pairwise, well under a second; a furnished room has ~100)
 constexpr size_t kMaxNameChars = 100;      // the world's and an obstacle's name
 
 struct WorldSpec {
