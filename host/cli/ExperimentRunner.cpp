@@ -66,6 +66,11 @@ report::RunResult resultOf(const mapping::MappingRun& run) {
   r.sensorReads = c.sensorRequests;
   r.roomCells = static_cast<double>(run.world().width()) * run.world().height();
   r.complete = run.explorer().end() == ExplorerEnd::Complete;
+  r.unsafeFree = s.unsafeFree;
+  r.phantomOccupied = s.phantomOccupied;
+  r.lost = s.lost ? 1.0 : 0.0;
+  r.detectedPctAligned = s.detectedPctAligned();
+  r.wrongCellsAligned = s.wrongCellsAligned;
   return r;
 }
 

@@ -141,6 +141,11 @@ void ExperimentRow::summarize() {
     mean.performancePct += r.performancePct / n;
     mean.timeUnits += r.timeUnits / n;
     mean.sensorReads += r.sensorReads / n;
+    mean.unsafeFree += r.unsafeFree / n;
+    mean.phantomOccupied += r.phantomOccupied / n;
+    mean.lost += r.lost / n;
+    mean.detectedPctAligned += r.detectedPctAligned / n;
+    mean.wrongCellsAligned += r.wrongCellsAligned / n;
     mean.roomCells = r.roomCells;
     mean.complete = mean.complete && r.complete;
     minDetectedPct = std::min(minDetectedPct, r.detectedPct);
@@ -196,9 +201,20 @@ double ExperimentTable::publishedMedianUnknowns() const {
   return medianOf(rows, [](const ExperimentRow& r) { return static_cast<double>(r.scenario.seedUnknowns); });
 }
 
+namespace {
+// The values of kSafetyColumns, each after a comma.
+std::string safetyFields(const RunResult& m) {
+  return "," + formatNumber(m.unsafeFree) + "," + formatNumber(m.phantomOccupied) + "," + formatNumber(m.lost) + "," +
+         formatNumber(m.detectedPctAligned) + "," + formatNumber(m.wrongCellsAligned);
+}
+}  // namespace
+
 const char* ExperimentTable::csvHeader() {
-  return "id,actual_free,found_free,actual_occupied,found_occupied,unknown,wrong_cells,detected_pct,time_units,"
-         "sensor_reads,seed_time_units,seed_sensor_count,seed_detected_pct";
+  static const std::string header =
+      std::string("id,actual_free,found_free,actual_occupied,found_occupied,unknown,wrong_cells,detected_pct,"
+                  "time_units,sensor_reads,seed_time_units,seed_sensor_count,seed_detected_pct,") +
+      kSafetyColumns;
+  return header.c_str();
 }
 
 void ExperimentTable::writeCsv(std::ostream& out) const {
@@ -210,14 +226,15 @@ void ExperimentTable::writeCsv(std::ostream& out) const {
         << formatNumber(m.actualOccupied) << ',' << formatNumber(m.foundOccupied) << ',' << formatNumber(m.unknown)
         << ',' << formatNumber(m.wrongCells) << ',' << formatNumber(m.detectedPct) << ','
         << formatNumber(m.timeUnits) << ',' << formatNumber(m.sensorReads) << ',' << formatNumber(s.seedTimeUnits)
-        << ',' << s.seedSensorCount << ',' << formatNumber(s.seedDetectedPct) << '\n';
+        << ',' << s.seedSensorCount << ',' << formatNumber(s.seedDetectedPct) << safetyFields(m) << '\n';
   }
 }
 
 void ExperimentTable::writeSeedCsv(std::ostream& out, bool header) const {
   if (header) {
     out << "id,strategy,noise,seed,actual_free,found_free,actual_occupied,found_occupied,unknown,"
-           "unknown_observable,wrong_cells,detected_pct,performance_pct,time_units,sensor_reads,complete\n";
+           "unknown_observable,wrong_cells,detected_pct,performance_pct,time_units,sensor_reads,complete,"
+        << kSafetyColumns << '\n';
   }
   for (const ExperimentRow& r : rows) {
     for (size_t i = 0; i < r.perSeed.size(); ++i) {
@@ -228,7 +245,7 @@ void ExperimentTable::writeSeedCsv(std::ostream& out, bool header) const {
           << formatNumber(m.unknownObservable) << ',' << formatNumber(m.wrongCells) << ','
           << formatNumber(m.detectedPct) << ',' << formatNumber(m.performancePct) << ','
           << formatNumber(m.timeUnits) << ',' << formatNumber(m.sensorReads) << ',' << (m.complete ? 1 : 0)
-          << '\n';
+          << safetyFields(m) << '\n';
     }
   }
 }

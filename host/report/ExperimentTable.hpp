@@ -7,6 +7,9 @@
 
 namespace nxtmap::report {
 
+// The columns both CSVs end with, after their older columns (readers of those keep working).
+constexpr const char* kSafetyColumns = "unsafe_free,phantom_occupied,lost,detected_pct_aligned,wrong_cells_aligned";
+
 // The thesis's medians over the 18 runs (Chapter 5).
 constexpr double kPublishedMedianTimeUnits = 350.5;
 constexpr double kPublishedMedianSensorReads = 1143.5;
@@ -45,6 +48,9 @@ struct RunResult {
   double timeUnits = 0, sensorReads = 0;
   double roomCells = 0;       // world width * height
   bool complete = true;       // the explorer finished normally
+  // Safety (mapping::MapScore): a mean over seeds is a mean count; `lost` is 0/1, its mean the share lost.
+  double unsafeFree = 0, phantomOccupied = 0, lost = 0;
+  double detectedPctAligned = 0, wrongCellsAligned = 0;  // after the best rigid alignment to the world
 };
 
 // One scenario's results: the mean over the seeds plus the spread.
@@ -76,7 +82,7 @@ struct ExperimentTable {
   double publishedMedianSensorReads() const;
   double publishedMedianUnknowns() const;
 
-  // CSV header, exactly the published comparison columns.
+  // CSV header: the published comparison columns, then the safety columns (kSafetyColumns).
   static const char* csvHeader();
   // One row per scenario (means over the seeds).
   void writeCsv(std::ostream& out) const;

@@ -174,6 +174,16 @@ TEST(ExperimentTable, CsvColumnsAndMeans) {
   b.detectedPct = 90;
   a.wrongCells = 0;
   b.wrongCells = 3;
+  a.unsafeFree = 0;
+  b.unsafeFree = 2;
+  a.phantomOccupied = 0;
+  b.phantomOccupied = 1;
+  a.lost = 0;
+  b.lost = 1;
+  a.detectedPctAligned = 100;
+  b.detectedPctAligned = 97;
+  a.wrongCellsAligned = 0;
+  b.wrongCellsAligned = 1;
   row.perSeed = {a, b};
   row.summarize();
   EXPECT_DOUBLE_EQ(row.mean.timeUnits, 100.5);
@@ -185,7 +195,27 @@ TEST(ExperimentTable, CsvColumnsAndMeans) {
   const std::vector<std::string> rows = cli::test::lines(csv.str());
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0], ExperimentTable::csvHeader());
-  EXPECT_EQ(rows[1], "occ1,0,0,0,0,0,1.5,95,100.5,0,294,1189,100");
+  EXPECT_EQ(rows[1], "occ1,0,0,0,0,0,1.5,95,100.5,0,294,1189,100,1,0.5,0.5,98.5,0.5");
+  // The older columns keep their places; the safety columns follow them.
+  EXPECT_EQ(std::string(ExperimentTable::csvHeader()).rfind(
+                "id,actual_free,found_free,actual_occupied,found_occupied,unknown,wrong_cells,detected_pct,time_units,"
+                "sensor_reads,seed_time_units,seed_sensor_count,seed_detected_pct,",
+                0),
+            0u);
+  EXPECT_EQ(rows[0].substr(rows[0].size() - std::string(kSafetyColumns).size()), kSafetyColumns);
+
+  t.strategy = "propagation";
+  t.noise = "typical";
+  std::ostringstream seedCsv;
+  t.writeSeedCsv(seedCsv);
+  const std::vector<std::string> seedRows = cli::test::lines(seedCsv.str());
+  ASSERT_EQ(seedRows.size(), 3u);
+  EXPECT_EQ(seedRows[0],
+            "id,strategy,noise,seed,actual_free,found_free,actual_occupied,found_occupied,unknown,unknown_observable,"
+            "wrong_cells,detected_pct,performance_pct,time_units,sensor_reads,complete,unsafe_free,phantom_occupied,"
+            "lost,detected_pct_aligned,wrong_cells_aligned");
+  EXPECT_EQ(seedRows[1], "occ1,propagation,typical,1,0,0,0,0,0,0,0,100,0,100,0,1,0,0,0,100,0");
+  EXPECT_EQ(seedRows[2], "occ1,propagation,typical,2,0,0,0,0,0,0,3,90,0,101,0,1,2,1,1,97,1");
 }
 
 TEST(ExperimentTable, MalformedLinesAreNamed) {
