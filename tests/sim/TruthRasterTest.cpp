@@ -1,10 +1,14 @@
 // The truth on the robot's grid by the safe rule (rasterizeScene) and the grid laid over a scene (placeOnGrid).
 #include "host/sim/TruthRaster.hpp"
 
+#include "host/sim/SceneFromRaster.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace nxtmap::sim {
@@ -214,6 +218,70 @@ TEST(WorldFromCells, KeepsTheCellsAndRejectsAMismatch) {
     EXPECT_EQ(w.name(), "cells");
     EXPECT_THROW(World::fromCells(3, 3, 0.2, "bad", {0, 1}), std::invalid_argument);
     EXPECT_THROW(World::fromCells(0, 1, 0.2, "bad", {}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace nxtmap::sim
+
+namespace nxtmap::sim {
+namespace {
+
+// The raster's own grid: cell (0, 0) centred half a cell in from the plane origin (traceRaster's plane).
+GridFrame ownGrid(const World& w) {
+    GridFrame f;
+    f.cellCm = w.resolutionM() * 100.0;
+    f.originCm = Vec2(f.cellCm / 2.0, f.cellCm / 2.0);
+    return f;
+}
+
+void expectSameCells(const World& a, const World& b, const std::string& label) {
+    ASSERT_EQ(a.width(), b.width()) << label;
+    ASSERT_EQ(a.height(), b.height()) << label;
+    int differ = 0;
+    for (int r = 0; r < a.height(); ++r) {
+        for (int c = 0; c < a.width(); ++c) differ += a.blocked(c, r) != b.blocked(c, r) ? 1 : 0;
+    }
+    EXPECT_EQ(differ, 0) << label;
+}
+
+TEST(TruthRaster, PublishedWorldsTracedComeBackCellForCell) {
+    const std::string dir = std::string(NXTMAP_SOURCE_DIR) + "/worlds/seed-appendix-a/";
+    for (const char* name : {"occupancy-089", "occupancy-095", "occupancy-101", "occupancy-107", "occupancy-113",
+                             "occupancy-120", "occupancy-127", "occupancy-132", "occupancy-139", "start-positions"}) {
+        const WorldLoad load = World::load(dir + name + ".map");
+        ASSERT_TRUE(load.world) << load.error;
+        const World& w = *load.world;
+        const Scene scene = traceRaster(w);
+        expectSameCells(rasterizeScene(scene, ownGrid(w), w.width(), w.height(), name), w, name);
+        // Placed from a free cell's centre, square: the raster's own grid again.
+        int col = -1, row = -1;
+        for (int r = 0; r < w.height() && col < 0; ++r) {
+            for (int c = 0; c < w.width() && col < 0; ++c) {
+                if (!w.blocked(c, r)) std::tie(col, row) = std::make_pair(c, r);
+            }
+        }
+        const double cell = w.resolutionM() * 100.0;
+        const Placement p = placeOnGrid(scene, Vec2((col + 0.5) * cell, (row + 0.5) * cell), 0.0, cell);
+        EXPECT_EQ(p.startCol, col) << name;
+        EXPECT_EQ(p.startRow, row) << name;
+        expectSameCells(rasterizeScene(scene, p.frame, p.width, p.height, name), w, name);
+    }
+}
+
+TEST(TruthRaster, TracedRoomsWithFreeBorderCellsComeBackOnTheirOwnGrid) {
+    const std::vector<std::vector<std::string>> rooms = {
+        {"....", "....", "...."},
+        {"#.#.#", ".....", "#.#.#", "..#.."},
+        {"#..#", ".##.", ".##.", "#..#"},  // blocked cells meeting at corners
+        {".#.", "#.#", ".#."},
+    };
+    for (const auto& rows : rooms) {
+        for (const double res : {0.10, 0.20, 0.05}) {
+            const World w = World::fromRows(rows, res);
+            expectSameCells(rasterizeScene(traceRaster(w), ownGrid(w), w.width(), w.height(), "rows"), w,
+                            joined(rows) + " at " + std::to_string(res));
+        }
+    }
 }
 
 }  // namespace
