@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -125,9 +126,14 @@ sim::World loadWorld(const std::string& path) {
 }
 
 void checkRangeCoversCell(const sim::World& world, double rangeM) {
-  const RangeGeometry g = mapping::sonarGeometryFor(world, 0.05, rangeM, 0.0);
+  checkRangeCoversCell(static_cast<int>(std::lround(world.resolutionM() * 100.0)), rangeM);
+}
+
+void checkRangeCoversCell(int cellCm, double rangeM) {
+  RangeGeometry g;
+  g.cellCm = static_cast<int16_t>(cellCm);
+  g.maxCm = static_cast<int16_t>(std::lround(rangeM * 100.0));
   if (g.freeCells() >= 1) return;
-  const int cellCm = g.cellCm;
   char buf[240];
   std::snprintf(buf, sizeof buf,
                 "--range-m %g reaches less than 1.5 of the world's %d cm cells, so no reading could prove a "

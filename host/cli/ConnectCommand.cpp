@@ -12,6 +12,7 @@
 #include <sstream>
 #include <thread>
 
+#include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
 #include "host/console/Console.hpp"
 #include "host/link/SimTransport.hpp"
@@ -33,10 +34,13 @@ CLI::App* addConnectCommand(CLI::App& app, ConnectOptions& o) {
   c->add_option("--house", o.house, "load a saved house directory (nxtmap sim-house / save DIR); its room --room goes to the brick");
   c->add_option("--room", o.room, "with --house: the room the brick stands in, by number (default 0); the brick's pose is read in "
                                   "that room's frame");
+  addWorldRunOptions(*c, o.run);
+  c->add_option("--seed", o.seed, "sim: links only: random seed of the noise and the start jitter (default 1)");
   return c;
 }
 
 int runConnect(const ConnectOptions& o) {
+  if (printNoiseListIfAsked(o.run)) return kExitOk;
   link::LinkSpec spec;
   try {
     spec = link::parseLinkSpec(o.link);
@@ -45,6 +49,16 @@ int runConnect(const ConnectOptions& o) {
   }
   if (!(o.speed > 0 && o.speed <= 1000)) throw CliError("connect: --speed must be in (0, 1000]");
   if (o.speed != 1.0 && spec.kind != link::LinkSpec::Kind::Sim) throw CliError("connect: --speed only applies to sim: links");
+  const WorldRunOptions defaults;
+  if (spec.kind != link::LinkSpec::Kind::Sim &&
+      (o.run.noise != defaults.noise || o.run.robot != defaults.robot || o.run.startJitterDeg != 0.0 || o.seed != "1"))
+    throw CliError("connect: --noise, --robot, --start-jitter and --seed only apply to sim: links (a real or emulated "
+                   "brick has its own)");
+  link::SimTransportOptions simOptions;
+  simOptions.noise = parseNoise(o.run.noise);
+  simOptions.seed = parseSeed(o.seed);
+  if (o.run.robot != defaults.robot) simOptions.robot = parseRobot(o.run.robot);
+  simOptions.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
   // Checked before any arithmetic: NaN, infinities, huge or negative values would never end the wait.
   if (!(o.connectTimeoutS > 0 && o.connectTimeoutS <= kMaxConnectTimeoutS)) {
     throw CliError("connect: --connect-timeout must be a number of seconds in (0, 3600]");
@@ -70,7 +84,7 @@ int runConnect(const ConnectOptions& o) {
     // Load the world now, so a bad world is a clear error rather than an endless retry.
     std::shared_ptr<link::SimTransport> first;
     try {
-      first = std::make_shared<link::SimTransport>(spec, o.speed);
+      first = std::make_shared<link::SimTransport>(spec, o.speed, simOptions);
     } catch (const link::LinkError& e) {
       throw CliError(std::string("connect: ") + e.what());
     }

@@ -18,14 +18,17 @@ namespace nxtmap::cli {
 
 CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
   CLI::App* c = app.add_subcommand("emulate", "the firmware image in the emulated brick, driving the simulated robot");
-  c->add_option("world", o.world, "world file: Moving AI .map or ROS map_server .yaml")->required();
-  c->add_option("--start", o.start, "start cell COL,ROW (col right, row down from the top-left)")->required();
+  c->add_option("world", o.world,
+                "world: Moving AI .map, ROS map_server .yaml, nxtmap world .yaml (worlds/rooms) or HouseExpo .json");
+  c->add_option("--start", o.start,
+                "start cell COL,ROW of a raster world (col right, row down from the top-left); for a world file "
+                "X,Y[,YAW] in its metres (default: the file's own start)");
   c->add_option("--heading", o.heading, "initial heading N, E, S or W (default N)");
   c->add_option("--firmware", o.firmware, "firmware ELF (default build/firmware/nxtmap.elf, see make firmware)");
   c->add_option("--listen", o.listen, "PC side of the Bluetooth link: tcp:127.0.0.1:PORT or pty");
   c->add_option("--lcd", o.lcd, "write the LCD picture as PNG at the end");
   c->add_option("--speed", o.speed, "max (as fast as possible) or realtime (default max)");
-  c->add_option("--noise", o.noise, "noise profile: none, typical, harsh (default none)");
+  addWorldRunOptions(*c, o.run, "default: the firmware's own (nxtmap-sim.elf published, nxtmap.elf brick)");
   c->add_option("--seed", o.seed, "random seed of the noise (default 1)");
   c->add_option("--seconds", o.seconds, "emulated time limit in seconds (default 3600)");
   c->add_option("--until", o.until,
@@ -36,12 +39,14 @@ CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
 }
 
 int runEmulate(const EmulateOptions& o) {
+  if (printNoiseListIfAsked(o.run)) return kExitOk;
+  requirePositional(o.world, "emulate: world");
   emu::EmulatedRunOptions run;
-  const CellArg start = parseCell(o.start, "--start");
-  run.brick.startCol = start.col;
-  run.brick.startRow = start.row;
-  run.brick.heading = parseHeading(o.heading);
-  run.brick.noise = parseNoise(o.noise);
+  const sim::RobotDescription robot = parseRobot(o.run.robot.empty() ? robotForFirmware(o.firmware) : o.run.robot);
+  run.brick.robot = robot;
+  run.brick.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
+  parseHeading(o.heading);
+  run.brick.noise = parseNoise(o.run.noise);
   run.brick.seed = parseSeed(o.seed);
   if (o.speed != "max" && o.speed != "realtime")
     throw CliError("--speed must be max or realtime, not '" + o.speed + "'");
@@ -58,8 +63,9 @@ int runEmulate(const EmulateOptions& o) {
   run.stopWhenPcLeaves = until == "disconnect";
   std::string lcdError;  // --lcd is checked before the run (a missing folder, a device): nothing written yet
   if (!o.lcd.empty() && !fileio::resolveOutputTarget(o.lcd, lcdError)) throw CliError("--lcd: " + lcdError);
-  const sim::World world = loadWorld(o.world);
-  checkStart(world, start.col, start.row, "");
+  const sim::Site site = loadSiteFile(o.world, robot.cellCm);
+  run.brick.startPose = parseSiteStart(site, o.start, o.heading);
+  checkStartFits(site, robot, *run.brick.startPose);
   emu::ElfLoad load = emu::ElfImage::load(o.firmware);
   if (!load.image) {
     std::string hint = std::filesystem::exists(o.firmware) ? "" : " (build it with 'make firmware' or pass --firmware)";
@@ -79,13 +85,14 @@ int runEmulate(const EmulateOptions& o) {
     run.brick.link = link.get();
   }
 
-  emu::EmulatedRun emulated(*load.image, world, run);
+  emu::EmulatedRun emulated(*load.image, site, run);
   const emu::EmulatedRunReport r = emulated.run();
 
   auto num = [](double v, int d = 1) { return report::formatNumber(v, d); };
   std::ostringstream out;
-  out << "run              " << world.name() << " " << world.width() << "x" << world.height() << ", start " << start.col
-      << "," << start.row << " heading " << o.heading << ", firmware " << o.firmware << ", noise "
+  out << "run              " << site.name << ", robot " << robot.name << " (" << robot.cellCm << " cm cells), start "
+      << (o.start.empty() ? "the world's own" : o.start) << " heading " << o.heading << ", firmware " << o.firmware
+      << ", noise "
       << run.brick.noise.name << ", seed " << run.brick.seed << "\n"
       << "end              "
       << (r.fault ? "FAULT" : r.pcLeft ? (r.finished ? "the PC disconnected (exploration done)" : "the PC disconnected")

@@ -5,6 +5,8 @@
 #pragma once
 #include <string>
 
+#include "host/cli/SiteFiles.hpp"
+
 namespace CLI {
 class App;
 }
@@ -20,7 +22,7 @@ struct EmulateOptions {
   std::string until;         // explored | disconnect (default: disconnect with --listen, else explored)
   std::string lcd;           // PNG of the LCD at the end
   std::string speed = "max"; // max | realtime
-  std::string noise = "none";
+  WorldRunOptions run{"ideal", "", 0.0};  // --noise, --robot (empty: the firmware's own), --start-jitter
   std::string seed = "1";
   double seconds = 3600.0;   // emulated time limit
   double enterAt = 1.0;      // emulated second at which Enter is pressed (< 0: never)

@@ -8,10 +8,11 @@
 
 namespace nxtmap::cli {
 
-Suite loadSuite(const std::string& dirOrTsv) {
+Suite loadSuite(const std::string& dirOrTsv, int cellCm) {
   namespace fs = std::filesystem;
   std::error_code ec;
   Suite suite;
+  suite.cellCm = cellCm;
   if (fs::is_directory(dirOrTsv, ec)) {
     suite.tsvPath = (fs::path(dirOrTsv) / "scenarios.tsv").string();
     if (!fs::exists(suite.tsvPath, ec)) throw CliError(dirOrTsv + ": no scenarios.tsv in this directory");
@@ -27,9 +28,11 @@ Suite loadSuite(const std::string& dirOrTsv) {
     const std::string where = suite.tsvPath + " line " + std::to_string(s.line) + ": ";
     auto it = suite.worlds.find(s.mapPath);
     if (it == suite.worlds.end()) {
-      sim::WorldLoad w = sim::World::load(s.mapPath);
+      sim::WorldLoad w = fs::path(s.mapPath).extension() == ".map" ? sim::World::loadMovingAi(s.mapPath, cellCm / 100.0)
+                                                                    : sim::World::load(s.mapPath);
       if (!w.world) throw CliError(where + w.error);
       it = suite.worlds.emplace(s.mapPath, std::move(*w.world)).first;
+      suite.sites.emplace(s.mapPath, sim::siteFromRaster(it->second));
     }
     checkStart(it->second, s.startCol, s.startRow, where);
   }
@@ -74,6 +77,19 @@ report::RunResult resultOf(const mapping::MappingRun& run) {
   return r;
 }
 
+mapping::RunConfig scenarioConfig(const report::Scenario& s, const SuiteSettings& settings, uint64_t seed) {
+  mapping::RunConfig c = scenarioConfig(s, settings.strategy, parseNoise(settings.noise), seed);
+  c.robot = settings.robot;
+  c.startJitterDeg = settings.startJitterDeg;
+  return c;
+}
+
+report::RunResult runOnce(const sim::Site& site, const mapping::RunConfig& config) {
+  mapping::MappingRun run(site, config);
+  run.runToEnd();
+  return resultOf(run);
+}
+
 report::RunResult runOnce(const sim::World& world, const mapping::RunConfig& config) {
   mapping::MappingRun run(world, config);
   run.runToEnd();
@@ -82,19 +98,28 @@ report::RunResult runOnce(const sim::World& world, const mapping::RunConfig& con
 
 report::ExperimentTable runSuite(const Suite& suite, mapping::Strategy strategy, const std::string& noiseName,
                                  int seeds, const Progress& progress, size_t doneBefore, size_t total) {
-  const sim::NoiseProfile noise = parseNoise(noiseName);
+  SuiteSettings settings;
+  settings.strategy = strategy;
+  settings.noise = noiseName;
+  settings.seeds = seeds;
+  return runSuite(suite, settings, progress, doneBefore, total);
+}
+
+report::ExperimentTable runSuite(const Suite& suite, const SuiteSettings& settings, const Progress& progress,
+                                 size_t doneBefore, size_t total) {
+  parseNoise(settings.noise);
   report::ExperimentTable table;
-  table.strategy = mapping::strategyName(strategy);
-  table.noise = noiseName;
-  table.seeds = seeds;
-  if (total == 0) total = suite.scenarios.size() * static_cast<size_t>(seeds);
+  table.strategy = mapping::strategyName(settings.strategy);
+  table.noise = settings.noise;
+  table.seeds = settings.seeds;
+  if (total == 0) total = suite.scenarios.size() * static_cast<size_t>(settings.seeds);
   size_t done = doneBefore;
   for (const report::Scenario& s : suite.scenarios) {
     report::ExperimentRow row;
     row.scenario = s;
-    for (int seed = 1; seed <= seeds; ++seed) {
+    for (int seed = 1; seed <= settings.seeds; ++seed) {
       if (progress) progress(done, total, s.id);
-      row.perSeed.push_back(runOnce(suite.world(s), scenarioConfig(s, strategy, noise, static_cast<uint64_t>(seed))));
+      row.perSeed.push_back(runOnce(suite.site(s), scenarioConfig(s, settings, static_cast<uint64_t>(seed))));
       ++done;
     }
     row.summarize();

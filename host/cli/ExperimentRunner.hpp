@@ -7,29 +7,47 @@
 
 #include "host/mapping/MappingRun.hpp"
 #include "host/report/ExperimentTable.hpp"
+#include "host/sim/RobotDescription.hpp"
+#include "host/sim/Site.hpp"
 #include "host/sim/World.hpp"
 
 namespace nxtmap::cli {
 
 struct Suite {
   std::string tsvPath;
+  int cellCm = 10;                           // the layouts' cells: the robot's (10 published, 20 brick)
   std::vector<report::Scenario> scenarios;
   std::map<std::string, sim::World> worlds;  // by Scenario::mapPath
+  std::map<std::string, sim::Site> sites;    // the same worlds traced into scenes
   const sim::World& world(const report::Scenario& s) const { return worlds.at(s.mapPath); }
+  const sim::Site& site(const report::Scenario& s) const { return sites.at(s.mapPath); }
 };
 
-// DIR/scenarios.tsv (or the .tsv file itself) and every world it names; each start is checked.
-// Throws CliError naming the file (and line) on any problem.
-Suite loadSuite(const std::string& dirOrTsv);
+// DIR/scenarios.tsv (or the .tsv file itself) and every world it names, its layouts scaled to cells of cellCm
+// (Moving AI maps have no resolution of their own: 10 cm as published, 20 cm for the brick); each start is
+// checked. Throws CliError naming the file (and line) on any problem.
+Suite loadSuite(const std::string& dirOrTsv, int cellCm = 10);
 
-// The published set-up for a scenario: 1 m range, initial heading N.
+// How a suite is run: one strategy, one noise preset, seeds 1..seeds, one robot, set down square or not.
+struct SuiteSettings {
+  mapping::Strategy strategy = mapping::Strategy::Propagation;
+  std::string noise = "ideal";
+  int seeds = 1;
+  sim::RobotDescription robot = *sim::robotByName("published");
+  double startJitterDeg = 0.0;
+};
+
+// The published set-up for a scenario: 1 m range, initial heading N (a point robot of the raster's cells).
 mapping::RunConfig scenarioConfig(const report::Scenario& s, mapping::Strategy strategy,
                                   const sim::NoiseProfile& noise, uint64_t seed);
+// The same for a robot and a start jitter.
+mapping::RunConfig scenarioConfig(const report::Scenario& s, const SuiteSettings& settings, uint64_t seed);
 
 // The figures of a finished run.
 report::RunResult resultOf(const mapping::MappingRun& run);
 // One full run.
 report::RunResult runOnce(const sim::World& world, const mapping::RunConfig& config);
+report::RunResult runOnce(const sim::Site& site, const mapping::RunConfig& config);
 
 using Progress = std::function<void(size_t done, size_t total, const std::string& id)>;
 
@@ -38,5 +56,7 @@ using Progress = std::function<void(size_t done, size_t total, const std::string
 report::ExperimentTable runSuite(const Suite& suite, mapping::Strategy strategy, const std::string& noiseName,
                                  int seeds, const Progress& progress = {}, size_t doneBefore = 0,
                                  size_t total = 0);
+report::ExperimentTable runSuite(const Suite& suite, const SuiteSettings& settings, const Progress& progress = {},
+                                 size_t doneBefore = 0, size_t total = 0);
 
 }  // namespace nxtmap::cli

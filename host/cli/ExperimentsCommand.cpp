@@ -40,27 +40,33 @@ void writeOutput(const std::string& path, const std::string& text) {
 
 CLI::App* addExperimentsCommand(CLI::App& app, ExperimentsOptions& o) {
   CLI::App* ex = app.add_subcommand("experiments", "every run of DIR/scenarios.tsv beside the published figures");
-  ex->add_option("dir", o.dir, "scenario directory holding scenarios.tsv (e.g. worlds/seed-appendix-a)")
-      ->required();
+  ex->add_option("dir", o.dir, "scenario directory holding scenarios.tsv (e.g. worlds/seed-appendix-a)");
   ex->add_option("--csv", o.csv,
                  "write the results as CSV (with --strategy both: FILE-<strategy>.csv; with --seeds N>1 also "
                  "FILE-seeds.csv per run)");
   ex->add_option("--markdown", o.markdown, "write a Markdown report");
   ex->add_option("--plots", o.plots, "write gnuplot figures fig5_3/fig5_4/fig5_6 (.png) into this directory");
-  ex->add_option("--noise", o.noise, "noise profile: none, typical, harsh (default none)");
+  addWorldRunOptions(*ex, o.run);
   ex->add_option("--seeds", o.seeds, "runs per scenario with seeds 1..N, reported as means (default 1)");
   ex->add_option("--strategy", o.strategy, "propagation, frontier or both (default propagation)");
   return ex;
 }
 
 int runExperiments(const ExperimentsOptions& o) {
+  if (printNoiseListIfAsked(o.run)) return kExitOk;
+  requirePositional(o.dir, "experiments: dir");
   const std::vector<mapping::Strategy> strategies = parseStrategies(o.strategy);
-  parseNoise(o.noise);
+  SuiteSettings settings;
+  parseNoise(o.run.noise);
+  settings.noise = o.run.noise;
+  settings.seeds = o.seeds;
+  settings.robot = parseRobot(o.run.robot);
+  settings.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
   if (o.seeds < 1 || o.seeds > 1000) throw CliError("--seeds must lie in 1..1000, not " + std::to_string(o.seeds));
   if (!o.plots.empty() && report::findGnuplot().empty()) {
     throw CliError("--plots needs gnuplot, which is not on PATH; install gnuplot or leave out --plots");
   }
-  const Suite suite = loadSuite(o.dir);
+  const Suite suite = loadSuite(o.dir, settings.robot.cellCm);
 
   // Check every output first so a bad path fails before the runs.
   std::vector<std::string> csvs;
@@ -87,13 +93,16 @@ int runExperiments(const ExperimentsOptions& o) {
   std::vector<report::ExperimentTable> tables;
   size_t done = 0;
   for (mapping::Strategy s : strategies) {
-    tables.push_back(runSuite(suite, s, o.noise, o.seeds, progress, done, total));
+    settings.strategy = s;
+    tables.push_back(runSuite(suite, settings, progress, done, total));
     done += suite.scenarios.size() * static_cast<size_t>(o.seeds);
   }
   if (tty) std::cerr << "\r\x1b[K" << std::flush;
 
   std::cout << "experiments " << suite.tsvPath << ": " << suite.scenarios.size() << " runs";
   if (o.seeds > 1) std::cout << " x " << o.seeds << " seeds";
+  std::cout << ", robot " << settings.robot.name << " (" << settings.robot.cellCm << " cm cells)";
+  if (settings.startJitterDeg > 0.0) std::cout << ", set down up to " << settings.startJitterDeg << " deg off square";
   std::cout << ", published medians " << report::formatNumber(report::kPublishedMedianTimeUnits)
             << " time units, " << report::formatNumber(report::kPublishedMedianSensorReads) << " sensor reads\n";
   for (const report::ExperimentTable& t : tables) {

@@ -3,6 +3,8 @@
 #pragma once
 #include <string>
 
+#include "host/cli/SiteFiles.hpp"
+
 namespace CLI {
 class App;
 }
@@ -14,7 +16,7 @@ struct ExperimentsOptions {
   std::string csv;       // --strategy both: FILE-<strategy>.csv per strategy
   std::string markdown;
   std::string plots;     // directory
-  std::string noise = "none";
+  WorldRunOptions run;   // --noise, --robot (brick: the layouts scaled to 20 cm cells), --start-jitter
   int seeds = 1;
   std::string strategy = "propagation";  // or frontier, both
 };

@@ -89,11 +89,14 @@ void drawFrame(const mapping::MappingRun& run, const report::MapTextOptions& tex
 
 CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
   CLI::App* sim = app.add_subcommand("sim", "one mapping run in the simulator");
-  sim->add_option("world", o.world, "world file: Moving AI .map or ROS map_server .yaml")->required();
-  sim->add_option("--start", o.start, "start cell COL,ROW (col right, row down from the top-left)")->required();
-  sim->add_option("--heading", o.heading, "initial heading N, E, S or W (default N)");
-  sim->add_option("--range-m", o.rangeM, "trusted maximum sensor range in metres (default 1)");
-  sim->add_option("--noise", o.noise, "noise profile: none, typical, harsh (default none)");
+  sim->add_option("world", o.world,
+                  "world: Moving AI .map, ROS map_server .yaml, nxtmap world .yaml (worlds/rooms) or HouseExpo .json");
+  sim->add_option("--start", o.start,
+                  "start cell COL,ROW of a raster world (col right, row down from the top-left); for a world "
+                  "file X,Y[,YAW] in its metres (default: the file's own start)");
+  sim->add_option("--heading", o.heading, "initial heading N, E, S or W on a raster world (default N)");
+  sim->add_option("--range-m", o.rangeM, "trusted maximum sensor range in metres (default: the robot's, 1 m published)");
+  addWorldRunOptions(*sim, o.run);
   sim->add_option("--seed", o.seed, "random seed of the noise (default 1)");
   sim->add_option("--strategy", o.strategy, "exploration strategy: propagation, frontier (default propagation)");
   sim->add_option("--show", o.show, "display: live, final, none (default final)");
@@ -104,14 +107,17 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
 }
 
 int runSim(const SimOptions& o) {
+  if (printNoiseListIfAsked(o.run)) return kExitOk;
+  requirePositional(o.world, "sim: world");
   mapping::RunConfig config;
-  const CellArg start = parseCell(o.start, "--start");
-  config.startCol = start.col;
-  config.startRow = start.row;
-  config.heading = parseHeading(o.heading);
-  config.rangeM = checkRangeM(o.rangeM);
-  config.noise = parseNoise(o.noise);
+  sim::RobotDescription robot = parseRobot(o.run.robot);
+  if (o.rangeM != 0.0) robot.rangeM = checkRangeM(o.rangeM);
+  checkRangeCoversCell(robot.cellCm, robot.rangeM);
+  config.robot = robot;
+  config.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
+  config.noise = parseNoise(o.run.noise);
   config.seed = parseSeed(o.seed);
+  parseHeading(o.heading);
   config.strategy = parseStrategy(o.strategy);
   const Show show = parseShow(o.show);
   if (o.delayMs < 0 || o.delayMs > 10000) {
@@ -125,13 +131,14 @@ int runSim(const SimOptions& o) {
   for (const std::string& out : {o.png, o.save}) {
     if (!out.empty() && !fileio::resolveOutputTarget(out, outputError)) throw CliError(outputError);
   }
-  const sim::World world = loadWorld(o.world);
-  checkRangeCoversCell(world, config.rangeM);
-  checkStart(world, config.startCol, config.startRow, "");
+  const sim::Site site = loadSiteFile(o.world, robot.cellCm);
+  config.startPose = parseSiteStart(site, o.start, o.heading);
+  checkStartFits(site, robot, *config.startPose);
 
   report::MapTextOptions textOptions;
   textOptions.color = colorWanted();
-  mapping::MappingRun run(world, config);
+  mapping::MappingRun run(site, config);
+  const sim::World& world = run.world();
   if (show == Show::Live) {
     drawFrame(run, textOptions, true);
     while (!run.finished()) {
@@ -155,10 +162,15 @@ int runSim(const SimOptions& o) {
   const mapping::MapScore s = mapping::scoreRun(run);
   auto num = [](double v) { return report::formatNumber(v, 1); };
   std::ostringstream out;
-  out << "\nrun              " << world.name() << " " << world.width() << "x" << world.height() << ", start "
-      << config.startCol << "," << config.startRow << " heading " << o.heading << ", strategy "
+  out << "\nrun              " << world.name() << " " << world.width() << "x" << world.height() << " cells of " << robot.cellCm << " cm, robot " << robot.name << ", start "
+      << run.config().startCol << "," << run.config().startRow << " heading " << o.heading;
+  if (config.startJitterDeg > 0.0) {
+    out << " (set down " << report::formatNumber(run.robot().headingDeg() - sim::headingToDeg(run.config().heading), 1)
+        << " deg off square)";
+  }
+  out << ", strategy "
       << mapping::strategyName(config.strategy) << ", noise " << config.noise.name << ", seed " << config.seed
-      << ", range " << report::formatNumber(config.rangeM) << " m\n"
+      << ", range " << report::formatNumber(robot.rangeM) << " m\n"
       << "end              " << endName(run.explorer().end()) << "\n"
       << "time units       " << report::formatNumber(c.timeHalfUnits() / 2.0, 1) << "\n"
       << "sensor requests  " << c.sensorRequests << "\n"

@@ -1,8 +1,10 @@
-// `nxtmap sim WORLD --start C,R ...`: one mapping run in the simulator, shown live or at the end,
+// `nxtmap sim WORLD [--start C,R] ...`: one mapping run in the simulator, shown live or at the end,
 // then its counters and its score against the world.
 #pragma once
 #include <cstdint>
 #include <string>
+
+#include "host/cli/SiteFiles.hpp"
 
 namespace CLI {
 class App;
@@ -14,8 +16,8 @@ struct SimOptions {
   std::string world;
   std::string start;
   std::string heading = "N";
-  double rangeM = 1.0;
-  std::string noise = "none";
+  double rangeM = 0.0;         // trusted maximum range, m; 0 = the robot's own
+  WorldRunOptions run;         // --noise, --robot, --start-jitter
   std::string seed = "1";
   std::string strategy = "propagation";
   std::string show = "final";  // live | final | none

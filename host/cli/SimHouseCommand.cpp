@@ -23,11 +23,14 @@ bool endsWith(const std::string& s, const std::string& tail) {
 
 CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& o) {
   CLI::App* c = app.add_subcommand("sim-house", "map a house room by room in the simulator");
-  c->add_option("world", o.world, "world: HouseExpo .json plan, Moving AI .map or ROS map_server .yaml")->required();
-  c->add_option("--start", o.start, "start cell COL,ROW (col right, row down); optional for a .json plan");
+  c->add_option("world", o.world,
+                "world: HouseExpo .json plan, Moving AI .map, ROS map_server .yaml or nxtmap world .yaml");
+  c->add_option("--start", o.start,
+                "start cell COL,ROW of a raster world (col right, row down); for a world file X,Y[,YAW] in its "
+                "metres; optional for a .json plan and a world file with a start");
   c->add_option("--heading", o.heading, "initial heading N, E, S or W (default N)");
-  c->add_option("--range-m", o.rangeM, "trusted maximum sensor range in metres (default 1)");
-  c->add_option("--noise", o.noise, "noise profile: none, typical, harsh (default none)");
+  c->add_option("--range-m", o.rangeM, "trusted maximum sensor range in metres (default: the robot's, 1 m published)");
+  addWorldRunOptions(*c, o.run);
   c->add_option("--seed", o.seed, "random seed of the noise (default 1)");
   c->add_option("--strategy", o.strategy, "exploration strategy per room: propagation, frontier (default frontier: fewer turns, so the pose holds better across rooms)");
   c->add_option("--save", o.save, "directory to save the house in (ROS map per room + house.yaml)");
@@ -35,35 +38,40 @@ CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& o) {
 }
 
 int runSimHouse(const SimHouseOptions& o) {
+  if (printNoiseListIfAsked(o.run)) return kExitOk;
+  requirePositional(o.world, "sim-house: world");
   house::HouseConfig config;
-  config.heading = parseHeading(o.heading);
-  config.rangeM = checkRangeM(o.rangeM);
-  config.noise = parseNoise(o.noise);
+  parseHeading(o.heading);
+  sim::RobotDescription robot = parseRobot(o.run.robot);
+  if (o.rangeM != 0.0) robot.rangeM = checkRangeM(o.rangeM);
+  checkRangeCoversCell(robot.cellCm, robot.rangeM);
+  config.robot = robot;
+  config.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
+  config.noise = parseNoise(o.run.noise);
   config.seed = parseSeed(o.seed);
   config.strategy = parseStrategy(o.strategy);
   std::optional<house::HousePlan> plan;
-  std::optional<sim::World> loaded;
-  if (endsWith(o.world, ".json")) {
+  if (endsWith(o.world, ".json")) {  // the plan's rooms label the mapped ones and score the coverage
     house::HousePlanLoad l = house::loadHouseExpo(o.world);
     if (!l.plan) throw CliError(l.error);
     plan = std::move(l.plan);
-  } else {
-    loaded = loadWorld(o.world);
   }
-  const sim::World& world = plan ? plan->world : *loaded;
-  if (!o.start.empty()) {
-    const CellArg s = parseCell(o.start, "--start");
-    config.startCol = s.col;
-    config.startRow = s.row;
-  } else if (!plan || !house::defaultStart(*plan, config.startCol, config.startRow)) {
-    throw CliError("sim-house: --start COL,ROW is required for this world");
-  }
-  checkRangeCoversCell(world, config.rangeM);
-  checkStart(world, config.startCol, config.startRow, "");
+  const sim::Site site = loadSiteFile(o.world, robot.cellCm);
+  config.startPose = parseSiteStart(site, o.start, o.heading);
+  checkStartFits(site, robot, *config.startPose);
   std::string saveError;  // --save is checked before the run, so a bad target does not cost the mapping run
   if (!o.save.empty() && !network::checkHouseTarget(o.save, saveError)) throw CliError(saveError);
 
-  house::HouseMapper mapper(world, config);
+  house::HouseMapper mapper(site, config);
+  const sim::World& world = mapper.world();
+  // The plan's room boxes are cells of its raster: they hold on the robot's grid only when that grid is the
+  // raster's (the robot's cells, set down square on a cell centre).
+  if (plan && (world.width() != plan->world.width() || world.height() != plan->world.height() ||
+               config.startJitterDeg > 0.0)) {
+    std::cout << "(the plan's rooms are on its own " << plan->world.resolutionM() * 100.0
+              << " cm grid, not the robot's: rooms are not labelled from the plan, plan coverage not scored)\n";
+    plan.reset();
+  }
   mapper.run();
   if (plan) house::labelRoomsFromPlan(mapper, *plan);
   const house::HouseScore s = house::scoreHouse(mapper);
@@ -71,7 +79,8 @@ int runSimHouse(const SimHouseOptions& o) {
   const auto num = [](double v) { return report::formatNumber(v, 1); };
   std::ostringstream out;
   out << "house            " << (plan ? plan->id : world.name()) << " " << world.width() << "x" << world.height()
-      << ", start " << config.startCol << "," << config.startRow << " heading " << o.heading << ", strategy "
+      << ", robot " << robot.name << " (" << robot.cellCm << " cm cells), start " << mapper.config().startCol << ","
+      << mapper.config().startRow << " heading " << o.heading << ", strategy "
       << mapping::strategyName(config.strategy) << ", noise " << config.noise.name << ", seed " << config.seed << "\n";
   for (const network::RoomNode& r : mapper.network().rooms()) {
     out << "  " << r.name << "  " << r.map.width() << "x" << r.map.height() << " cells, "

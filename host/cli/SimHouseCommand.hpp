@@ -5,6 +5,8 @@
 #pragma once
 #include <string>
 
+#include "host/cli/SiteFiles.hpp"
+
 namespace CLI {
 class App;
 }
@@ -15,8 +17,8 @@ struct SimHouseOptions {
   std::string world;   // HouseExpo .json, Moving AI .map or ROS .yaml
   std::string start;   // COL,ROW; optional for a HouseExpo plan (a start is picked)
   std::string heading = "N";
-  double rangeM = 1.0;
-  std::string noise = "none";
+  double rangeM = 0.0;  // trusted maximum range, m; 0 = the robot's own
+  WorldRunOptions run;  // --noise, --robot, --start-jitter
   std::string seed = "1";
   std::string strategy = "frontier";
   std::string save;    // directory to write the house to

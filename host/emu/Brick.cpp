@@ -1,15 +1,33 @@
 #include "host/emu/Brick.hpp"
 
+#include "host/sim/RobotPlacement.hpp"
+
 #include <cmath>
 
 namespace nxtmap::emu {
 
 namespace {
 constexpr uint64_t kCrosstalkWindow = kMckHz / 1000 * 30;  // pings within 30 ms hear each other
+
+// The robot set down in the site as the configuration says.
+sim::SimRobot robotFor(const sim::Site& site, const BrickConfig& c) {
+    const sim::RobotDescription robot =
+        c.robot ? *c.robot
+                : sim::pointRobotFor(site.raster ? static_cast<int>(std::lround(site.raster->resolutionM() * 100.0)) : 20,
+                                     c.mountOffsetCm);
+    const sim::StartPose nominal =
+        c.startPose ? *c.startPose : site.rasterStart(c.startCol, c.startRow, sim::headingToDeg(c.heading));
+    const sim::RobotPlacement placed = sim::placeRobot(site, robot, nominal, c.startJitterDeg, c.seed);
+    return sim::SimRobot(placed.scene, placed.robot, placed.grid.frame, placed.start.cm, placed.start.headingDeg,
+                         c.noise, c.seed, 255.0);
 }
+}  // namespace
 
 Brick::Brick(const ElfImage& image, const sim::World& world, const BrickConfig& c)
-    : robot_(world, c.startCol, c.startRow, c.heading, c.noise, c.seed, 255.0, c.mountOffsetCm),
+    : Brick(image, sim::siteFromRaster(world), c) {}
+
+Brick::Brick(const ElfImage& image, const sim::Site& site, const BrickConfig& c)
+    : robot_(robotFor(site, c)),
       machine_(image, c.machine),
       pioa_(machine_.clock()),
       twi_(machine_.clock(), avr_),

@@ -20,16 +20,23 @@
 #include "host/emu/Usart.hpp"
 #include "host/sim/NoiseProfile.hpp"
 #include "host/sim/SimRobot.hpp"
+#include "host/sim/Site.hpp"
 #include "host/sim/World.hpp"
 
 #include <array>
 #include <memory>
+#include <optional>
 
 namespace nxtmap::emu {
 
 struct BrickConfig {
-    int startCol = 0, startRow = 0;
+    int startCol = 0, startRow = 0;         // start cell of the site's raster (when startPose is empty)
     sim::Heading heading = sim::Heading::N;
+    std::optional<sim::StartPose> startPose;  // a start in the plane instead
+    double startJitterDeg = 0.0;            // > 0: set down off the cell centre and up to this far off square
+    // The robot as built (cells, body, sensor mounts); empty: a point robot of the raster's cells with its
+    // sensors mountOffsetCm out. It must match the firmware's own geometry (nxtmap.elf: brick).
+    std::optional<sim::RobotDescription> robot;
     sim::NoiseProfile noise;
     uint64_t seed = 1;
     DriveGeometry drive;
@@ -43,6 +50,8 @@ struct BrickConfig {
 
 class Brick {
 public:
+    // The site must outlive the brick (its scene is shared).
+    Brick(const ElfImage& image, const sim::Site& site, const BrickConfig& config);
     Brick(const ElfImage& image, const sim::World& world, const BrickConfig& config);
 
     Machine& machine() { return machine_; }

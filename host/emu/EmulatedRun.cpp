@@ -3,6 +3,9 @@
 namespace nxtmap::emu {
 
 EmulatedRun::EmulatedRun(const ElfImage& image, const sim::World& world, const EmulatedRunOptions& options)
+    : EmulatedRun(image, sim::siteFromRaster(world), options) {}
+
+EmulatedRun::EmulatedRun(const ElfImage& image, const sim::Site& site, const EmulatedRunOptions& options)
     : image_(image), options_(options) {
     BrickConfig c = options.brick;
     c.pressEnterAtS = options.pressEnterAtS;
@@ -10,7 +13,7 @@ EmulatedRun::EmulatedRun(const ElfImage& image, const sim::World& world, const E
         c.machine.timedFunction = options.timedFunction;
         timed_ = true;
     }
-    brick_ = std::make_unique<Brick>(image, world, c);
+    brick_ = std::make_unique<Brick>(image, site, c);
 }
 
 std::optional<uint8_t> EmulatedRun::readSymbolByte(const std::string& name) const {

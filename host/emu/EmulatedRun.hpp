@@ -6,6 +6,7 @@
 
 #include "host/emu/Brick.hpp"
 #include "host/emu/ElfImage.hpp"
+#include "host/sim/Site.hpp"
 #include "host/sim/World.hpp"
 
 #include <functional>
@@ -61,7 +62,8 @@ struct EmulatedRunReport {
 
 class EmulatedRun {
 public:
-    // image and world must outlive the run.
+    // image must outlive the run; the site's scene is shared with it.
+    EmulatedRun(const ElfImage& image, const sim::Site& site, const EmulatedRunOptions& options);
     EmulatedRun(const ElfImage& image, const sim::World& world, const EmulatedRunOptions& options);
     // Runs to the end (done / fault / limit). Returns the report.
     EmulatedRunReport run();

@@ -151,7 +151,8 @@ void UltrasonicSensor::written(uint8_t v) {
 }
 
 void UltrasonicSensor::ping() {
-    const int cm = robot_.ping(facing_, othersFiring_ ? othersFiring_(port_) : false);
+    const double atMs = static_cast<double>(clock_.now) * 1000.0 / static_cast<double>(kMckHz);
+    const int cm = robot_.pingAt(facing_, atMs, othersFiring_ ? othersFiring_(port_) : false);
     regs_[kRegDistance0] = static_cast<uint8_t>(cm);
     for (int i = 1; i < 8; ++i) regs_[kRegDistance0 + i] = 0xFF;  // later echoes: none modelled
     lastPingAt_ = clock_.now;

@@ -18,21 +18,48 @@
 
 namespace nxtmap::house {
 namespace {
-ExplorerConfig explorerConfigFor(const sim::World& world, const HouseConfig& c) {
+ExplorerConfig explorerConfigFor(const sim::World& world, const HouseConfig& c, int mountCm) {
   ExplorerConfig e;
-  e.geometry = mapping::sonarGeometryFor(world, c.minRangeM, c.rangeM, c.noise.coneHalfAngleDeg);
+  e.geometry = mapping::sonarGeometryFor(world, c.minRangeM, c.rangeM, c.noise.sonar.coneHalfAngleDeg, mountCm);
   return e;
+}
+
+sim::RobotPlacement placementFor(const sim::Site& site, const HouseConfig& c) {
+  const sim::RobotDescription robot =
+      c.robot ? *c.robot
+              : sim::pointRobotFor(site.raster ? static_cast<int>(std::lround(site.raster->resolutionM() * 100.0)) : 10);
+  const sim::StartPose nominal =
+      c.startPose ? *c.startPose : site.rasterStart(c.startCol, c.startRow, sim::headingToDeg(c.heading));
+  return sim::placeRobot(site, robot, nominal, c.startJitterDeg, c.seed);
+}
+
+// The configuration with the start cell on the robot's grid and the ranges the robot trusts.
+HouseConfig placedConfig(const sim::RobotPlacement& placed, HouseConfig c) {
+  c.startCol = placed.grid.startCol;
+  c.startRow = placed.grid.startRow;
+  c.heading = placed.heading;
+  if (c.robot) {
+    c.minRangeM = c.robot->minRangeM;
+    c.rangeM = c.robot->rangeM;
+  }
+  return c;
 }
 
 }  // namespace
 
 HouseMapper::HouseMapper(const sim::World& world, const HouseConfig& config)
-    : world_(world),
-      config_(config),
-      explorerConfig_(explorerConfigFor(world, config)),
-      frame_(config.startCol, config.startRow, config.heading),
-      robot_(world, config.startCol, config.startRow, config.heading, config.noise, config.seed,
-             config.sensorReachCm, 0.0) {}
+    : HouseMapper(sim::siteFromRaster(world), config) {}
+
+HouseMapper::HouseMapper(const sim::Site& site, const HouseConfig& config)
+    : HouseMapper(placementFor(site, config), config) {}
+
+HouseMapper::HouseMapper(sim::RobotPlacement placed, const HouseConfig& config)
+    : world_(std::move(placed.truth)),
+      config_(placedConfig(placed, config)),
+      explorerConfig_(explorerConfigFor(world_, config_, placed.robot.mountCm)),
+      frame_(config_.startCol, config_.startRow, config_.heading),
+      robot_(placed.scene, placed.robot, placed.grid.frame, placed.start.cm, placed.start.headingDeg, config_.noise,
+             config_.seed, config_.sensorReachCm) {}
 
 void HouseMapper::mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, const RoomExit* via) {
   network::RoomTransform toHouse = network::RoomTransform::fromPose(belief_.cell, belief_.heading);

@@ -18,13 +18,23 @@
 #include "host/mapping/Strategy.hpp"
 #include "host/network/HouseNetwork.hpp"
 #include "host/sim/NoiseProfile.hpp"
+#include "host/sim/RobotPlacement.hpp"
+#include "host/sim/Site.hpp"
 #include "host/sim/World.hpp"
+
+#include <optional>
 
 namespace nxtmap::house {
 
 struct HouseConfig {
-  int startCol = 0, startRow = 0;           // start cell in the world
+  int startCol = 0, startRow = 0;           // start cell in the site's raster (when startPose is empty);
+                                            // after construction (config()): in the truth raster
   sim::Heading heading = sim::Heading::N;   // initial heading in the world (= house frame +y)
+  std::optional<sim::StartPose> startPose;  // a start in the plane instead of a raster cell
+  double startJitterDeg = 0.0;              // > 0: set down off the cell centre and up to this far off square
+  // The robot (cells, body, sensor mounts, trusted range: replaces rangeM/minRangeM); empty: a point robot of
+  // the raster's own cells (the published set-up).
+  std::optional<sim::RobotDescription> robot;
   double rangeM = 1.0, minRangeM = 0.05;    // trusted sensor range (published: 5 cm - 1 m)
   double sensorReachCm = 255.0;
   sim::NoiseProfile noise;
@@ -56,6 +66,8 @@ struct HouseCounters {
 
 class HouseMapper {
  public:
+  // The robot set down in `site` as the configuration says; the site's scene is shared with the mapper.
+  HouseMapper(const sim::Site& site, const HouseConfig& config);
   HouseMapper(const sim::World& world, const HouseConfig& config);
 
   // Maps the whole house (every exit reachable from the start). Returns the number of rooms.
@@ -103,7 +115,9 @@ class HouseMapper {
   // (StartAnchor); the given frame when they fit already or no shift is clear. Sets startShift_.
   network::RoomTransform anchoredStart(const RoomRun& run, const network::RoomTransform& toHouse);
 
-  const sim::World& world_;
+  HouseMapper(sim::RobotPlacement placed, const HouseConfig& config);
+
+  sim::World world_;  // the truth on the robot's grid
   HouseConfig config_;
   ExplorerConfig explorerConfig_;
   mapping::FrameTransform frame_;

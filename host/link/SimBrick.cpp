@@ -2,16 +2,19 @@
 
 #include "host/mapping/SimDrive.hpp"
 
+#include <cmath>
+
 namespace nxtmap::link {
 
 using namespace protocol;
 
 namespace {
 
-ExplorerConfig explorerConfigFor(const sim::World& world, const mapping::RunConfig& c) {
+ExplorerConfig explorerConfigFor(const sim::World& world, const mapping::RunConfig& c, int mountCm) {
   ExplorerConfig e;
   e.geometry = mapping::sonarGeometryFor(world, c.minRangeM, c.rangeM,
-                                         c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.coneHalfAngleDeg);
+                                         c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.sonar.coneHalfAngleDeg,
+                                         mountCm);
   e.searchSliceStates = c.searchSliceStates;
   return e;
 }
@@ -29,15 +32,41 @@ mapping::FrameTransform frameThrough(Cell brickCell, Dir brickHeading, int col, 
   return mapping::FrameTransform(col - dc, row - dr, h0);
 }
 
+// The robot as the run configuration places it in the site.
+sim::RobotPlacement placementFor(const sim::Site& site, const mapping::RunConfig& c) {
+  const sim::RobotDescription robot =
+      c.robot ? *c.robot
+              : sim::pointRobotFor(site.raster ? static_cast<int>(std::lround(site.raster->resolutionM() * 100.0)) : 10);
+  const sim::StartPose nominal =
+      c.startPose ? *c.startPose : site.rasterStart(c.startCol, c.startRow, sim::headingToDeg(c.heading));
+  return sim::placeRobot(site, robot, nominal, c.startJitterDeg, c.seed);
+}
+
+// The run configuration with the start cell on the robot's grid and the ranges the robot trusts.
+SimBrickConfig placedConfig(const sim::RobotPlacement& placed, SimBrickConfig c) {
+  c.run.startCol = placed.grid.startCol;
+  c.run.startRow = placed.grid.startRow;
+  c.run.heading = placed.heading;
+  if (c.run.robot) {
+    c.run.minRangeM = c.run.robot->minRangeM;
+    c.run.rangeM = c.run.robot->rangeM;
+  }
+  return c;
+}
+
 }  // namespace
 
-SimBrick::SimBrick(const sim::World& world, const SimBrickConfig& config)
-    : world_(world),
-      config_(config),
-      explorerConfig_(explorerConfigFor(world, config.run)),
-      frame_(config.run.startCol, config.run.startRow, config.run.heading),
-      robot_(world, config.run.startCol, config.run.startRow, config.run.heading, config.run.noise, config.run.seed,
-             config.run.sensorReachCm, 0.0),
+SimBrick::SimBrick(const sim::World& world, const SimBrickConfig& config) : SimBrick(sim::siteFromRaster(world), config) {}
+
+SimBrick::SimBrick(const sim::Site& site, const SimBrickConfig& config) : SimBrick(placementFor(site, config.run), config) {}
+
+SimBrick::SimBrick(sim::RobotPlacement placed, const SimBrickConfig& config)
+    : world_(std::move(placed.truth)),
+      config_(placedConfig(placed, config)),
+      explorerConfig_(explorerConfigFor(world_, config_.run, placed.robot.mountCm)),
+      frame_(config_.run.startCol, config_.run.startRow, config_.run.heading),
+      robot_(placed.scene, placed.robot, placed.grid.frame, placed.start.cm, placed.start.headingDeg, config_.run.noise,
+             config_.run.seed, config_.run.sensorReachCm),
       storage_(std::make_unique<Storage>()),
       map_(std::make_unique<MapLayers>(storage_->map.view(), Storage::kWidth(), Storage::kHeight())),
       planner_(std::make_unique<TravelPlanner>(storage_->travel.view(), Storage::kWidth(), Storage::kHeight())),
@@ -227,8 +256,9 @@ void SimBrick::followOne() {
   // The simulated robot goes along, onto the cell's centre.
   int col = 0, row = 0;
   frame_.toWorld(to, col, row);
-  const double cm = robot_.cellCm();
-  (void)robot_.setPose((col + 0.5) * cm, (row + 0.5) * cm, 90.0 * static_cast<int>(frame_.toWorld(restPose_.heading)));
+  const sim::Vec2 centre = robot_.frame().toPlane(sim::Vec2(col, row));
+  (void)robot_.setPose(centre.x(), centre.y(),
+                       robot_.frame().headingDeg + 90.0 * static_cast<int>(frame_.toWorld(restPose_.heading)));
   ++path_.reached;
   path_.at = to;
   if (path_.reached + 1 >= pathMsg_.count) {

@@ -25,6 +25,7 @@
 #include "common/protocol/BrickLink.hpp"
 #include "host/mapping/FrameTransform.hpp"
 #include "host/mapping/MappingRun.hpp"
+#include "host/sim/RobotPlacement.hpp"
 #include "host/sim/SimRobot.hpp"
 #include "host/sim/World.hpp"
 
@@ -43,7 +44,8 @@ class SimBrick {
   // Host capacity: rooms up to 128 x 128 cells.
   using Storage = ExplorerStorage<128, 128, 8192>;
 
-  // The world must outlive the brick.
+  // The robot set down in `site` as config.run says (start, robot, jitter, noise); the site's scene is shared.
+  SimBrick(const sim::Site& site, const SimBrickConfig& config);
   SimBrick(const sim::World& world, const SimBrickConfig& config);
   ~SimBrick();
 
@@ -85,7 +87,9 @@ class SimBrick {
   bool worldBlocked(Cell c) const;
   protocol::BrickReport report() const;
 
-  const sim::World& world_;
+  SimBrick(sim::RobotPlacement placed, const SimBrickConfig& config);
+
+  sim::World world_;               // the truth on the robot's grid
   SimBrickConfig config_;
   ExplorerConfig explorerConfig_;
   mapping::FrameTransform frame_;  // the brick map's frame -> world cells (changes with SetPose / new room)

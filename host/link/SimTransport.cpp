@@ -1,25 +1,35 @@
 #include "host/link/SimTransport.hpp"
 
+#include "host/worlds/SiteFiles.hpp"
+
 #include <algorithm>
 #include <thread>
 
 namespace nxtmap::link {
 
-SimTransport::SimTransport(const LinkSpec& spec, double speed)
+SimTransport::SimTransport(const LinkSpec& spec, double speed, const SimTransportOptions& options)
     : description_(spec.text), speed_(speed), start_(std::chrono::steady_clock::now()) {
-  sim::WorldLoad load = sim::World::load(spec.address);
-  if (!load.world) throw LinkError(load.error);
-  world_ = std::make_unique<sim::World>(std::move(*load.world));
+  worlds::SiteLoad load = worlds::loadSite(spec.address, options.robot ? options.robot->cellCm : 10);
+  if (!load.site) throw LinkError(load.error);
+  site_ = std::make_unique<sim::Site>(std::move(*load.site));
   SimBrickConfig c;
+  c.run.noise = options.noise;
+  c.run.seed = options.seed;
+  c.run.robot = options.robot;
+  c.run.startJitterDeg = options.startJitterDeg;
+  const sim::World* raster = site_->raster ? &*site_->raster : nullptr;
   if (spec.col >= 0) {
+    if (!raster) throw LinkError(spec.address + " is a world file: its start is its own (leave out @COL,ROW)");
     c.run.startCol = spec.col;
     c.run.startRow = spec.row;
+  } else if (site_->start) {
+    c.run.startPose = site_->start;
   } else {
     // The first free cell, scanning rows from the top.
     bool found = false;
-    for (int r = 0; r < world_->height() && !found; ++r) {
-      for (int col = 0; col < world_->width() && !found; ++col) {
-        if (!world_->blocked(col, r)) {
+    for (int r = 0; r < raster->height() && !found; ++r) {
+      for (int col = 0; col < raster->width() && !found; ++col) {
+        if (!raster->blocked(col, r)) {
           c.run.startCol = col;
           c.run.startRow = r;
           found = true;
@@ -28,11 +38,12 @@ SimTransport::SimTransport(const LinkSpec& spec, double speed)
     }
     if (!found) throw LinkError("world " + spec.address + " has no free cell to start in");
   }
-  if (!world_->inside(c.run.startCol, c.run.startRow) || world_->blocked(c.run.startCol, c.run.startRow)) {
+  if (!c.run.startPose &&
+      (!raster->inside(c.run.startCol, c.run.startRow) || raster->blocked(c.run.startCol, c.run.startRow))) {
     throw LinkError("start cell " + std::to_string(c.run.startCol) + "," + std::to_string(c.run.startRow) +
                     " is not a free cell of " + spec.address);
   }
-  brick_ = std::make_unique<SimBrick>(*world_, c);
+  brick_ = std::make_unique<SimBrick>(*site_, c);
 }
 
 uint32_t SimTransport::nowMs() const {

@@ -8,14 +8,24 @@
 
 #include "host/link/SimBrick.hpp"
 #include "host/link/Transport.hpp"
-#include "host/sim/World.hpp"
+#include "host/sim/Site.hpp"
+
+#include <optional>
 
 namespace nxtmap::link {
 
+// How the stand-in's robot is simulated: the same choices as `nxtmap sim` (--noise, --robot, --start-jitter).
+struct SimTransportOptions {
+  sim::NoiseProfile noise;                     // default: ideal
+  uint64_t seed = 1;
+  std::optional<sim::RobotDescription> robot;  // empty: a point robot of the raster's cells (published)
+  double startJitterDeg = 0.0;
+};
+
 class SimTransport : public Transport {
  public:
-  // Loads the world of a sim: link; throws LinkError for a bad world or start cell.
-  SimTransport(const LinkSpec& spec, double speed = 1.0);
+  // Loads the world of a sim: link (any world `nxtmap sim` takes); throws LinkError for a bad world or start.
+  explicit SimTransport(const LinkSpec& spec, double speed = 1.0, const SimTransportOptions& options = {});
 
   size_t read(uint8_t* buffer, size_t capacity, int timeoutMs) override;
   void write(const uint8_t* data, size_t size) override;
@@ -28,7 +38,7 @@ class SimTransport : public Transport {
  private:
   uint32_t nowMs() const;
 
-  std::unique_ptr<sim::World> world_;
+  std::unique_ptr<sim::Site> site_;
   std::unique_ptr<SimBrick> brick_;
   std::string description_;
   double speed_;

@@ -1,30 +1,69 @@
 #include "host/mapping/MappingRun.hpp"
 
 #include "host/mapping/SimDrive.hpp"
+#include "host/sim/RobotPlacement.hpp"
 
+#include <cmath>
 
 namespace nxtmap::mapping {
+
+// The robot as placed, and the configuration with the truth raster's start cell and the ranges it trusts.
+struct MappingRun::Setup {
+  sim::RobotPlacement placed;
+  RunConfig config;
+};
+
 namespace {
-ExplorerConfig explorerConfigFor(const sim::World& world, const RunConfig& c) {
+
+// A point robot of the raster's own cells, sensors at the centre: the published set-up.
+sim::RobotDescription pointRobot(const sim::Site& site) {
+  return sim::pointRobotFor(site.raster ? static_cast<int>(std::lround(site.raster->resolutionM() * 100.0)) : 10);
+}
+
+ExplorerConfig explorerConfigFor(const sim::World& truth, const RunConfig& c, int mountCm) {
   ExplorerConfig e;
-  e.geometry = sonarGeometryFor(world, c.minRangeM, c.rangeM,
-                                c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.coneHalfAngleDeg);
+  e.geometry = sonarGeometryFor(truth, c.minRangeM, c.rangeM,
+                                c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.sonar.coneHalfAngleDeg,
+                                mountCm);
   e.searchSliceStates = c.searchSliceStates;
   return e;
 }
+
 }  // namespace
 
+MappingRun::MappingRun(const sim::Site& site, const RunConfig& config)
+    : MappingRun(
+          [&] {
+            const sim::RobotDescription robot = config.robot ? *config.robot : pointRobot(site);
+            const sim::StartPose nominal =
+                config.startPose ? *config.startPose
+                                 : site.rasterStart(config.startCol, config.startRow, sim::headingToDeg(config.heading));
+            Setup s{sim::placeRobot(site, robot, nominal, config.startJitterDeg, config.seed), config};
+            if (config.robot) {
+              s.config.minRangeM = robot.minRangeM;
+              s.config.rangeM = robot.rangeM;
+            }
+            s.config.startCol = s.placed.grid.startCol;
+            s.config.startRow = s.placed.grid.startRow;
+            s.config.heading = s.placed.heading;
+            return s;
+          }(),
+          config) {}
+
 MappingRun::MappingRun(const sim::World& world, const RunConfig& config)
-    : world_(world),
-      config_(config),
-      explorerConfig_(explorerConfigFor(world, config)),
-      frame_(config.startCol, config.startRow, config.heading),
-      robot_(world, config.startCol, config.startRow, config.heading, config.noise, config.seed,
-             config.sensorReachCm, 0.0),
+    : MappingRun(sim::siteFromRaster(world), config) {}
+
+MappingRun::MappingRun(Setup setup, const RunConfig&)
+    : config_(setup.config),
+      truth_(std::move(setup.placed.truth)),
+      explorerConfig_(explorerConfigFor(truth_, config_, setup.placed.robot.mountCm)),
+      frame_(config_.startCol, config_.startRow, config_.heading),
+      robot_(setup.placed.scene, setup.placed.robot, setup.placed.grid.frame, setup.placed.start.cm,
+             setup.placed.start.headingDeg, config_.noise, config_.seed, config_.sensorReachCm),
       storage_(std::make_unique<Storage>()) {
   map_ = std::make_unique<MapLayers>(storage_->map.view(), Storage::kWidth(), Storage::kHeight());
   planner_ = std::make_unique<TravelPlanner>(storage_->travel.view(), Storage::kWidth(), Storage::kHeight());
-  if (config.strategy == Strategy::Propagation) {
+  if (config_.strategy == Strategy::Propagation) {
     propagation_ = std::make_unique<PropagationExplorer>(*map_, *planner_, explorerConfig_);
     explorer_ = propagation_.get();
   } else {
@@ -32,7 +71,7 @@ MappingRun::MappingRun(const sim::World& world, const RunConfig& config)
     explorer_ = frontier_.get();
   }
   PilotConfig pilot;
-  pilot.correct = config.poseCorrection;
+  pilot.correct = config_.poseCorrection;
   pilot_ = std::make_unique<Pilot>(*explorer_, pilot);
   last_ = pilot_->step(DriveEvent::start());
 }

@@ -11,14 +11,24 @@
 #include "host/mapping/FrameTransform.hpp"
 #include "host/mapping/Strategy.hpp"
 #include "host/sim/NoiseProfile.hpp"
+#include "host/sim/RobotDescription.hpp"
 #include "host/sim/SimRobot.hpp"
+#include "host/sim/Site.hpp"
 #include "host/sim/World.hpp"
+
+#include <optional>
 
 namespace nxtmap::mapping {
 
 struct RunConfig {
-  int startCol = 0, startRow = 0;         // start cell in the world
-  sim::Heading heading = sim::Heading::N; // initial heading in the world
+  int startCol = 0, startRow = 0;         // start cell in the site's raster (when startPose is empty);
+                                          // after construction (MappingRun::config): in the truth raster
+  sim::Heading heading = sim::Heading::N; // initial heading in the world (when startPose is empty)
+  std::optional<sim::StartPose> startPose;  // a start in the plane instead of a raster cell
+  double startJitterDeg = 0.0;            // > 0: set down off the cell centre and up to this many degrees off square
+  // The robot: its cell, body and sensor mounts, and the range it trusts (its minRangeM/rangeM replace the
+  // two below). Empty: a point robot of the raster's own cells with the ranges below (the published set-up).
+  std::optional<sim::RobotDescription> robot;
   double rangeM = 1.0;                    // trusted maximum range (published: 1 m)
   double minRangeM = 0.05;                // trusted minimum range (published: 5 cm)
   double sensorReachCm = 255.0;           // the sonar's own reach (NXT: 255 = no echo)
@@ -37,6 +47,9 @@ class MappingRun {
   // Host capacity: rooms up to 128 x 128 cells.
   using Storage = ExplorerStorage<128, 128, 8192>;
 
+  // A run in `site` (kept alive by the run through its scene; its raster is copied).
+  MappingRun(const sim::Site& site, const RunConfig& config);
+  // A run in a raster world: the world traced into a scene (the published set-up).
   MappingRun(const sim::World& world, const RunConfig& config);
   ~MappingRun();
 
@@ -52,7 +65,9 @@ class MappingRun {
   const DriveAction& lastAction() const { return last_; }
   const Pilot& pilot() const { return *pilot_; }
   const sim::SimRobot& robot() const { return robot_; }
-  const sim::World& world() const { return world_; }
+  // The truth on the robot's grid (the safe rule: a cell holding any part of an obstacle is blocked).
+  const sim::World& world() const { return truth_; }
+  const sim::RobotDescription& robotDescription() const { return robot_.description(); }
   const RunConfig& config() const { return config_; }
   const FrameTransform& frame() const { return frame_; }
   const ExplorerConfig& explorerConfig() const { return explorerConfig_; }
@@ -64,10 +79,12 @@ class MappingRun {
   sim::Heading believedHeading() const;
 
  private:
+  struct Setup;  // the placement worked out before the members are built
+  MappingRun(Setup setup, const RunConfig& config);
   DriveEvent carryOut(const DriveAction& a);
 
-  const sim::World& world_;
   RunConfig config_;
+  sim::World truth_;
   ExplorerConfig explorerConfig_;
   FrameTransform frame_;
   sim::SimRobot robot_;

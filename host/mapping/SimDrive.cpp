@@ -7,14 +7,15 @@
 
 namespace nxtmap::mapping {
 
-RangeGeometry sonarGeometryFor(const sim::World& world, double minRangeM, double rangeM, double beamHalfAngleDeg) {
+RangeGeometry sonarGeometryFor(const sim::World& world, double minRangeM, double rangeM, double beamHalfAngleDeg,
+                               int mountCm) {
   RangeGeometry g;
   // A loaded world's cells are whole centimetres, World::kMinCellCm..kMaxCellCm (World::resolutionProblem),
   // so cellCm, a divisor in RangeGeometry, is never 0 and fits its int16_t.
   g.cellCm = static_cast<int16_t>(std::lround(world.resolutionM() * 100.0));
   g.minCm = static_cast<int16_t>(std::lround(minRangeM * 100.0));
   g.maxCm = static_cast<int16_t>(std::lround(rangeM * 100.0));
-  g.mountCm = 0;
+  g.mountCm = static_cast<int16_t>(mountCm);
   if (beamHalfAngleDeg > 0.0) {
     const double sure = 0.5 * g.cellCm / std::tan(beamHalfAngleDeg * 3.141592653589793 / 180.0) - g.mountCm;
     if (sure < g.maxCm) g.sureCm = static_cast<int16_t>(std::max(g.minCm + 1.0, std::floor(sure)));

@@ -15,7 +15,9 @@ namespace nxtmap::mapping {
 // Cells of the world's resolution, readings trusted in [minRangeM, rangeM]. A beam of half-angle
 // beamHalfAngleDeg (0 = a ray) reaches beside the axis beyond (cell / 2) / tan(angle): farther
 // echoes only prove the cells before them free (RangeGeometry::sureCm).
-RangeGeometry sonarGeometryFor(const sim::World& world, double minRangeM, double rangeM, double beamHalfAngleDeg);
+// mountCm: the sensors' faces ahead of the robot's centre (RangeGeometry::mountCm).
+RangeGeometry sonarGeometryFor(const sim::World& world, double minRangeM, double rangeM, double beamHalfAngleDeg,
+                               int mountCm = 0);
 
 DriveEvent carryOutOnRobot(sim::SimRobot& robot, const DriveAction& a, const RangeGeometry& geometry);
 

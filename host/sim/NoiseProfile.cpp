@@ -2,53 +2,27 @@
 
 namespace nxtmap::sim {
 
-namespace {
-
-NoiseProfile makeNone() {
-    NoiseProfile p;
-    p.name = "none";
-    return p;
-}
-
-NoiseProfile makeTypical() {
-    NoiseProfile p;
-    p.name = "typical";
-    p.rangeSigmaCm = 1.0;
-    p.biasCm = 0.5;
-    p.dropoutProb = 0.01;
-    p.specularMissProb = 0.02;
-    p.specularAngleDeg = 60.0;
-    p.crosstalkProb = 0.02;
-    p.coneHalfAngleDeg = 5.0;
-    p.slipSigma = 0.01;
-    p.turnSigmaDeg = 0.5;
-    return p;
-}
-
-NoiseProfile makeHarsh() {
-    NoiseProfile p;
-    p.name = "harsh";
-    p.rangeSigmaCm = 2.5;
-    p.biasCm = 1.5;
-    p.dropoutProb = 0.05;
-    p.specularMissProb = 0.10;
-    p.specularAngleDeg = 45.0;
-    p.crosstalkProb = 0.08;
-    p.coneHalfAngleDeg = 12.0;
-    p.slipSigma = 0.03;
-    p.turnSigmaDeg = 2.0;
-    return p;
-}
-
-}  // namespace
-
 std::optional<NoiseProfile> noiseProfileByName(const std::string& name) {
-    if (name == "none") return makeNone();
-    if (name == "typical") return makeTypical();
-    if (name == "harsh") return makeHarsh();
+    const std::string canonical = name == "none" ? "ideal" : name;
+    for (const std::string& known : noiseProfileNames()) {
+        if (known != canonical) continue;
+        return NoiseProfile{canonical, sonarPreset(canonical), wheelPreset(canonical)};
+    }
     return std::nullopt;
 }
 
-std::vector<std::string> noiseProfileNames() { return {"none", "typical", "harsh"}; }
+std::vector<std::string> noiseProfileNames() { return {"ideal", "typical", "nxt", "nxt-uncalibrated", "harsh"}; }
+
+std::string describeNoiseProfiles() {
+    std::string out;
+    for (const std::string& name : noiseProfileNames()) {
+        const NoiseProfile p = *noiseProfileByName(name);
+        out += name + ":\n  sonar:\n";
+        for (const std::string& line : describeSonar(p.sonar)) out += "    " + line + "\n";
+        out += "  wheels:\n";
+        for (const std::string& line : describeWheels(p.wheels)) out += "    " + line + "\n";
+    }
+    return out;
+}
 
 }  // namespace nxtmap::sim

@@ -1,5 +1,8 @@
-// NoiseProfile: how the simulated ultrasonic sensors and wheels deviate from the truth.
+// NoiseProfile: a named preset of how the simulated sonar and wheels deviate from the truth.
 #pragma once
+
+#include "host/sim/SonarNoise.hpp"
+#include "host/sim/WheelNoise.hpp"
 
 #include <optional>
 #include <string>
@@ -9,21 +12,20 @@ namespace nxtmap::sim {
 
 struct NoiseProfile {
     std::string name;
-    double rangeSigmaCm = 0.0;      // gaussian range noise, cm (>= 0)
-    double biasCm = 0.0;            // added to every echo, cm
-    double dropoutProb = 0.0;       // 0..1: 255 instead of an echo
-    double specularMissProb = 0.0;  // 0..1: 255 when the incidence exceeds specularAngleDeg
-    double specularAngleDeg = 0.0;  // 0..90, angle between the ray and the hit face's normal
-    double crosstalkProb = 0.0;     // 0..1: a bogus short echo, only when other sensors fire together
-    double coneHalfAngleDeg = 0.0;  // 0 = a single ray along the sensor axis
-    double slipSigma = 0.0;         // relative distance error per move (0.02 = 2 %)
-    double turnSigmaDeg = 0.0;      // gaussian turn error per turn, degrees
+    SonarNoise sonar;
+    WheelNoise wheels;
 };
 
-// Presets "none", "typical", "harsh"; nullopt for any other name.
+// Presets, mildest first:
+//   ideal            no error at all ("none" is accepted for it: the name older runs used)
+//   typical          the model the published figures were measured with (kept so they reproduce)
+//   nxt              the NXT sensor and drive as measured, a calibrated robot
+//   nxt-uncalibrated the same with UMBmark magnitudes of an uncalibrated robot
+//   harsh            worse than any sensor we know of
+// nullopt for any other name.
 std::optional<NoiseProfile> noiseProfileByName(const std::string& name);
-
-// The preset names, mildest first.
 std::vector<std::string> noiseProfileNames();
+// Every preset's values with units, for `--noise list`.
+std::string describeNoiseProfiles();
 
 }  // namespace nxtmap::sim

@@ -130,7 +130,7 @@ TEST(Drive, WheelSlipFollowsTheNoiseProfileAndTheSeed) {
         BrickConfig c;
         c.startCol = 5;
         c.startRow = 6;
-        c.noise.slipSigma = slip;
+        c.noise.wheels.slipSigma = slip;
         c.seed = seed;
         ProbeRun r("tacho", c, 3.0);
         EXPECT_TRUE(r.ok) << r.fault();

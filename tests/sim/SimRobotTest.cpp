@@ -53,7 +53,7 @@ TEST(SimRobot, StartPoseIsCellCentre) {
     EXPECT_EQ(robot.col(), 3);
     EXPECT_EQ(robot.row(), 1);
     EXPECT_EQ(robot.nominalHeading(), Heading::W);
-    EXPECT_EQ(robot.noise().name, "none");
+    EXPECT_EQ(robot.noise().name, "ideal");
 }
 
 TEST(SimRobot, NoEchoBeyondRange) {
@@ -72,8 +72,8 @@ TEST(SimRobot, ConeSeesObstacleBesideTheAxis) {
     NoiseProfile wide = quiet();
     SimRobot narrow(w, 3, 4, Heading::N, wide, 1);
     EXPECT_EQ(narrow.ping(0), 35);
-    wide.coneHalfAngleDeg = 12.0;
-    wide.specularAngleDeg = 60.0;
+    wide.sonar.coneHalfAngleDeg = 12.0;
+    wide.sonar.specularAngleDeg = 60.0;
     SimRobot coned(w, 3, 4, Heading::N, wide, 1);
     EXPECT_EQ(coned.ping(0), 26);  // block at (4,1): bottom face 25 cm ahead, reached by the 12 degree ray
 }
@@ -83,27 +83,27 @@ TEST(SimRobot, ConeGetsNoEchoFromAWallParallelToTheBeam) {
     // so the reading is the far wall ahead, not the side wall.
     const World w = World::fromRows({"#########", "#.......#", "#.......#", "#########"});
     NoiseProfile p = quiet();
-    p.coneHalfAngleDeg = 12.0;
-    p.specularAngleDeg = 60.0;
+    p.sonar.coneHalfAngleDeg = 12.0;
+    p.sonar.specularAngleDeg = 60.0;
     SimRobot r(w, 1, 1, Heading::E, p, 1);
     EXPECT_EQ(r.ping(0), 65);
 }
 
 TEST(SimRobot, DropoutSpecularAndCrosstalk) {
     NoiseProfile p = quiet();
-    p.dropoutProb = 1.0;
+    p.sonar.dropoutProb = 1.0;
     EXPECT_EQ(SimRobot(room(), 3, 1, Heading::N, p, 1).ping(1), 255);
 
     p = quiet();
-    p.specularMissProb = 1.0;
-    p.specularAngleDeg = 30.0;
+    p.sonar.specularMissProb = 1.0;
+    p.sonar.specularAngleDeg = 30.0;
     SimRobot spec(room(), 3, 2, Heading::N, p, 1);
     EXPECT_EQ(spec.ping(0), 15);   // head-on: echo
     spec.turn(1);                  // 45 degrees: grazing beyond 30 degrees
     EXPECT_EQ(spec.ping(0), 255);
 
     p = quiet();
-    p.crosstalkProb = 1.0;
+    p.sonar.crosstalkProb = 1.0;
     SimRobot talk(room(), 3, 1, Heading::N, p, 1);
     EXPECT_EQ(talk.ping(1), 45);
     for (int i = 0; i < 50; ++i) {
@@ -173,7 +173,7 @@ TEST(SimRobot, SlipMovesTruePoseOnlyUnderNoise) {
     EXPECT_DOUBLE_EQ(exact.yCm(), 25.0);
 
     NoiseProfile slippy = quiet();
-    slippy.slipSigma = 0.03;
+    slippy.wheels.slipSigma = 0.03;
     SimRobot slipping(room(), 1, 2, Heading::E, slippy, 3);
     EXPECT_EQ(slipping.move(3).cellsMoved, 3);
     EXPECT_NE(slipping.xCm(), 45.0);
@@ -196,7 +196,7 @@ TEST(SimRobot, TurnsInEighths) {
     EXPECT_DOUBLE_EQ(robot.headingDeg(), 0.0);
 
     NoiseProfile wobbly = quiet();
-    wobbly.turnSigmaDeg = 2.0;
+    wobbly.wheels.turnSigmaDeg = 2.0;
     SimRobot noisy(room(), 3, 2, Heading::N, wobbly, 1);
     noisy.turn(2);
     EXPECT_NE(noisy.headingDeg(), 90.0);
@@ -205,21 +205,32 @@ TEST(SimRobot, TurnsInEighths) {
 }
 
 TEST(NoiseProfiles, PresetsByName) {
-    EXPECT_EQ(noiseProfileNames(), (std::vector<std::string>{"none", "typical", "harsh"}));
+    EXPECT_EQ(noiseProfileNames(), (std::vector<std::string>{"ideal", "typical", "nxt", "nxt-uncalibrated", "harsh"}));
     for (const auto& name : noiseProfileNames()) {
         const auto p = noiseProfileByName(name);
         ASSERT_TRUE(p) << name;
         EXPECT_EQ(p->name, name);
     }
     EXPECT_FALSE(noiseProfileByName("loud"));
-    const NoiseProfile none = *noiseProfileByName("none");
-    EXPECT_EQ(none.rangeSigmaCm + none.dropoutProb + none.coneHalfAngleDeg + none.slipSigma + none.turnSigmaDeg, 0.0);
+    EXPECT_EQ(noiseProfileByName("none")->name, "ideal");  // the name older runs used
+    const NoiseProfile none = *noiseProfileByName("ideal");
+    EXPECT_EQ(none.sonar.rangeSigmaCm + none.sonar.dropoutProb + none.sonar.coneHalfAngleDeg + none.wheels.slipSigma +
+                  none.wheels.turnSigmaDeg,
+              0.0);
+    // typical: the model the published figures were measured with, value for value.
     const NoiseProfile typical = *noiseProfileByName("typical");
-    EXPECT_DOUBLE_EQ(typical.specularAngleDeg, 60.0);
-    EXPECT_DOUBLE_EQ(typical.coneHalfAngleDeg, 5.0);
+    EXPECT_DOUBLE_EQ(typical.sonar.rangeSigmaCm, 1.0);
+    EXPECT_DOUBLE_EQ(typical.sonar.biasCm, 0.5);
+    EXPECT_DOUBLE_EQ(typical.sonar.dropoutProb, 0.01);
+    EXPECT_DOUBLE_EQ(typical.sonar.specularMissProb, 0.02);
+    EXPECT_DOUBLE_EQ(typical.sonar.specularAngleDeg, 60.0);
+    EXPECT_DOUBLE_EQ(typical.sonar.crosstalkProb, 0.02);
+    EXPECT_DOUBLE_EQ(typical.sonar.coneHalfAngleDeg, 5.0);
+    EXPECT_DOUBLE_EQ(typical.wheels.slipSigma, 0.01);
+    EXPECT_DOUBLE_EQ(typical.wheels.turnSigmaDeg, 0.5);
     const NoiseProfile harsh = *noiseProfileByName("harsh");
-    EXPECT_DOUBLE_EQ(harsh.rangeSigmaCm, 2.5);
-    EXPECT_DOUBLE_EQ(harsh.turnSigmaDeg, 2.0);
+    EXPECT_GT(harsh.sonar.dropoutProb, typical.sonar.dropoutProb);
+    EXPECT_GT(harsh.wheels.turnSigmaDeg, typical.wheels.turnSigmaDeg);
 }
 
 TEST(HeadingFromChar, ParsesCompassLetters) {

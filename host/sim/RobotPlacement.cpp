@@ -1,0 +1,40 @@
+#include "host/sim/RobotPlacement.hpp"
+
+#include "host/sim/StartJitter.hpp"
+
+#include <cmath>
+
+namespace nxtmap::sim {
+
+namespace {
+
+// A square start on a raster cell's centre with the raster's own cells; sets the start cell.
+bool onRasterGrid(const Site& site, const RobotDescription& robot, const StartPose& start, int& col, int& row) {
+    if (!site.raster || std::fabs(site.raster->resolutionM() * 100.0 - robot.cellCm) > 1e-9) return false;
+    if (squareRemainderDeg(start.headingDeg) != 0.0) return false;
+    const double cell = robot.cellCm;
+    col = static_cast<int>(std::floor(start.cm.x() / cell));
+    row = static_cast<int>(std::floor(start.cm.y() / cell));
+    return std::fabs(start.cm.x() - (col + 0.5) * cell) < 1e-9 && std::fabs(start.cm.y() - (row + 0.5) * cell) < 1e-9 &&
+           site.raster->inside(col, row);
+}
+
+}  // namespace
+
+RobotPlacement placeRobot(const Site& site, const RobotDescription& robot, const StartPose& nominal,
+                          double startJitterDeg, uint64_t seed) {
+    const StartPose start = jitterStart(nominal, robot.cellCm, startJitterDeg, seed);
+    const Heading heading = static_cast<Heading>(squareQuarter(start.headingDeg));
+    int col = 0, row = 0;
+    if (onRasterGrid(site, robot, start, col, row)) {
+        const double cell = robot.cellCm;
+        Placement grid{GridFrame{Vec2(0.5 * cell, 0.5 * cell), 0.0, cell}, col, row, site.raster->width(),
+                       site.raster->height()};
+        return RobotPlacement{site.scene, robot, start, grid, *site.raster, heading};
+    }
+    const Placement grid = placeOnGrid(*site.scene, start.cm, squareRemainderDeg(start.headingDeg), robot.cellCm);
+    World truth = rasterizeScene(*site.scene, grid.frame, grid.width, grid.height, site.name);
+    return RobotPlacement{site.scene, robot, start, grid, std::move(truth), heading};
+}
+
+}  // namespace nxtmap::sim

@@ -1,0 +1,32 @@
+// RobotPlacement: a robot set down in a site. Where it really stands (the nominal start moved by the start
+// jitter), the grid it believes in (its own cells, centred on where it stands, turned with it), and the
+// truth drawn on that grid by the safe rule (TruthRaster). Every simulating runner starts from one.
+#pragma once
+
+#include "host/sim/Heading.hpp"
+#include "host/sim/RobotDescription.hpp"
+#include "host/sim/Site.hpp"
+#include "host/sim/TruthRaster.hpp"
+#include "host/sim/World.hpp"
+
+#include <cstdint>
+#include <memory>
+
+namespace nxtmap::sim {
+
+struct RobotPlacement {
+    std::shared_ptr<const Scene> scene;
+    RobotDescription robot;
+    StartPose start;        // the true start pose
+    Placement grid;         // the robot's grid over the whole scene; grid.startCol/startRow hold the start
+    World truth;            // the truth on that grid
+    Heading heading;        // the start heading against the grid (N, E, S, W)
+};
+
+// The robot's grid is the raster's own (and the raster itself the truth, cell numbers kept) when the site
+// has a raster of the robot's cells and the true start is square on one of its cell centres; otherwise the
+// grid is laid over the scene from the true start (placeOnGrid) and the truth rasterised on it.
+RobotPlacement placeRobot(const Site& site, const RobotDescription& robot, const StartPose& nominal,
+                          double startJitterDeg, uint64_t seed);
+
+}  // namespace nxtmap::sim
