@@ -165,8 +165,7 @@ int runSim(const SimOptions& o) {
   out << "\nrun              " << world.name() << " " << world.width() << "x" << world.height() << " cells of " << robot.cellCm << " cm, robot " << robot.name << ", start "
       << run.config().startCol << "," << run.config().startRow << " heading " << o.heading;
   if (config.startJitterDeg > 0.0) {
-    out << " (set down " << report::formatNumber(run.robot().headingDeg() - sim::headingToDeg(run.config().heading), 1)
-        << " deg off square)";
+    out << " (set down " << report::formatNumber(run.robot().frame().headingDeg, 1) << " deg off square)";
   }
   out << ", strategy "
       << mapping::strategyName(config.strategy) << ", noise " << config.noise.name << ", seed " << config.seed
@@ -184,7 +183,14 @@ int runSim(const SimOptions& o) {
       << s.actualOccupied << ", the thesis's performance)\n"
       << "wrong cells      " << s.wrongCells << "\n"
       << "unknown cells    " << s.unknown << " (" << s.unknownObservable << " of them observable)\n"
-      << "free cells       " << s.foundFree << " found of " << s.actualFree << "\n";
+      << "free cells       " << s.foundFree << " found of " << s.actualFree << "\n"
+      << "unsafe free      " << s.unsafeFree << " cells holding an obstacle that the map calls free\n"
+      << "phantom occupied " << s.phantomOccupied << " cells the map calls occupied where there is nothing\n"
+      << "lost             " << (s.lost ? "yes: the robot believes it stands in another cell" : "no") << "\n"
+      << "aligned          map turned " << num(s.alignRotationDeg) << " deg, moved " << num(s.alignShiftCol) << ","
+      << num(s.alignShiftRow) << " cells to fit the world best: detected " << num(s.detectedPctAligned()) << " %, wrong "
+      << s.wrongCellsAligned << ", unsafe free " << s.unsafeFreeAligned << ", lost "
+      << (s.lostAligned ? "yes" : "no") << "\n";
   std::cout << out.str() << std::flush;
 
   if (!o.png.empty()) {

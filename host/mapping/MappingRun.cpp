@@ -81,7 +81,7 @@ MappingRun::~MappingRun() = default;
 const PropagationExplorer* MappingRun::propagation() const { return propagation_.get(); }
 
 DriveEvent MappingRun::carryOut(const DriveAction& a) {
-  return carryOutOnRobot(robot_, a, explorerConfig_.geometry);
+  return carryOutOnRobot(robot_, a, explorerConfig_.geometry, config_.sensorsTogether);
 }
 
 bool MappingRun::step() {

@@ -38,6 +38,9 @@ struct RunConfig {
   double beamHalfAngleDeg = -1.0;         // the robot's sonar beam, known to it (< 0: the noise profile's cone)
   bool poseCorrection = true;             // the pilot keeps the robot on the grid (off: dead reckoning)
   uint16_t searchSliceStates = 8;        // travel-search states per explorer step (brick CPU budget)
+  // The firmware pings one sensor at a time (single shot, SonarSequencer); true fires every read as if the
+  // other sensors pinged at the same moment (continuous mode), so their cross-talk shows.
+  bool sensorsTogether = false;
 };
 
 // One mapping run: the common core's explorer and pilot driven by the simulated robot, exactly as

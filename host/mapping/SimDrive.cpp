@@ -23,11 +23,12 @@ RangeGeometry sonarGeometryFor(const sim::World& world, double minRangeM, double
   return g;
 }
 
-DriveEvent carryOutOnRobot(sim::SimRobot& robot, const DriveAction& a, const RangeGeometry& geometry) {
+DriveEvent carryOutOnRobot(sim::SimRobot& robot, const DriveAction& a, const RangeGeometry& geometry,
+                           bool othersFiring) {
   switch (a.kind) {
     case DriveAction::Kind::Read: {
       RangeFilter filter(geometry);
-      while (!filter.done()) filter.add(static_cast<uint8_t>(robot.ping(static_cast<int>(a.sensor))));
+      while (!filter.done()) filter.add(static_cast<uint8_t>(robot.ping(static_cast<int>(a.sensor), othersFiring)));
       return DriveEvent::range(a.sensor, filter.result());
     }
     case DriveAction::Kind::Rotate:

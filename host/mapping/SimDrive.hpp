@@ -19,6 +19,8 @@ namespace nxtmap::mapping {
 RangeGeometry sonarGeometryFor(const sim::World& world, double minRangeM, double rangeM, double beamHalfAngleDeg,
                                int mountCm = 0);
 
-DriveEvent carryOutOnRobot(sim::SimRobot& robot, const DriveAction& a, const RangeGeometry& geometry);
+// othersFiring: every ping hears the other sensors pinging at the same moment (see RunConfig::sensorsTogether).
+DriveEvent carryOutOnRobot(sim::SimRobot& robot, const DriveAction& a, const RangeGeometry& geometry,
+                           bool othersFiring = false);
 
 }  // namespace nxtmap::mapping
