@@ -108,6 +108,18 @@ std::vector<std::string> rasterise(const std::vector<Point>& poly, double x0, do
   return rows;
 }
 
+// The outline as one Hard ring in the raster's plane (cm, y down from the top edge at y0 + h * res).
+std::shared_ptr<const sim::Scene> outlineScene(const std::vector<Point>& poly, double x0, double y0, int h, double res) {
+  const double topM = y0 + h * res;
+  sim::Ring ring;
+  ring.surface = sim::Surface::Hard;
+  for (const Point& p : poly) ring.points.emplace_back((p.x - x0) * 100.0, (topM - p.y) * 100.0);
+  auto scene = std::make_shared<sim::Scene>();
+  scene->addRing(std::move(ring));
+  scene->finish();
+  return scene;
+}
+
 // A room category ("Living_Room"): 1..48 of [A-Za-z0-9_-], not "null" in any case, so that the label named
 // after it (lower case, "room_" before a leading digit, "_N" after a repeat) is a valid label name.
 bool validCategory(const std::string& c) {
@@ -193,7 +205,7 @@ HousePlanLoad parseHouseExpo(const std::string& text, const std::string& name, d
   std::vector<std::string> rows = rasterise(poly, x0, y0, w, h, res, freeCells);
   if (freeCells == 0) return fail(name, "the outline encloses no cell");
 
-  HousePlan plan{"", 0, {}, sim::World::fromRows(rows, res), x0, y0};
+  HousePlan plan{"", 0, {}, sim::World::fromRows(rows, res), x0, y0, outlineScene(poly, x0, y0, h, res)};
   const std::string roomsError = readRooms(j, e, x0, y0, w, h, res, plan.rooms);
   if (!roomsError.empty()) return fail(name, roomsError);
   plan.id = name;

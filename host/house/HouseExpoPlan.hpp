@@ -3,14 +3,17 @@
 // `room_category` {name: [[x1, y1, x2, y2], ...]} room boxes in metres, `room_num`, `id`, `bbox`.
 // Rasterising: a cell whose centre lies inside the polygon (even-odd rule) is free, every other
 // cell is wall; one ring of wall cells surrounds the bounding box. World rows grow downwards,
-// y in metres grows upwards: row 0 holds the plan's highest y.
+// y in metres grows upwards: row 0 holds the plan's highest y. Beside the raster, the plan keeps its
+// outline exactly as given (sim::Scene, no snapping) in the raster's plane, so the two stay in register.
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "host/sim/Scene.hpp"
 #include "host/sim/World.hpp"
 
 namespace nxtmap::house {
@@ -29,6 +32,11 @@ struct HousePlan {
   sim::World world;
   // The metres of the world's lower-left corner (col 0's left edge, the last row's bottom edge).
   double originXM = 0.0, originYM = 0.0;
+  // The outline polygon exactly as given, one Hard ring, finished; in the world's plane (cm, y down):
+  // x = (xM - originXM) * 100, y = (originYM + height * resolutionM - yM) * 100, so cell (col, row) spans
+  // x col * cellCm .. (col + 1) * cellCm and y row * cellCm .. (row + 1) * cellCm. Shared, never null
+  // in a loaded plan.
+  std::shared_ptr<const sim::Scene> scene;
 };
 
 struct HousePlanLoad {
