@@ -1,6 +1,7 @@
 #include "host/emu/DriveModel.hpp"
 
 #include "host/sim/RayCast.hpp"
+#include "host/sim/WheelModel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,10 +38,10 @@ uint64_t DriveModel::nextEventAt() const {
 
 void DriveModel::advanceTo(uint64_t now) {
     std::array<int, 3> power{avr_.motorPower(0), avr_.motorPower(1), avr_.motorPower(2)};
+    sim::WheelModel& wheels = robot_.wheels();
     if (power != lastPower_) {  // a new stretch of motion: a new slip factor
         lastPower_ = power;
-        const double sigma = robot_.noise().slipSigma;
-        slip_ = sigma > 0.0 ? 1.0 + std::normal_distribution<double>(0.0, sigma)(rng_) : 1.0;
+        wheels.newStretch(rng_);
     }
     while (last_ < now) {
         const uint64_t step = std::min(now - last_, kMaxStep);
@@ -53,11 +54,11 @@ void DriveModel::advanceTo(uint64_t now) {
             moving = moving || d[static_cast<size_t>(m)] != 0.0;
         }
         if (!moving) { last_ = now; break; }
-        const double cmPerDeg = kPi * geo_.wheelDiameterCm / 360.0;
-        const double dl = d[static_cast<size_t>(geo_.leftMotor)] * cmPerDeg * slip_;
-        const double dr = d[static_cast<size_t>(geo_.rightMotor)] * cmPerDeg * slip_;
+        const sim::WheelModel before = wheels;  // a stall leaves the gear play where it was
+        double dl = 0.0, dr = 0.0;
+        wheels.arcs(d[static_cast<size_t>(geo_.leftMotor)], d[static_cast<size_t>(geo_.rightMotor)], dl, dr);
         const double ds = (dl + dr) / 2.0;
-        const double dHeading = (dl - dr) / geo_.trackCm * 180.0 / kPi;  // clockwise positive
+        const double dHeading = (dl - dr) / wheels.trackCm() * 180.0 / kPi;  // clockwise positive
         const double midHeading = robot_.headingDeg() + dHeading / 2.0;
         double dx = 0.0, dy = 0.0;
         sim::directionVector(midHeading, dx, dy);
@@ -65,6 +66,7 @@ void DriveModel::advanceTo(uint64_t now) {
             for (size_t m = 0; m < 3; ++m) deg_[m] += d[m];
             drivenCm_ += std::fabs(ds);
         } else {
+            wheels = before;
             ++stalls_;  // bumped: the driven wheels do not turn
             for (int m = 0; m < 3; ++m)
                 if (m != geo_.leftMotor && m != geo_.rightMotor) deg_[static_cast<size_t>(m)] += d[static_cast<size_t>(m)];

@@ -1,7 +1,9 @@
 // DriveModel: the two driven wheels and the three motor encoders. Motor power from the AVR model turns
-// each motor at a speed proportional to its power; the left/right wheel rotations move the simulated
-// robot (differential drive) through its continuous pose; a robot that would enter a blocked cell does
-// not move and its wheels stall. Each motor's encoder drives a quadrature pair of PIOA pins (pulse, dir):
+// each motor at a speed proportional to its power; the robot's wheel model (sim::WheelModel: backlash
+// between motor and wheel, UMBmark's unequal diameters and track error, slip) turns the left/right motor
+// rotations into ground arcs that move the simulated robot (differential drive over the actual track)
+// through its continuous pose; a robot whose body would meet an obstacle does not move and its wheels
+// stall. The encoders sit on the motors: they count motor degrees, whatever the wheels did. Each motor's encoder drives a quadrature pair of PIOA pins (pulse, dir):
 // 1 pulse-pin edge per degree, pulse != dir on an edge = forward (nxt-hardware.md 4).
 #pragma once
 
@@ -18,8 +20,8 @@ namespace nxtmap::emu {
 struct DriveGeometry {
     int leftMotor = 0;               // 0 = A, 1 = B, 2 = C
     int rightMotor = 1;
-    double wheelDiameterCm = 5.6;    // NXT 56 x 26 tyre
-    double trackCm = 11.2;           // wheel centre to wheel centre (firmware MotionGeometry 112 mm)
+    double wheelDiameterCm = 5.6;    // NXT 56 x 26 tyre (informative: the robot's WheelModel rolls its own)
+    double trackCm = 11.2;           // wheel centre to wheel centre, firmware MotionGeometry 112 mm (likewise)
     double degPerSecPerPercent = 8;  // motor speed: 100 % = 800 deg/s
 };
 
@@ -28,8 +30,9 @@ public:
     static constexpr std::array<int, 3> kPulsePin{15, 26, 0};  // motors A, B, C
     static constexpr std::array<int, 3> kDirPin{1, 9, 8};
 
-    // Wheel slip from the robot's noise profile (slipSigma): each stretch of constant motor power moves the
-    // robot by the wheels' arc times a factor drawn from N(1, slipSigma) (seeded: same seed, same run).
+    // Wheels: robot.wheels(), from the robot's noise profile. Each stretch of constant motor power moves the
+    // robot by the wheels' arcs times a slip factor drawn from N(1, slipSigma) by an rng of this model's own
+    // (seeded: same seed, same run).
     DriveModel(Clock& clock, const AvrModel& avr, Pioa& pio, sim::SimRobot& robot, const DriveGeometry& g,
                uint64_t seed = 1);
 
@@ -59,7 +62,6 @@ private:
     double drivenCm_ = 0.0;
     std::mt19937_64 rng_;
     std::array<int, 3> lastPower_{};
-    double slip_ = 1.0;
 };
 
 }  // namespace nxtmap::emu
