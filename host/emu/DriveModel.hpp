@@ -3,8 +3,9 @@
 // between motor and wheel, UMBmark's unequal diameters and track error, slip) turns the left/right motor
 // rotations into ground arcs that move the simulated robot (differential drive over the actual track)
 // through its continuous pose; a robot whose body would meet an obstacle does not move and its wheels
-// stall. The encoders sit on the motors: they count motor degrees, whatever the wheels did. Each motor's encoder drives a quadrature pair of PIOA pins (pulse, dir):
-// 1 pulse-pin edge per degree, pulse != dir on an edge = forward (nxt-hardware.md 4).
+// stall. The encoders sit on the motors: they count motor degrees, whatever the wheels did. Each motor's
+// encoder drives a quadrature pair of PIOA pins (pulse, dir): 1 pulse-pin edge per degree, pulse != dir
+// on an edge = forward (nxt-hardware.md 4).
 #pragma once
 
 #include "host/emu/AvrModel.hpp"
