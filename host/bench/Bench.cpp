@@ -3,6 +3,7 @@
 //   nxtmap-bench [SCENARIO_DIR]   (default: ./worlds/seed-appendix-a, else the source tree's)
 //   nxtmap-bench plan             the path-search section alone (host/bench/PlanBench.cpp)
 //   nxtmap-bench house            the house section alone (host/bench/HouseBench.cpp)
+//   nxtmap-bench realism          the realism section alone (host/bench/RealismBench.cpp)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -21,6 +22,7 @@
 namespace nxtmap::bench {
 int runPlanBench();  // host/bench/PlanBench.cpp: the path-search section
 int runHouseBench();  // host/bench/HouseBench.cpp: the house section
+int runRealismBench();  // host/bench/RealismBench.cpp: the realism section
 }
 
 namespace {
@@ -206,7 +208,9 @@ int run(int argc, char** argv) {
   bench::printLinkBench(dir + "/occupancy-120.map", 1, 20);
   nxtmap::bench::runEmuBench(dir);  // the emulated brick's budgets on the real firmware
   const int rc = nxtmap::bench::runPlanBench();
-  return rc != 0 ? rc : nxtmap::bench::runHouseBench();
+  if (rc != 0) return rc;
+  const int house = nxtmap::bench::runHouseBench();
+  return house != 0 ? house : nxtmap::bench::runRealismBench();
 }
 }  // namespace
 
@@ -214,6 +218,7 @@ int main(int argc, char** argv) {
   try {
     if (argc > 1 && std::string(argv[1]) == "plan") return nxtmap::bench::runPlanBench();  // that section alone
     if (argc > 1 && std::string(argv[1]) == "house") return nxtmap::bench::runHouseBench();  // that section alone
+    if (argc > 1 && std::string(argv[1]) == "realism") return nxtmap::bench::runRealismBench();  // that section alone
     if (argc > 1 && std::string(argv[1]) == "link") {  // that section alone
       nxtmap::bench::printLinkBench(scenarioDir(1, argv) + "/occupancy-120.map", 1, 20);
       return 0;

@@ -1,0 +1,48 @@
+// The realism section of `make bench` (RealismBench.cpp: table 1, presets; RealismFactors.cpp: table 2, one
+// factor at a time) and what its two tables share.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "host/bench/RealismRuns.hpp"
+#include "host/cli/ExperimentRunner.hpp"
+#include "host/sim/Site.hpp"
+
+namespace nxtmap::bench {
+
+// Every world the section runs, loaded once (the sets point into the suites and `sites`).
+struct RealismWorlds {
+  cli::Suite suite10, suite20;  // worlds/seed-appendix-a at 10 cm (published) and 20 cm cells (brick)
+  std::vector<sim::Site> sites;  // worlds/rooms/*.yaml at 20 cm, then the HouseExpo plans at 10 cm
+  RealismSet published, brick, furnished, houses;
+  // Throws cli::CliError naming the file on any problem.
+  void load();
+};
+
+// The section: both tables and its wall time; 0 when every row ran.
+int runRealismBench();
+// Table 2 (RealismFactors.cpp).
+void factorTable(const RealismWorlds& worlds);
+
+// "+1.5", "-3", "0".
+std::string formatDelta(double v, int decimals);
+// Left-aligned columns, a rule under the head; an empty row prints an empty line.
+void printColumns(const std::vector<std::string>& head, const std::vector<std::vector<std::string>>& rows);
+
+// "[realism] PART: run k of N" on stderr, rewritten in place; a newline when done.
+class ProgressLine {
+ public:
+  ProgressLine(std::string part, size_t total);
+  ~ProgressLine();
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+  void tick(size_t add = 1);
+
+ private:
+  std::string part_;
+  size_t total_ = 0, done_ = 0;
+};
+
+}  // namespace nxtmap::bench
