@@ -125,10 +125,6 @@ sim::World loadWorld(const std::string& path) {
   return std::move(*load.world);
 }
 
-void checkRangeCoversCell(const sim::World& world, double rangeM) {
-  checkRangeCoversCell(static_cast<int>(std::lround(world.resolutionM() * 100.0)), rangeM);
-}
-
 void checkRangeCoversCell(int cellCm, double rangeM) {
   RangeGeometry g;
   g.cellCm = static_cast<int16_t>(cellCm);
@@ -136,7 +132,7 @@ void checkRangeCoversCell(int cellCm, double rangeM) {
   if (g.freeCells() >= 1) return;
   char buf[240];
   std::snprintf(buf, sizeof buf,
-                "--range-m %g reaches less than 1.5 of the world's %d cm cells, so no reading could prove a "
+                "--range-m %g reaches less than 1.5 of the robot's %d cm cells, so no reading could prove a "
                 "neighbouring cell free: use --range-m %d.%02d or more",
                 rangeM, cellCm, (3 * cellCm + 1) / 2 / 100, (3 * cellCm + 1) / 2 % 100);
   throw CliError(buf);

@@ -35,10 +35,8 @@ std::string maxNodesProblem(const std::string& text);
 
 // World::load, its error text on failure.
 sim::World loadWorld(const std::string& path);
-// The trusted range must cover 1.5 of the world's cells (RangeGeometry::freeCells() >= 1: the adjacent cell
+// The trusted range must cover 1.5 of the robot's cells (RangeGeometry::freeCells() >= 1: the adjacent cell
 // wholly); otherwise no reading proves a neighbour free and the robot maps next to nothing.
-void checkRangeCoversCell(const sim::World& world, double rangeM);
-// The same for a robot of cellCm cells.
 void checkRangeCoversCell(int cellCm, double rangeM);
 // The start must be a free cell inside the world.
 void checkStart(const sim::World& world, int col, int row, const std::string& where);

@@ -2,6 +2,7 @@
 // then its counters and its score against the world.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "host/cli/SiteFiles.hpp"
@@ -16,7 +17,8 @@ struct SimOptions {
   std::string world;
   std::string start;
   std::string heading = "N";
-  double rangeM = 0.0;         // trusted maximum range, m; 0 = the robot's own
+  double rangeM = 0.0;      // trusted maximum range, m (when rangeGiven)
+  bool rangeGiven = false;  // --range-m given; otherwise the robot's own range
   WorldRunOptions run;         // --noise, --robot, --start-jitter
   std::string seed = "1";
   std::string strategy = "propagation";

@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -19,6 +21,24 @@ namespace {
 bool endsWith(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
+// Moves the plan's room boxes from its raster's cells onto the robot's grid `frame` (whose cell (0, 0) is
+// centred on frame.originCm): possible when the grid has the raster's cells, is square to it and its cell
+// centres are the raster's. False otherwise.
+bool movePlanOntoGrid(house::HousePlan& plan, const sim::World& truth, const sim::GridFrame& frame) {
+  const double cell = plan.world.resolutionM() * 100.0;
+  if (std::fabs(truth.resolutionM() * 100.0 - cell) > 1e-9 || frame.headingDeg != 0.0) return false;
+  const double dx = frame.originCm.x() / cell - 0.5, dy = frame.originCm.y() / cell - 0.5;
+  if (std::fabs(dx - std::round(dx)) > 1e-6 || std::fabs(dy - std::round(dy)) > 1e-6) return false;
+  const int shiftCol = -static_cast<int>(std::lround(dx)), shiftRow = -static_cast<int>(std::lround(dy));
+  for (house::PlanRoom& r : plan.rooms) {
+    r.minCol += shiftCol;
+    r.maxCol += shiftCol;
+    r.minRow += shiftRow;
+    r.maxRow += shiftRow;
+  }
+  return true;
+}
+
 }  // namespace
 
 CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& o) {
@@ -29,7 +49,8 @@ CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& o) {
                 "start cell COL,ROW of a raster world (col right, row down); for a world file X,Y[,YAW] in its "
                 "metres; optional for a .json plan and a world file with a start");
   c->add_option("--heading", o.heading, "initial heading N, E, S or W (default N)");
-  c->add_option("--range-m", o.rangeM, "trusted maximum sensor range in metres (default: the robot's, 1 m published)");
+  c->add_option("--range-m", o.rangeM, "trusted maximum sensor range in metres (default: the robot's, 1 m published)")
+      ->each([&o](const std::string&) { o.rangeGiven = true; });
   addWorldRunOptions(*c, o.run);
   c->add_option("--seed", o.seed, "random seed of the noise (default 1)");
   c->add_option("--strategy", o.strategy, "exploration strategy per room: propagation, frontier (default frontier: fewer turns, so the pose holds better across rooms)");
@@ -43,7 +64,7 @@ int runSimHouse(const SimHouseOptions& o) {
   house::HouseConfig config;
   parseHeading(o.heading);
   sim::RobotDescription robot = parseRobot(o.run.robot);
-  if (o.rangeM != 0.0) robot.rangeM = checkRangeM(o.rangeM);
+  if (o.rangeGiven) robot.rangeM = checkRangeM(o.rangeM);
   checkRangeCoversCell(robot.cellCm, robot.rangeM);
   config.robot = robot;
   config.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
@@ -64,10 +85,9 @@ int runSimHouse(const SimHouseOptions& o) {
 
   house::HouseMapper mapper(site, config);
   const sim::World& world = mapper.world();
-  // The plan's room boxes are cells of its raster: they hold on the robot's grid only when that grid is the
-  // raster's (the robot's cells, set down square on a cell centre).
-  if (plan && (world.width() != plan->world.width() || world.height() != plan->world.height() ||
-               config.startJitterDeg > 0.0)) {
+  // The plan's room boxes are cells of its raster: they move onto the robot's grid when that grid has the
+  // raster's cells and is square to it (the robot set down square on a cell centre).
+  if (plan && !movePlanOntoGrid(*plan, mapper.world(), mapper.robot().frame())) {
     std::cout << "(the plan's rooms are on its own " << plan->world.resolutionM() * 100.0
               << " cm grid, not the robot's: rooms are not labelled from the plan, plan coverage not scored)\n";
     plan.reset();

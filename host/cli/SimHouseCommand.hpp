@@ -3,6 +3,7 @@
 // merged map's agreement with the world, and optionally saves the house (one ROS map per room
 // and a house file).
 #pragma once
+#include <optional>
 #include <string>
 
 #include "host/cli/SiteFiles.hpp"
@@ -17,7 +18,8 @@ struct SimHouseOptions {
   std::string world;   // HouseExpo .json, Moving AI .map or ROS .yaml
   std::string start;   // COL,ROW; optional for a HouseExpo plan (a start is picked)
   std::string heading = "N";
-  double rangeM = 0.0;  // trusted maximum range, m; 0 = the robot's own
+  double rangeM = 0.0;      // trusted maximum range, m (when rangeGiven)
+  bool rangeGiven = false;  // --range-m given; otherwise the robot's own range
   WorldRunOptions run;  // --noise, --robot, --start-jitter
   std::string seed = "1";
   std::string strategy = "frontier";

@@ -10,7 +10,8 @@ namespace {
 
 // A square start on a raster cell's centre with the raster's own cells; sets the start cell.
 bool onRasterGrid(const Site& site, const RobotDescription& robot, const StartPose& start, int& col, int& row) {
-    if (!site.raster || std::fabs(site.raster->resolutionM() * 100.0 - robot.cellCm) > 1e-9) return false;
+    if (!site.raster || !site.sceneIsRaster || std::fabs(site.raster->resolutionM() * 100.0 - robot.cellCm) > 1e-9)
+        return false;
     if (squareRemainderDeg(start.headingDeg) != 0.0) return false;
     const double cell = robot.cellCm;
     col = static_cast<int>(std::floor(start.cm.x() / cell));

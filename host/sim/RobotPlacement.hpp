@@ -23,8 +23,8 @@ struct RobotPlacement {
     Heading heading;        // the start heading against the grid (N, E, S, W)
 };
 
-// The robot's grid is the raster's own (and the raster itself the truth, cell numbers kept) when the site
-// has a raster of the robot's cells and the true start is square on one of its cell centres; otherwise the
+// The robot's grid is the raster's own (and the raster itself the truth, cell numbers kept) when the site's
+// scene is a raster of the robot's cells and the true start is square on one of its cell centres; otherwise the
 // grid is laid over the scene from the true start (placeOnGrid) and the truth rasterised on it.
 RobotPlacement placeRobot(const Site& site, const RobotDescription& robot, const StartPose& nominal,
                           double startJitterDeg, uint64_t seed);

@@ -119,14 +119,16 @@ bool SimRobot::setPose(double xCm, double yCm, double headingDeg) {
     return true;
 }
 
-bool SimRobot::rotate(double deg) { return spin(wheels_.spin(deg, rng_).headingChangeDeg); }
+bool SimRobot::rotate(double deg) { return spin(wheels_.spin(deg, rng_)); }
 
-void SimRobot::turn(int eighths) { spin(wheels_.turnEighths(eighths, rng_).headingChangeDeg); }
+void SimRobot::turn(int eighths) { spin(wheels_.turnEighths(eighths, rng_)); }
 
-bool SimRobot::spin(double deg) {
+bool SimRobot::spin(const WheelStep& step) {
+    const double deg = step.headingChangeDeg;
     clockMs_ += std::fabs(deg) / kSpinDegPerS * 1000.0;
     if (robot_.footprint(x_, y_, heading_).empty()) {  // a point turns freely
-        setHeading(heading_ + deg);
+        // (the wheels' part first, then the noise: the published runs' arithmetic, bit for bit)
+        setHeading(heading_ + step.headingWheelsDeg + step.headingNoiseDeg);
         return true;
     }
     const int checks = std::max(1, static_cast<int>(std::ceil(std::fabs(deg) / kSpinCheckDeg)));

@@ -74,7 +74,7 @@ public:
 
 private:
     bool fits(double xCm, double yCm, double headingDeg) const;
-    bool spin(double deg);                 // turns the body by deg, stopping where it meets an obstacle
+    bool spin(const WheelStep& step);      // turns the body, stopping where it meets an obstacle
     bool drive(const WheelStep& step);     // drives the wheels' actual motion, all or nothing
     void setHeading(double deg);
 

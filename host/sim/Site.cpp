@@ -14,6 +14,7 @@ Site siteFromRaster(World raster) {
     site.name = raster.name();
     site.scene = std::make_shared<const Scene>(traceRaster(raster));
     site.raster = std::move(raster);
+    site.sceneIsRaster = true;
     return site;
 }
 

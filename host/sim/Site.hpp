@@ -23,6 +23,8 @@ struct Site {
     std::shared_ptr<const Scene> scene;   // never null in a loaded site
     std::optional<World> raster;          // Moving AI / ROS source raster (its cells: cell (c, r) spans
                                           // c..c+1 x r..r+1 times its resolution in the plane)
+    bool sceneIsRaster = false;           // the scene is the raster traced (so the raster is its own truth);
+                                          // false for a HouseExpo plan, whose raster only names cells
     std::optional<StartPose> start;       // the world file's own start (nxtmap world files)
 
     // The centre of raster cell (col, row) facing heading: a start given as a cell of the raster.

@@ -56,7 +56,10 @@ SiteLoad houseExpoSite(const std::string& path) {
   if (!load.plan) return fail(load.error);
   int col = 0, row = 0;
   const bool hasStart = house::defaultStart(*load.plan, col, row);
-  sim::Site site = sim::siteFromRaster(std::move(load.plan->world));  // PENDING-EXACT-OUTLINE
+  sim::Site site;
+  site.name = std::filesystem::path(path).stem().string();
+  site.scene = load.plan->scene;  // the outline exactly as given; the raster only for its cells and start
+  site.raster = std::move(load.plan->world);
   if (hasStart) site.start = site.rasterStart(col, row, 0.0);
   return ok(std::move(site));
 }

@@ -101,19 +101,13 @@ std::vector<BadCall> worldCases() {
 
 std::vector<BadCall> otherCases() {
   const auto none = [](const TempDir&) {};
-  const std::string notSimulated = "is not one the simulator can use: its cells must be a whole number of centimetres";
   const std::string path = "path " + kRoom + " --from 1,20 --to 2,20 --draw never --max-nodes ";
   const std::string maxNodes = "--max-nodes: must be a whole number 1..1000000000000, not ";
   return {
-      {"sim_resolutionQuarterCentimetres", "sim {dir}/w.yaml --start 1,1 --show none", ros("resolution: 0.025"),
-       "resolution 0.025 m " + notSimulated},
-      {"simHouse_resolutionCentimetre", "sim-house {dir}/w.yaml --start 1,1", ros("resolution: 0.01"), notSimulated},
-      {"sim_resolutionBetweenCentimetres", "sim {dir}/w.yaml --start 1,1 --show none", ros("resolution: 0.125"),
-       notSimulated},
-      {"sim_rangeShorterThanACellAndAHalf", "sim {dir}/w.yaml --start 1,1 --show none --range-m 0.6",
-       ros("resolution: 0.5"), "--range-m 0.6 reaches less than 1.5 of the world's 50 cm cells"},
-      {"simHouse_rangeShorterThanACellAndAHalf", "sim-house {dir}/w.yaml --start 1,1 --range-m 0.6",
-       ros("resolution: 0.5"), "--range-m 0.6 reaches less than 1.5 of the world's 50 cm cells, so no reading could prove a neighbouring cell free: use --range-m 0.75 or more"},
+      {"sim_rangeShorterThanACellAndAHalf", "sim {dir}/w.yaml --start 1,1 --show none --robot brick --range-m 0.2",
+       ros("resolution: 0.5"), "--range-m 0.2 reaches less than 1.5 of the robot's 20 cm cells"},
+      {"simHouse_rangeShorterThanACellAndAHalf", "sim-house {dir}/w.yaml --start 1,1 --robot brick --range-m 0.2",
+       ros("resolution: 0.5"), "--range-m 0.2 reaches less than 1.5 of the robot's 20 cm cells, so no reading could prove a neighbouring cell free: use --range-m 0.30 or more"},
       {"emulate_firmwareDevZero", "emulate " + kRoom + " --start 1,20 --seconds 1 --firmware {dir}/fw.elf",
        link("/dev/zero", "fw.elf"), "fw.elf: is a device, not a regular file"},
       {"emulate_firmwareFolder", "emulate " + kRoom + " --start 1,20 --seconds 1 --firmware {dir}/fw.elf",
@@ -155,7 +149,17 @@ TEST(CliBadWorld, UnusableResolutionsFirmwareFilesAndCounts) {
   for (const BadCall& c : otherCases()) expectRefused(c);
 }
 
-TEST(CliBadWorld, ResolutionsOnlyTheSimulatorCannotUseStillPlan) {
+// The world's cells are the world's, the robot's the robot's: a ROS map of any resolution it allows is traced
+// at its own cells and the (published, 10 cm) robot maps it on its own grid; the planner uses it as it is.
+TEST(CliBadWorld, AnyRosResolutionIsSimulatedOnTheRobotsOwnCells) {
+  for (const std::string res : {"0.01", "0.025", "0.125", "0.5"}) {
+    SCOPED_TRACE(res);
+    TempDir tmp("badworld_res");
+    ros("resolution: " + res)(tmp);
+    const RunOutput sim = runCli("sim " + shellQuote(tmp.path("w.yaml")) + " --start 1,1 --show none");
+    EXPECT_EQ(sim.exitCode, 0) << sim.err;
+    EXPECT_NE(sim.out.find("cells of 10 cm, robot published"), std::string::npos) << sim.out;
+  }
   TempDir tmp("badworld_plan");
   ros("resolution: 0.025")(tmp);
   const RunOutput r = runCli("path " + shellQuote(tmp.path("w.yaml")) + " --from 1,1 --to 2,1 --draw never");
