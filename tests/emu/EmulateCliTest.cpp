@@ -52,6 +52,19 @@ TEST(EmulateCli, RealFirmwareRunPrintsMeasurementsAndLcd) {
   EXPECT_NE(r.out.find("x real time"), std::string::npos) << r.out;
   EXPECT_EQ(readFile(png).substr(1, 3), "PNG");
 }
+
+// The firmware drives the brick robot (20 cm cells, 16 x 18 cm body) through a hand-made room turned 10 degrees,
+// with the measured sonar and wheels, set down off square: the emulated brick runs in the honest world too.
+TEST(EmulateCli, RealFirmwareRunsInATurnedRoomWithTheMeasuredSensorsAndWheels) {
+  const RunOutput r = runCli("emulate worlds/rooms/square-turned.yaml --noise nxt --start-jitter 10 --seed 3 --seconds 20 "
+                             "--firmware " + shellQuote(std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap.elf"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("robot brick (20 cm cells)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("noise nxt"), std::string::npos) << r.out;
+  const size_t at = r.out.find("driven ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  EXPECT_GT(std::stod(r.out.substr(at + 7)), 10.0) << r.out;  // cm: it explored, not stood still
+}
 #endif
 
 }  // namespace

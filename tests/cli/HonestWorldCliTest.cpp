@@ -1,0 +1,99 @@
+// The honest world from the outside (issue 16): hand-made world files, the robot descriptions, the start
+// jitter and the presets through `nxtmap sim`, `experiments` and `emulate`; bad worlds and options are one
+// line and exit code 2.
+#include "tests/cli/CliTestSupport.hpp"
+
+#include <gtest/gtest.h>
+
+namespace nxtmap::cli::test {
+namespace {
+
+const std::string kTurned = "worlds/rooms/square-turned.yaml";  // 3 x 3 m, turned 10 deg, a third of a cell off
+const std::string kLiving = "worlds/rooms/living-room.yaml";
+
+void expectUsageError(const RunOutput& r, const std::string& needle) {
+  EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+  EXPECT_EQ(r.err.rfind("nxtmap: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+  EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+}
+
+std::string field(const std::string& out, const std::string& label) {
+  const size_t at = out.find("\n" + label);
+  if (at == std::string::npos) return "";
+  return out.substr(at + 1, out.find('\n', at + 1) - at - 1);
+}
+
+TEST(HonestWorldCli, ATurnedAndOffsetRoomLoadsRunsAndIsScoredInBothFrames) {
+  const RunOutput r = runCli("sim " + kTurned + " --robot brick --noise nxt --start-jitter 10 --show none");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("cells of 20 cm, robot brick"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("deg off square)"), std::string::npos) << r.out;
+  for (const std::string label : {"detected", "wrong cells", "unsafe free", "phantom occupied", "lost", "aligned"})
+    EXPECT_FALSE(field(r.out, label).empty()) << label << "\n" << r.out;
+  EXPECT_NE(field(r.out, "aligned").find("to fit the world best: detected"), std::string::npos) << r.out;
+}
+
+TEST(HonestWorldCli, SameSeedSameRunAnotherSeedAnotherStart) {
+  const std::string run = "sim " + kLiving + " --robot brick --noise nxt --start-jitter 10 --show none --seed ";
+  const RunOutput a = runCli(run + "4"), b = runCli(run + "4"), c = runCli(run + "5");
+  ASSERT_EQ(a.exitCode, 0) << a.err;
+  EXPECT_EQ(a.out, b.out);
+  EXPECT_NE(field(a.out, "run"), field(c.out, "run"));  // set down at another angle
+}
+
+TEST(HonestWorldCli, NoiseListPrintsEveryPresetWithUnits) {
+  const RunOutput r = runCli("sim --noise list");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const std::string preset : {"typical:", "nxt:", "nxt-uncalibrated:", "harsh:"})
+    EXPECT_NE(r.out.find("\n" + preset + "\n"), std::string::npos) << preset;
+  for (const std::string unit : {" cm ", " deg ", " ms "}) EXPECT_NE(r.out.find(unit), std::string::npos) << unit;
+  EXPECT_EQ(r.out.rfind("ideal:", 0), 0u) << r.out;
+}
+
+TEST(HonestWorldCli, ExperimentsRunTheLayoutsAtTheBricksCells) {
+  const RunOutput r = runCli("experiments worlds/seed-appendix-a --robot brick --noise nxt --start-jitter 3");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("robot brick (20 cm cells), set down up to 3 deg off square"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("noise nxt"), std::string::npos) << r.out;
+}
+
+struct BadWorldCase {
+  const char* name;
+  std::string args;
+  std::string expected;
+};
+
+class HonestWorldBad : public ::testing::TestWithParam<BadWorldCase> {};
+
+TEST_P(HonestWorldBad, IsOneLineAndExitTwo) {
+  TempDir tmp(std::string("honest_") + GetParam().name);
+  tmp.write("open.yaml", "nxtmap_world: 1\noutline: {polygon: [[0, 0], [3, 0]]}\n");
+  tmp.write("cross.yaml", "nxtmap_world: 1\noutline: {polygon: [[0, 0], [3, 3], [3, 0], [0, 3]]}\n");
+  tmp.write("surface.yaml", "nxtmap_world: 1\noutline: {polygon: [[0, 0], [3, 0], [3, 3], [0, 3]], surface: velvet}\n");
+  std::string args = GetParam().args;
+  for (size_t at = args.find("{dir}"); at != std::string::npos; at = args.find("{dir}")) args.replace(at, 5, tmp.path());
+  expectUsageError(runCli(args), GetParam().expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Table, HonestWorldBad,
+    ::testing::Values(
+        BadWorldCase{"openPolygon", "sim {dir}/open.yaml --start 1,1", "open.yaml"},
+        BadWorldCase{"selfIntersecting", "sim {dir}/cross.yaml --start 1,1", "cross"},
+        BadWorldCase{"unknownSurface", "sim {dir}/surface.yaml --start 1,1", "velvet"},
+        BadWorldCase{"startInTheSofa", "sim " + kLiving + " --start 2,3.2", "inside an obstacle"},
+        BadWorldCase{"startOutside", "sim " + kLiving + " --start 9,9", "start"},
+        BadWorldCase{"bodyDoesNotFit", "sim " + kLiving + " --robot brick --start 0.05,2", "does not fit"},
+        BadWorldCase{"startNotMetres", "sim " + kLiving + " --start one,2", "X,Y or X,Y,YAW"},
+        BadWorldCase{"unknownRobot", "sim " + kTurned + " --robot tank", "--robot must be one of published, brick"},
+        BadWorldCase{"jitterTooLarge", "sim " + kTurned + " --start-jitter 60", "--start-jitter must be 0 .. 45"},
+        BadWorldCase{"jitterNegative", "sim " + kTurned + " --start-jitter=-1", "--start-jitter"},
+        BadWorldCase{"unknownPreset", "sim " + kTurned + " --noise lego", "--noise must be one of ideal"},
+        BadWorldCase{"noWorld", "sim --noise nxt", "sim: world is required"},
+        BadWorldCase{"experimentsRobot", "experiments worlds/seed-appendix-a --robot tank", "--robot"},
+        BadWorldCase{"houseBody", "sim-house " + kLiving + " --robot brick --start 0.05,2", "does not fit"}),
+    [](const ::testing::TestParamInfo<BadWorldCase>& i) { return std::string(i.param.name); });
+
+}  // namespace
+}  // namespace nxtmap::cli::test
