@@ -51,8 +51,9 @@ public:
     // Continuous motion (the emulated brick's wheels): puts the centre at (xCm, yCm) facing headingDeg,
     // unless the body there touches an obstacle; then returns false and the pose is unchanged.
     bool setPose(double xCm, double yCm, double headingDeg);
-    // Turns in place by any angle, + = clockwise, through the wheel model. False (pose unchanged) if the body
-    // would sweep into an obstacle.
+    // Turns in place by any angle, + = clockwise, through the wheel model. If the body's corners meet an
+    // obstacle on the way the wheels stall there: the robot stays turned as far as it got and returns false.
+    // (A 16 x 18 cm body sweeps 12 cm from its centre: it cannot spin in a 20 cm cell beside a wall.)
     bool rotate(double deg);
     // Drives straight by cm (+ forward, - backward) through the wheel model. If the body would meet an
     // obstacle on the way, the wheels stall and the robot stays where it started: returns false.
