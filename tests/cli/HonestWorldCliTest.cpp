@@ -64,6 +64,8 @@ struct BadWorldCase {
   std::string expected;
 };
 
+void PrintTo(const BadWorldCase& c, std::ostream* os) { *os << "nxtmap " << c.args; }
+
 class HonestWorldBad : public ::testing::TestWithParam<BadWorldCase> {};
 
 TEST_P(HonestWorldBad, IsOneLineAndExitTwo) {
