@@ -19,7 +19,7 @@ SonarNoise typical() {
     return s;
 }
 
-// The LEGO 9846 sensor as measured. Sources are those of ../shared/reference/nxt-sonar-and-odometry.md.
+// The LEGO 9846 sensor as measured. Sources: docs/nxt-sonar-and-odometry.md (each value names its own).
 SonarNoise nxt() {
     SonarNoise s;
     s.rangeScale = 0.9757;        // jasonatwood.io/archives/137: fit reading = 0.9757 * true + 1.88 cm

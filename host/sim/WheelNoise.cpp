@@ -9,7 +9,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// The measured NXT drive, nxt-sonar-and-odometry "The motors and odometry":
+// The measured NXT drive, docs/nxt-sonar-and-odometry.md "The motors and odometry":
 constexpr double kEncoderDeg = 1.0;   // 360 counts a turn (NXT user guide p.31, bricks.stackexchange 9884)
 constexpr double kBacklashDeg = 2.0;  // about +-2 degrees at each start, stop or reversal (xn--schler-dya.net)
 // UMBmark magnitudes of an uncalibrated robot with rubber tyres (judgement from Borenstein & Feng 1995,
