@@ -95,8 +95,7 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
                   "start cell COL,ROW of a raster world (col right, row down from the top-left); for a world "
                   "file X,Y[,YAW] in its metres (default: the file's own start)");
   sim->add_option("--heading", o.heading, "initial heading N, E, S or W on a raster world (default N)");
-  sim->add_option("--range-m", o.rangeM, "trusted maximum sensor range in metres (default: the robot's, 1 m published)")
-      ->each([&o](const std::string&) { o.rangeGiven = true; });
+  addRangeOption(*sim, o.run);
   addWorldRunOptions(*sim, o.run);
   sim->add_option("--seed", o.seed, "random seed of the noise (default 1)");
   sim->add_option("--strategy", o.strategy, "exploration strategy: propagation, frontier (default propagation)");
@@ -111,9 +110,7 @@ int runSim(const SimOptions& o) {
   if (printNoiseListIfAsked(o.run)) return kExitOk;
   requirePositional(o.world, "sim: world");
   mapping::RunConfig config;
-  sim::RobotDescription robot = parseRobot(o.run.robot);
-  if (o.rangeGiven) robot.rangeM = checkRangeM(o.rangeM);
-  checkRangeCoversCell(robot.cellCm, robot.rangeM);
+  const sim::RobotDescription robot = robotOf(o.run);
   config.robot = robot;
   config.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
   config.noise = parseNoise(o.run.noise);

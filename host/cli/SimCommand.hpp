@@ -17,9 +17,7 @@ struct SimOptions {
   std::string world;
   std::string start;
   std::string heading = "N";
-  double rangeM = 0.0;      // trusted maximum range, m (when rangeGiven)
-  bool rangeGiven = false;  // --range-m given; otherwise the robot's own range
-  WorldRunOptions run;         // --noise, --robot, --start-jitter
+  WorldRunOptions run;         // --noise, --robot, --start-jitter, --range-m
   std::string seed = "1";
   std::string strategy = "propagation";
   std::string show = "final";  // live | final | none

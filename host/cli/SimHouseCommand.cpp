@@ -49,8 +49,7 @@ CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& o) {
                 "start cell COL,ROW of a raster world (col right, row down); for a world file X,Y[,YAW] in its "
                 "metres; optional for a .json plan and a world file with a start");
   c->add_option("--heading", o.heading, "initial heading N, E, S or W (default N)");
-  c->add_option("--range-m", o.rangeM, "trusted maximum sensor range in metres (default: the robot's, 1 m published)")
-      ->each([&o](const std::string&) { o.rangeGiven = true; });
+  addRangeOption(*c, o.run);
   addWorldRunOptions(*c, o.run);
   c->add_option("--seed", o.seed, "random seed of the noise (default 1)");
   c->add_option("--strategy", o.strategy, "exploration strategy per room: propagation, frontier (default frontier: fewer turns, so the pose holds better across rooms)");
@@ -63,9 +62,7 @@ int runSimHouse(const SimHouseOptions& o) {
   requirePositional(o.world, "sim-house: world");
   house::HouseConfig config;
   parseHeading(o.heading);
-  sim::RobotDescription robot = parseRobot(o.run.robot);
-  if (o.rangeGiven) robot.rangeM = checkRangeM(o.rangeM);
-  checkRangeCoversCell(robot.cellCm, robot.rangeM);
+  const sim::RobotDescription robot = robotOf(o.run);
   config.robot = robot;
   config.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
   config.noise = parseNoise(o.run.noise);

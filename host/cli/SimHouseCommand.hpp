@@ -18,9 +18,7 @@ struct SimHouseOptions {
   std::string world;   // HouseExpo .json, Moving AI .map or ROS .yaml
   std::string start;   // COL,ROW; optional for a HouseExpo plan (a start is picked)
   std::string heading = "N";
-  double rangeM = 0.0;      // trusted maximum range, m (when rangeGiven)
-  bool rangeGiven = false;  // --range-m given; otherwise the robot's own range
-  WorldRunOptions run;  // --noise, --robot, --start-jitter
+  WorldRunOptions run;  // --noise, --robot, --start-jitter, --range-m
   std::string seed = "1";
   std::string strategy = "frontier";
   std::string save;    // directory to write the house to

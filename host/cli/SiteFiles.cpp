@@ -101,6 +101,18 @@ void addWorldRunOptions(CLI::App& command, WorldRunOptions& o, const std::string
                      "seed (0 = square on the centre, the default)");
 }
 
+void addRangeOption(CLI::App& command, WorldRunOptions& o) {
+  command.add_option("--range-m", o.rangeM, "trusted maximum sensor range in metres (default: the robot's, 1 m published)")
+      ->each([&o](const std::string&) { o.rangeGiven = true; });
+}
+
+sim::RobotDescription robotOf(const WorldRunOptions& o) {
+  sim::RobotDescription robot = parseRobot(o.robot);
+  if (o.rangeGiven) robot.rangeM = checkRangeM(o.rangeM);
+  checkRangeCoversCell(robot.cellCm, robot.rangeM);
+  return robot;
+}
+
 std::string robotForFirmware(const std::string& firmwarePath) {
   const std::string name = std::filesystem::path(firmwarePath).filename().string();
   return name.find("-sim") != std::string::npos ? "published" : "brick";

@@ -42,9 +42,15 @@ struct WorldRunOptions {
     std::string noise = "ideal";      // a preset name, or "list" to print the presets and exit
     std::string robot = "published";
     double startJitterDeg = 0.0;
+    double rangeM = 0.0;              // --range-m (addRangeOption), when rangeGiven
+    bool rangeGiven = false;          // otherwise the robot's own trusted range
 };
 // robotNote: what an unset --robot means (default: "default published").
 void addWorldRunOptions(CLI::App& command, WorldRunOptions& o, const std::string& robotNote = "default published");
+// --range-m (sim, sim-house): the trusted maximum range, overriding the robot's.
+void addRangeOption(CLI::App& command, WorldRunOptions& o);
+// The robot asked for (--robot), with its range overridden by --range-m; the range is checked against its cells.
+sim::RobotDescription robotOf(const WorldRunOptions& o);
 // --noise list: prints every preset's values with units; true when it did (the command then exits 0).
 bool printNoiseListIfAsked(const WorldRunOptions& o);
 // A positional argument left optional for CLI11 (so `--noise list` needs none) but required otherwise:

@@ -11,13 +11,9 @@ constexpr uint64_t kCrosstalkWindow = kMckHz / 1000 * 30;  // pings within 30 ms
 
 // The robot set down in the site as the configuration says.
 sim::SimRobot robotFor(const sim::Site& site, const BrickConfig& c) {
-    const sim::RobotDescription robot =
-        c.robot ? *c.robot
-                : sim::pointRobotFor(site.raster ? static_cast<int>(std::lround(site.raster->resolutionM() * 100.0)) : 20,
-                                     c.mountOffsetCm);
-    const sim::StartPose nominal =
-        c.startPose ? *c.startPose : site.rasterStart(c.startCol, c.startRow, sim::headingToDeg(c.heading));
-    const sim::RobotPlacement placed = sim::placeRobot(site, robot, nominal, c.startJitterDeg, c.seed);
+    const sim::RobotPlacement placed = sim::placeRobot(
+        site, sim::PlacementRequest{c.robot, c.startPose, c.startCol, c.startRow, c.heading, c.startJitterDeg, c.seed,
+                                    c.mountOffsetCm});
     return sim::SimRobot(placed.scene, placed.robot, placed.grid.frame, placed.start.cm, placed.start.headingDeg,
                          c.noise, c.seed, 255.0);
 }

@@ -25,12 +25,8 @@ ExplorerConfig explorerConfigFor(const sim::World& world, const HouseConfig& c, 
 }
 
 sim::RobotPlacement placementFor(const sim::Site& site, const HouseConfig& c) {
-  const sim::RobotDescription robot =
-      c.robot ? *c.robot
-              : sim::pointRobotFor(site.raster ? static_cast<int>(std::lround(site.raster->resolutionM() * 100.0)) : 10);
-  const sim::StartPose nominal =
-      c.startPose ? *c.startPose : site.rasterStart(c.startCol, c.startRow, sim::headingToDeg(c.heading));
-  return sim::placeRobot(site, robot, nominal, c.startJitterDeg, c.seed);
+  return sim::placeRobot(site, sim::PlacementRequest{c.robot, c.startPose, c.startCol, c.startRow, c.heading,
+                                                     c.startJitterDeg, c.seed, 0.0});
 }
 
 // The configuration with the start cell on the robot's grid and the ranges the robot trusts.

@@ -15,11 +15,6 @@ struct MappingRun::Setup {
 
 namespace {
 
-// A point robot of the raster's own cells, sensors at the centre: the published set-up.
-sim::RobotDescription pointRobot(const sim::Site& site) {
-  return sim::pointRobotFor(site.raster ? static_cast<int>(std::lround(site.raster->resolutionM() * 100.0)) : 10);
-}
-
 ExplorerConfig explorerConfigFor(const sim::World& truth, const RunConfig& c, int mountCm) {
   ExplorerConfig e;
   e.geometry = sonarGeometryFor(truth, c.minRangeM, c.rangeM,
@@ -34,14 +29,13 @@ ExplorerConfig explorerConfigFor(const sim::World& truth, const RunConfig& c, in
 MappingRun::MappingRun(const sim::Site& site, const RunConfig& config)
     : MappingRun(
           [&] {
-            const sim::RobotDescription robot = config.robot ? *config.robot : pointRobot(site);
-            const sim::StartPose nominal =
-                config.startPose ? *config.startPose
-                                 : site.rasterStart(config.startCol, config.startRow, sim::headingToDeg(config.heading));
-            Setup s{sim::placeRobot(site, robot, nominal, config.startJitterDeg, config.seed), config};
+            Setup s{sim::placeRobot(site, sim::PlacementRequest{config.robot, config.startPose, config.startCol,
+                                                                config.startRow, config.heading,
+                                                                config.startJitterDeg, config.seed, 0.0}),
+                    config};
             if (config.robot) {
-              s.config.minRangeM = robot.minRangeM;
-              s.config.rangeM = robot.rangeM;
+              s.config.minRangeM = config.robot->minRangeM;
+              s.config.rangeM = config.robot->rangeM;
             }
             s.config.startCol = s.placed.grid.startCol;
             s.config.startRow = s.placed.grid.startRow;

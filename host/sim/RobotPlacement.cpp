@@ -38,4 +38,11 @@ RobotPlacement placeRobot(const Site& site, const RobotDescription& robot, const
     return RobotPlacement{site.scene, robot, start, grid, std::move(truth), heading};
 }
 
+RobotPlacement placeRobot(const Site& site, const PlacementRequest& r) {
+    const int rasterCm = site.raster ? static_cast<int>(std::lround(site.raster->resolutionM() * 100.0)) : 10;
+    const RobotDescription robot = r.robot ? *r.robot : pointRobotFor(rasterCm, r.mountOffsetCm);
+    const StartPose nominal = r.pose ? *r.pose : site.rasterStart(r.startCol, r.startRow, headingToDeg(r.heading));
+    return placeRobot(site, robot, nominal, r.startJitterDeg, r.seed);
+}
+
 }  // namespace nxtmap::sim

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 namespace nxtmap::sim {
 
@@ -28,5 +29,19 @@ struct RobotPlacement {
 // grid is laid over the scene from the true start (placeOnGrid) and the truth rasterised on it.
 RobotPlacement placeRobot(const Site& site, const RobotDescription& robot, const StartPose& nominal,
                           double startJitterDeg, uint64_t seed);
+
+// What a run's configuration asks for. No robot: a point robot of the raster's own cells (the published
+// set-up; 10 cm without a raster) with its sensors mountOffsetCm out. No pose: the centre of raster cell
+// (startCol, startRow) facing heading.
+struct PlacementRequest {
+    std::optional<RobotDescription> robot;
+    std::optional<StartPose> pose;
+    int startCol = 0, startRow = 0;
+    Heading heading = Heading::N;
+    double startJitterDeg = 0.0;
+    uint64_t seed = 1;
+    double mountOffsetCm = 0.0;
+};
+RobotPlacement placeRobot(const Site& site, const PlacementRequest& request);
 
 }  // namespace nxtmap::sim
