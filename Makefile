@@ -12,7 +12,7 @@ ARM_DIR   := $(BUILD)/arm-common
 FW_DIR    := $(BUILD)/firmware
 CMAKE_GEN := -G Ninja
 
-.PHONY: all deps host host-san arm-common firmware size test demo bench clean help fuzz
+.PHONY: all deps host host-san arm-common firmware size test demo bench clean help fuzz format
 
 all: host
 
@@ -24,9 +24,10 @@ help:
 	@echo "make size   - the brick image's flash/RAM budgets, enforced"
 	@echo "make deps   - install the missing Debian packages of every target (make test etc. install their own)"
 	@echo "make fuzz   - fuzz the radio protocol decoder with libFuzzer (FUZZ_SECONDS=600)"
+	@echo "make format - clang-format every C++ file in git (the style is .clang-format)"
 
 # The packages for the goals asked for (make test: build + test; make deps alone: every target's).
-DEPS_GOALS := $(filter test demo bench fuzz,$(MAKECMDGOALS))
+DEPS_GOALS := $(filter test demo bench fuzz format,$(MAKECMDGOALS))
 deps:
 	@bash scripts/deps.sh $(if $(DEPS_GOALS),$(DEPS_GOALS),build test demo bench fuzz)
 
@@ -67,6 +68,9 @@ test: host-san arm-common size host
 
 demo: host firmware
 	BUILD=$(BUILD) bash scripts/demo.sh
+
+format: deps
+	git ls-files '*.cpp' '*.hpp' '*.h' ':!toolchain/' | xargs clang-format -i
 
 bench: host firmware
 	NXTMAP_PEER_DIR=$(BUILD)/peer $(HOST_DIR)/host/bench/nxtmap-bench

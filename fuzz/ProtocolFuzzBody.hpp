@@ -64,7 +64,8 @@ inline const char* roundTrips(protocol::Op op, const uint8_t* p, size_t n) {
     }
     case Op::PathProgress: {
       PathProgressMsg m;
-      if (decodePathProgress(p, n, m) && !same(encodePathProgress(m, again))) return "PathProgress re-encodes differently";
+      if (decodePathProgress(p, n, m) && !same(encodePathProgress(m, again)))
+        return "PathProgress re-encodes differently";
       break;
     }
     case Op::NewRoom: {
@@ -92,8 +93,7 @@ inline const char* roundTrips(protocol::Op op, const uint8_t* p, size_t n) {
       }
       break;
     }
-    default:
-      break;
+    default: break;
   }
   return nullptr;
 }
@@ -149,7 +149,8 @@ inline const char* runStream(const uint8_t* data, size_t size) {
       now += 37;
       Command c;
       while (link.nextCommand(c)) {
-        if (c.kind == CommandKind::FollowPath && (c.path.count == 0 || c.path.count > kMaxPathCells)) return "bad path handed over";
+        if (c.kind == CommandKind::FollowPath && (c.path.count == 0 || c.path.count > kMaxPathCells))
+          return "bad path handed over";
         if (c.kind == CommandKind::MapChunk) {
           for (uint16_t k = 0; k < c.chunk.count; ++k) (void)grid.set(c.chunk.cellOf(k), c.chunk.state(k));
         }

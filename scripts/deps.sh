@@ -18,6 +18,8 @@ DEMO_PKGS=()
 BENCH_PKGS=(nodejs npm gnuplot-nox)
 # make fuzz: clang's libFuzzer.
 FUZZ_PKGS=(clang libclang-rt-14-dev)
+# make format: the formatter the tree's style (.clang-format) is written for.
+FORMAT_PKGS=(clang-format)
 
 want=("${BUILD_PKGS[@]}")
 for target in "${@:-build}"; do
@@ -27,7 +29,8 @@ for target in "${@:-build}"; do
     demo)  want+=(${DEMO_PKGS[@]+"${DEMO_PKGS[@]}"}) ;;
     bench) want+=("${BENCH_PKGS[@]}") ;;
     fuzz)  want+=("${FUZZ_PKGS[@]}") ;;
-    *) echo "deps: unknown target '$target' (build, test, demo, bench, fuzz)" >&2; exit 2 ;;
+    format) want+=("${FORMAT_PKGS[@]}") ;;
+    *) echo "deps: unknown target '$target' (build, test, demo, bench, fuzz, format)" >&2; exit 2 ;;
   esac
 done
 

@@ -13,8 +13,7 @@ CheckHandler setCheckHandler(CheckHandler handler) {
 
 void checkFailed(const char* file, int line, const char* what) {
   if (g_handler != nullptr) g_handler(file, line, what);
-  for (;;) {
-  }
+  for (;;) {}
 }
 
 }  // namespace nxtmap

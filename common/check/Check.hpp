@@ -13,5 +13,4 @@ CheckHandler setCheckHandler(CheckHandler handler);
 
 }  // namespace nxtmap
 
-#define NXTMAP_CHECK(cond) \
-  ((cond) ? static_cast<void>(0) : ::nxtmap::checkFailed(__FILE__, __LINE__, #cond))
+#define NXTMAP_CHECK(cond) ((cond) ? static_cast<void>(0) : ::nxtmap::checkFailed(__FILE__, __LINE__, #cond))

@@ -9,12 +9,12 @@ namespace nxtmap {
 // answers with an Event.
 struct Action {
   enum class Kind : uint8_t {
-    Read,  // take one filtered reading of `sensor`; answer Event::range
-    Move,  // move `amount` cells: +1 forward, -1 backward; answer Event::moved or Event::blocked
-    Turn,  // turn `amount` eighths of a turn, + = clockwise (2 = 90 deg right); answer Event::turned
-    Done,  // mapping is finished
-    Think, // the explorer needs more CPU before it can decide: answer Event::thought() when
-           // convenient (each step's CPU cost stays bounded; nothing moves meanwhile)
+    Read,   // take one filtered reading of `sensor`; answer Event::range
+    Move,   // move `amount` cells: +1 forward, -1 backward; answer Event::moved or Event::blocked
+    Turn,   // turn `amount` eighths of a turn, + = clockwise (2 = 90 deg right); answer Event::turned
+    Done,   // mapping is finished
+    Think,  // the explorer needs more CPU before it can decide: answer Event::thought() when
+            // convenient (each step's CPU cost stays bounded; nothing moves meanwhile)
   };
   Kind kind = Kind::Done;
   Sensor sensor = Sensor::Front;

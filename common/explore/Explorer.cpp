@@ -52,8 +52,7 @@ void Explorer::apply(const Event& e) {
       pose_.heading = rotate(pose_.heading, e.amount / 2);
       counters_.turnEighths += static_cast<uint32_t>(e.amount < 0 ? -e.amount : e.amount);
       break;
-    case Event::Kind::Thought:
-      break;
+    case Event::Kind::Thought: break;
   }
 }
 
@@ -139,9 +138,7 @@ void Explorer::go(Dir d) {
   route_.push(d);
 }
 
-bool Explorer::travelTo(Cell target, uint16_t cost) {
-  return planner_.routeTo(map_.grid(), target, cost, route_);
-}
+bool Explorer::travelTo(Cell target, uint16_t cost) { return planner_.routeTo(map_.grid(), target, cost, route_); }
 
 Action Explorer::follow() {
   const Dir d = route_.front();

@@ -61,7 +61,7 @@ class Explorer {
   Action startSearch(uint8_t purpose);
   virtual bool searchVisit(uint8_t purpose, Cell c, uint16_t cost);
   virtual Action searchDone(uint8_t purpose);
-  void go(Dir d);  // one-cell route
+  void go(Dir d);                             // one-cell route
   bool travelTo(Cell target, uint16_t cost);  // route from the last planner search
   Action follow();
   bool routeEmpty() const { return route_.empty(); }

@@ -5,7 +5,7 @@ namespace {
 // Four transitions without a diagonal step: the robot went round the room along its walls and
 // is about to repeat that lap, which the stop heuristic counts as a reused path.
 constexpr uint8_t kMaxIdleTransitions = 4;
-}
+}  // namespace
 
 Action PropagationExplorer::decide() {
   switch (phase_) {

@@ -49,23 +49,23 @@ class PropagationExplorer final : public Explorer {
   Action searchDone(uint8_t purpose) override;
   enum Search : uint8_t { kReturnLine = 0, kSweepTarget = 1 };
   // The search in progress.
-  Cell onRow_{}, onColumn_{};    // return line: the two cells on the start lines
-  Cell target_{};                // best cell found
+  Cell onRow_{}, onColumn_{};  // return line: the two cells on the start lines
+  Cell target_{};              // best cell found
   uint16_t targetCost_ = 0xFFFF;
   uint8_t found_ = 0;
   int16_t gain_ = 0;
-  Propagation next_{};           // return line: the propagation after the return
+  Propagation next_{};  // return line: the propagation after the return
   Action begin(Propagation p);
   bool passable(Cell c) const { return map_.at(c) == CellState::Free; }
 
   Phase phase_ = Phase::Startup;
   Propagation prop_ = Propagation::ForwardRight;
-  Cell origin_{};        // where the current propagation started (its start lines)
-  Cell stepFrom_{};      // the diagonal step's first cell
+  Cell origin_{};                                // where the current propagation started (its start lines)
+  Cell stepFrom_{};                              // the diagonal step's first cell
   Dir first_ = Dir::North, second_ = Dir::East;  // the step's two moves / deviation and blocked side
-  int16_t wallCount_ = 0;  // consecutive blocked cells beside the current deviation
-  uint8_t idleTransitions_ = 0;  // transitions since the last diagonal step
-  bool bigArea_ = false;   // sweep target is a large unknown area: map it with a propagation
+  int16_t wallCount_ = 0;                        // consecutive blocked cells beside the current deviation
+  uint8_t idleTransitions_ = 0;                  // transitions since the last diagonal step
+  bool bigArea_ = false;                         // sweep target is a large unknown area: map it with a propagation
   uint16_t sweeps_ = 0;
   Record log_[kLogCapacity] = {};
   uint16_t records_ = 0;

@@ -63,8 +63,7 @@ class TravelPlanner {
 template <class Visit>
 bool TravelPlanner::search(const RoomGrid& grid, Pose from, Visit&& visit) {
   start(from);
-  while (proceed(grid, visit, 0xFFFF) == Status::Running) {
-  }
+  while (proceed(grid, visit, 0xFFFF) == Status::Running) {}
   return !overflow_;
 }
 

@@ -19,9 +19,7 @@ constexpr int16_t dx(Dir d) { return d == Dir::East ? 1 : (d == Dir::West ? -1 :
 constexpr int16_t dy(Dir d) { return d == Dir::North ? 1 : (d == Dir::South ? -1 : 0); }
 constexpr Dir opposite(Dir d) { return static_cast<Dir>((static_cast<uint8_t>(d) + 2) & 3); }
 // Rotates clockwise by `quarters` quarter turns (negative = anticlockwise).
-constexpr Dir rotate(Dir d, int quarters) {
-  return static_cast<Dir>((static_cast<int>(d) + (quarters % 4) + 4) & 3);
-}
+constexpr Dir rotate(Dir d, int quarters) { return static_cast<Dir>((static_cast<int>(d) + (quarters % 4) + 4) & 3); }
 constexpr bool isVertical(Dir d) { return d == Dir::North || d == Dir::South; }
 constexpr Cell advance(Cell c, Dir d, int16_t n = 1) {
   return Cell{static_cast<int16_t>(c.x + dx(d) * n), static_cast<int16_t>(c.y + dy(d) * n)};
@@ -43,9 +41,7 @@ struct Bounds {
   constexpr bool empty() const { return maxX < minX || maxY < minY; }
   constexpr int16_t width() const { return empty() ? 0 : static_cast<int16_t>(maxX - minX + 1); }
   constexpr int16_t height() const { return empty() ? 0 : static_cast<int16_t>(maxY - minY + 1); }
-  constexpr bool contains(Cell c) const {
-    return c.x >= minX && c.x <= maxX && c.y >= minY && c.y <= maxY;
-  }
+  constexpr bool contains(Cell c) const { return c.x >= minX && c.x <= maxX && c.y >= minY && c.y <= maxY; }
 };
 
 }  // namespace nxtmap

@@ -4,7 +4,7 @@ namespace nxtmap {
 namespace {
 constexpr int kSureFree = -7;
 constexpr int kSureOccupied = 7;
-constexpr int kHitWeight = 1;   // an echo counts as much as a miss
+constexpr int kHitWeight = 1;  // an echo counts as much as a miss
 constexpr int kMissWeight = 1;
 }  // namespace
 

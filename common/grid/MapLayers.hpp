@@ -20,10 +20,10 @@ namespace nxtmap {
 class MapLayers {
  public:
   struct Storage {
-    uint8_t* grid;      // packedBytes(w, h, 2)
-    uint8_t* evidence;  // packedBytes(w, h, 4)
-    uint8_t* reads;     // packedBytes(w, h, 4)
-    uint8_t* diagonals; // packedBytes(w, h, 2)
+    uint8_t* grid;       // packedBytes(w, h, 2)
+    uint8_t* evidence;   // packedBytes(w, h, 4)
+    uint8_t* reads;      // packedBytes(w, h, 4)
+    uint8_t* diagonals;  // packedBytes(w, h, 2)
   };
   MapLayers(const Storage& storage, int16_t width, int16_t height);
 
@@ -42,9 +42,7 @@ class MapLayers {
   int8_t evidence(Cell c) const { return static_cast<int8_t>(evidence_.at(c)) - 8; }
 
   bool wasRead(Cell c, Dir d) const { return (reads_.at(c) >> static_cast<int>(d)) & 1u; }
-  void setRead(Cell c, Dir d) {
-    reads_.set(c, static_cast<uint8_t>(reads_.at(c) | (1u << static_cast<int>(d))));
-  }
+  void setRead(Cell c, Dir d) { reads_.set(c, static_cast<uint8_t>(reads_.at(c) | (1u << static_cast<int>(d)))); }
 
   // Diagonal moves between c and c + (sx, sy), sx, sy = +-1, in either direction.
   bool diagonalUsed(Cell c, int sx, int sy) const;

@@ -22,8 +22,7 @@ class PackedCells {
 
  public:
   // `storage` must hold packedBytes(width, height, BITS) bytes and outlive this object.
-  PackedCells(uint8_t* storage, int16_t width, int16_t height)
-      : data_(storage), width_(width), height_(height) {}
+  PackedCells(uint8_t* storage, int16_t width, int16_t height) : data_(storage), width_(width), height_(height) {}
 
   int16_t width() const { return width_; }
   int16_t height() const { return height_; }

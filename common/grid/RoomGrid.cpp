@@ -58,8 +58,7 @@ Cell RoomGrid::restructure() {
   if (window_.empty()) return Cell{0, 0};
   const Cell shift{window_.minX, window_.minY};
   cells_.translate(shift.x, shift.y);
-  window_ = Bounds{0, 0, static_cast<int16_t>(window_.maxX - shift.x),
-                   static_cast<int16_t>(window_.maxY - shift.y)};
+  window_ = Bounds{0, 0, static_cast<int16_t>(window_.maxX - shift.x), static_cast<int16_t>(window_.maxY - shift.y)};
   return shift;
 }
 

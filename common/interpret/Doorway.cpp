@@ -4,9 +4,7 @@ namespace nxtmap {
 namespace {
 
 // The cell at position `along` on line `line` of the given orientation.
-constexpr Cell at(bool alongX, int16_t along, int16_t line) {
-  return alongX ? Cell{along, line} : Cell{line, along};
-}
+constexpr Cell at(bool alongX, int16_t along, int16_t line) { return alongX ? Cell{along, line} : Cell{line, along}; }
 
 // `away`: +1 or -1, the direction along the line that leads away from the gap.
 bool isJamb(const RoomGrid& g, bool alongX, int16_t along, int16_t line, int16_t away, int16_t minJamb) {
@@ -21,8 +19,8 @@ bool isJamb(const RoomGrid& g, bool alongX, int16_t along, int16_t line, int16_t
 }
 
 // Adds a one-line gap, merging it with a gap of the same extent on the line below.
-void addLine(bool alongX, int16_t from, int16_t width, int16_t line, Doorway* found, uint8_t& n,
-             uint8_t capacity, bool& more) {
+void addLine(bool alongX, int16_t from, int16_t width, int16_t line, Doorway* found, uint8_t& n, uint8_t capacity,
+             bool& more) {
   for (uint8_t i = 0; i < n; ++i) {
     Doorway& d = found[i];
     const int16_t dFrom = alongX ? d.first.x : d.first.y;

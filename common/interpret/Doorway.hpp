@@ -11,9 +11,9 @@ namespace nxtmap {
 // otherwise it runs along y. Thick walls give several parallel lines with the same gap: `depth`.
 struct Doorway {
   bool alongX = true;
-  Cell first{};        // lowest cell of the gap on its lowest line
-  int16_t width = 0;   // cells along the wall, >= 1
-  int16_t depth = 1;   // cells across the wall (wall thickness), >= 1
+  Cell first{};       // lowest cell of the gap on its lowest line
+  int16_t width = 0;  // cells along the wall, >= 1
+  int16_t depth = 1;  // cells across the wall (wall thickness), >= 1
 
   // The cell `along` cells along the gap and `across` cells across it from `first`
   // (across may be negative or >= depth for the cells on either side of the doorway).

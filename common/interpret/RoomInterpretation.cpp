@@ -13,8 +13,8 @@ int16_t lineScore(const RoomGrid& g, Side side, int16_t line, const Bounds& w) {
   for (int16_t i = from; i <= to; ++i) {
     const Cell c = horizontal ? Cell{i, line} : Cell{line, i};
     if (g.at(c) != CellState::Occupied) continue;
-    const Cell beyond = horizontal ? Cell{i, static_cast<int16_t>(line + out)}
-                                   : Cell{static_cast<int16_t>(line + out), i};
+    const Cell beyond =
+        horizontal ? Cell{i, static_cast<int16_t>(line + out)} : Cell{static_cast<int16_t>(line + out), i};
     score = static_cast<int16_t>(score + (g.at(beyond) == CellState::Unknown ? 2 : 1));
   }
   return score;

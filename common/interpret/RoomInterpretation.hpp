@@ -13,15 +13,15 @@ enum class Side : uint8_t { North = 0, East = 1, South = 2, West = 3 };
 // An opening in a wall: a run of free cells on the wall line.
 struct Exit {
   Side side = Side::North;
-  Cell first{};        // first cell of the run (lowest x on N/S walls, lowest y on E/W walls)
-  int16_t width = 0;   // cells
+  Cell first{};       // first cell of the run (lowest x on N/S walls, lowest y on E/W walls)
+  int16_t width = 0;  // cells
   Cell middle() const;
 };
 
 // Room size limits in cells (interior, walls excluded).
 struct RoomLimits {
-  int16_t minSide = 3;     // below: not a room
-  int16_t maxSide = 120;   // above: several rooms
+  int16_t minSide = 3;    // below: not a room
+  int16_t maxSide = 120;  // above: several rooms
 };
 
 enum class RoomClass : uint8_t { Room, TooSmall, TooLarge, Unknown };
@@ -34,12 +34,12 @@ enum class RoomClass : uint8_t { Room, TooSmall, TooLarge, Unknown };
 // A room larger than the maximum is cut into partsX x partsY rooms of at most maxSide.
 struct RoomInterpretation {
   static constexpr uint8_t kMaxExits = 16;
-  bool valid = false;        // false when the map holds no walls at all
-  int16_t wallLine[4] = {};  // y of the N and S walls, x of the E and W walls
-  int16_t wallCells[4] = {}; // occupied cells found on each wall line
+  bool valid = false;         // false when the map holds no walls at all
+  int16_t wallLine[4] = {};   // y of the N and S walls, x of the E and W walls
+  int16_t wallCells[4] = {};  // occupied cells found on each wall line
   Exit exits[kMaxExits];
   uint8_t exitCount = 0;
-  bool moreExits = false;    // more than kMaxExits openings
+  bool moreExits = false;  // more than kMaxExits openings
   RoomClass roomClass = RoomClass::Unknown;
   uint8_t partsX = 0, partsY = 0;  // rooms the area makes along x and y (1 x 1 for a Room)
   int32_t freeCells = 0;           // free cells inside the walls (the floor area seen)

@@ -217,19 +217,16 @@ DriveAction Pilot::begin(const Action& a) {
       phase_ = Phase::Turn;
       // Whole quarter turns, rounded so that their sum never drifts from a multiple of pi/2.
       turnedUrad_ += static_cast<int64_t>(a.amount / 2) * 1570796;
-      commandMrad_ = static_cast<int32_t>((turnedUrad_ - commandedUrad_ + (turnedUrad_ >= commandedUrad_ ? 500 : -500)) / 1000);
+      commandMrad_ =
+          static_cast<int32_t>((turnedUrad_ - commandedUrad_ + (turnedUrad_ >= commandedUrad_ ? 500 : -500)) / 1000);
       commandedUrad_ += static_cast<int64_t>(commandMrad_) * 1000;
       // Take out the estimated heading error as well (not part of the quarter-turn bookkeeping).
       if (config_.correct) commandMrad_ -= tracker_.thetaMrad();
       return DriveAction::rotate(commandMrad_);
     }
-    case Action::Kind::Move:
-      return beginMove();
-    case Action::Kind::Think:
-      phase_ = Phase::Think;
-      return DriveAction::think();
-    case Action::Kind::Done:
-      break;
+    case Action::Kind::Move: return beginMove();
+    case Action::Kind::Think: phase_ = Phase::Think; return DriveAction::think();
+    case Action::Kind::Done: break;
   }
   phase_ = Phase::Done;
   return DriveAction::done();
@@ -252,7 +249,8 @@ DriveAction Pilot::beginMove() {
   const int32_t tr = -tracker_.along(rotate(heading, 1));
   if (tf * pending_.amount <= 0) return driveToCentre();  // the target is behind: nothing to aim at
   const bool offLine = abs32(tr) > config_.steerAboveMm;
-  const int32_t want = offLine ? clamp32(static_cast<int32_t>(static_cast<int64_t>(tr) * 1000 / tf), config_.maxSteerMrad) : 0;
+  const int32_t want =
+      offLine ? clamp32(static_cast<int32_t>(static_cast<int64_t>(tr) * 1000 / tf), config_.maxSteerMrad) : 0;
   const int32_t turn = want - tracker_.thetaMrad();
   if (abs32(turn) >= config_.minRotateMrad) {
     phase_ = Phase::Steer;
@@ -296,7 +294,8 @@ DriveAction Pilot::step(const DriveEvent& e) {
         poseSamples_ += e.reading.samples;
         return beginMove();
       }
-      if (phase_ == Phase::ExplorerRead) return begin(explorer_.step(Event::range(e.sensor, centred(e.sensor, e.reading))));
+      if (phase_ == Phase::ExplorerRead)
+        return begin(explorer_.step(Event::range(e.sensor, centred(e.sensor, e.reading))));
       break;
     case DriveEvent::Kind::Rotated:
       if (phase_ == Phase::Level) {

@@ -11,14 +11,14 @@ namespace nxtmap {
 
 struct PilotConfig {
   PoseNoise noise{};
-  bool correct = true;          // false: plain conversion, no steering and no pose readings
-  int32_t readAboveMm = 8;      // read a known wall when the offset along its axis is this uncertain (1 sigma)
-  int32_t maxSteerMrad = 150;   // steering towards the next cell's centre is limited to this
-  int32_t minRotateMrad = 4;    // smaller corrections are not worth a rotation
+  bool correct = true;         // false: plain conversion, no steering and no pose readings
+  int32_t readAboveMm = 8;     // read a known wall when the offset along its axis is this uncertain (1 sigma)
+  int32_t maxSteerMrad = 150;  // steering towards the next cell's centre is limited to this
+  int32_t minRotateMrad = 4;   // smaller corrections are not worth a rotation
   // Steer towards the next cell's centre line only when this far off it (mm): every small rotation
   // costs heading (a turn's error has a floor), while a run on a slightly offset line costs nothing.
   int32_t steerAboveMm = 12;
-  int8_t minWallEvidence = 1;   // a wall cell is "known" for pose readings from this evidence up
+  int8_t minWallEvidence = 1;  // a wall cell is "known" for pose readings from this evidence up
   // Heading from a straight wall beside the run: two readings of it at least this far apart along
   // the run (mm) measure the heading error; walls are taken as axis-parallel (rectilinear rooms).
   int32_t sideBaseMm = 500;
@@ -103,10 +103,10 @@ class Pilot {
   int32_t cellMm_;
   int16_t poseCells_;  // cells out to which known walls are pose landmarks (>= the mapping range's)
   Phase phase_ = Phase::Idle;
-  Action pending_;            // the explorer's action being carried out
-  int32_t commandMrad_ = 0;   // rotation in progress
-  int32_t driveMm_ = 0;       // drive in progress
-  uint8_t readHere_ = 0;      // bit per Dir: read since the robot last moved
+  Action pending_;                 // the explorer's action being carried out
+  int32_t commandMrad_ = 0;        // rotation in progress
+  int32_t driveMm_ = 0;            // drive in progress
+  uint8_t readHere_ = 0;           // bit per Dir: read since the robot last moved
   const Cell* virtual_ = nullptr;  // see setVirtualWalls
   uint16_t virtualCount_ = 0;
   // The current straight run (since the last quarter turn): mm driven along it and the dead-reckoned
@@ -116,7 +116,7 @@ class Pilot {
     bool tried = false;  // the side was read in this run
     int32_t rangeMm = 0, runMm = 0, rightMm = 0;
     int32_t triedMm = 0;  // run position of the last reading of the side
-    int16_t line = 0;  // the wall's row or column of cells (along the side's axis)
+    int16_t line = 0;     // the wall's row or column of cells (along the side's axis)
   };
   int32_t runMm_ = 0, rightMm_ = 0;
   SideMark side_[4];  // by Dir

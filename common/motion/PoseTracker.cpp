@@ -2,8 +2,8 @@
 
 namespace nxtmap {
 namespace {
-constexpr int64_t kQuarterMrad = 1571;      // pi/2 in mrad, rounded (variance scaling only)
-constexpr int64_t kQuarterUrad = 1570796;   // pi/2 in microradians
+constexpr int64_t kQuarterMrad = 1571;     // pi/2 in mrad, rounded (variance scaling only)
+constexpr int64_t kQuarterUrad = 1570796;  // pi/2 in microradians
 constexpr int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 // Rounded division (ties away from zero); d > 0.
 constexpr int64_t divRound(int64_t n, int64_t d) { return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d); }
@@ -52,8 +52,8 @@ void PoseTracker::drove(int32_t mm, Dir heading) {
   }
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j)
-      n[i][j] = p_[i][j] + divRound(a[i] * p_[2][j] + a[j] * p_[i][2], 1000) +
-                divRound(a[i] * a[j] * p_[2][2], 1000000);
+      n[i][j] =
+          p_[i][j] + divRound(a[i] * p_[2][j] + a[j] * p_[i][2], 1000) + divRound(a[i] * a[j] * p_[2][2], 1000000);
   // Process noise: slip along the track, heading picked up per cell (100 mm nominal).
   const int64_t slip = divRound(abs64(mm) * noise_.slipPerMille, 1000);
   const int64_t slipVar = slip * slip;
@@ -80,8 +80,8 @@ bool PoseTracker::measure(Dir d, int32_t offsetMm, int32_t extraVarianceMm2, boo
   // Gate: within 3 sigma of the prediction and within the absolute gate; beyond that gate, a straight
   // wall face within 2 sigma and the wide gate.
   const int64_t size = abs64(innovation);
-  const bool inGate = size <= noise_.gateMm ||
-                      (straightFace && size <= noise_.wideGateMm && innovation * innovation <= 4 * spread);
+  const bool inGate =
+      size <= noise_.gateMm || (straightFace && size <= noise_.wideGateMm && innovation * innovation <= 4 * spread);
   if (innovation * innovation > 9 * spread || !inGate) {
     // A straight face between the gates: taken when it confirms the last such refusal on this axis.
     const bool wide = noise_.confirmWide && straightFace && size > noise_.gateMm && size <= noise_.wideGateMm;

@@ -58,14 +58,9 @@ void BrickLink::handlePacket(const Telegram& t) {
     case Op::FollowPath:
     case Op::RequestMap:
     case Op::MapChunk:
-    case Op::SetPose:
-      handleCommand(v.header, v.payload, v.payloadSize);
-      break;
-    case Op::BatteryRequest:
-      batteryDue_ = true;
-      break;
-    default:
-      break;  // Ack (already applied) and anything the brick does not take
+    case Op::SetPose: handleCommand(v.header, v.payload, v.payloadSize); break;
+    case Op::BatteryRequest: batteryDue_ = true; break;
+    default: break;  // Ack (already applied) and anything the brick does not take
   }
 }
 
@@ -106,12 +101,8 @@ void BrickLink::handleCommand(const PacketHeader& h, const uint8_t* p, size_t n)
   c.seq = h.seq;
   bool valid = n == 0;
   switch (h.op) {
-    case Op::Explore:
-      c.kind = CommandKind::Explore;
-      break;
-    case Op::Stop:
-      c.kind = CommandKind::Stop;
-      break;
+    case Op::Explore: c.kind = CommandKind::Explore; break;
+    case Op::Stop: c.kind = CommandKind::Stop; break;
     case Op::RequestMap:
       if (valid) {
         sync_.restart();
@@ -135,8 +126,7 @@ void BrickLink::handleCommand(const PacketHeader& h, const uint8_t* p, size_t n)
       new (&c.pose) Pose(m.pose);
       break;
     }
-    default:
-      return;
+    default: return;
   }
   if (!valid) {
     // A well-formed packet with a malformed command: never run it, but acknowledge it so the

@@ -26,10 +26,11 @@ struct BrickReport {
 };
 
 struct BrickLinkConfig {
-  uint32_t retransmitMs = 250;   // longest wait for a map delta's ack before it is sent again (adapts down to the round trip)
-  uint32_t statusPeriodMs = 500; // Status every this often while a PC is connected
-  uint32_t sleepLimitMs = 0;     // KEEP_ALIVE answer (0 = the brick never sleeps)
-  uint32_t deltaPeriodMs = 20;   // look for changed cells this often (a scan of the grid; batches changes)
+  uint32_t retransmitMs =
+      250;  // longest wait for a map delta's ack before it is sent again (adapts down to the round trip)
+  uint32_t statusPeriodMs = 500;  // Status every this often while a PC is connected
+  uint32_t sleepLimitMs = 0;      // KEEP_ALIVE answer (0 = the brick never sleeps)
+  uint32_t deltaPeriodMs = 20;    // look for changed cells this often (a scan of the grid; batches changes)
 };
 
 // The brick's end of the radio link: the one object the firmware (and the emulator's stand-ins)
@@ -100,8 +101,8 @@ class BrickLink {
   bool legoReplyReady_ = false;  // legoReply_ holds a mailbox reply to send
   Frame legoReply_;
   uint16_t txSeq_ = 0;
-  uint32_t nowMs_ = 0;  // the clock at the last transmit() (receive() has none)
-  bool scanNow_ = true;       // the last scan filled a delta: look again at once
+  uint32_t nowMs_ = 0;   // the clock at the last transmit() (receive() has none)
+  bool scanNow_ = true;  // the last scan filled a delta: look again at once
   uint32_t lastScanMs_ = 0;
   bool statusSent_ = false;
   bool countersDue_ = false, countersPhase_ = false;

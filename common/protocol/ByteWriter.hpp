@@ -30,7 +30,10 @@ class ByteWriter {
   }
   // Overwrites a 16-bit field written earlier at `at`.
   void patchU16(size_t at, uint16_t v) {
-    if (at + 2 > size_) { ok_ = false; return; }
+    if (at + 2 > size_) {
+      ok_ = false;
+      return;
+    }
     out_[at] = static_cast<uint8_t>(v);
     out_[at + 1] = static_cast<uint8_t>(v >> 8);
   }

@@ -42,8 +42,7 @@ bool answerDirectCommand(const Telegram& c, Mailboxes& boxes, uint16_t batteryMi
       w.bytes(m.bytes, kLegoMaxMessage);
       break;
     }
-    default:
-      return false;
+    default: return false;
   }
   if (c.type() == kTypeDirectNoReply || !w.ok()) return false;
   return frameFrom(t, w.size(), reply);

@@ -14,8 +14,8 @@ namespace nxtmap::protocol {
 // direct command. `batteryMillivolts` answers GET_BATTERY_LEVEL; KEEP_ALIVE answers
 // `sleepLimitMs`. MESSAGE_WRITE/READ use `boxes` (READ's remote inbox 10..19 reads box - 10,
 // LEGO's convention for the brick's outboxes).
-bool answerDirectCommand(const Telegram& command, Mailboxes& boxes, uint16_t batteryMillivolts,
-                         uint32_t sleepLimitMs, Frame& reply);
+bool answerDirectCommand(const Telegram& command, Mailboxes& boxes, uint16_t batteryMillivolts, uint32_t sleepLimitMs,
+                         Frame& reply);
 
 // PC side: requests.
 bool encodeGetBatteryLevel(Frame& out);

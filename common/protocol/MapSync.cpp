@@ -164,7 +164,8 @@ void MapSync::acknowledge(uint16_t ack, uint16_t ackMask, uint32_t nowMs) {
       measured_ = true;
       const uint32_t rto = 2 * srttMs_ + kRtoMarginMs;
       rtoMs_ = rto < kMinRtoMs ? kMinRtoMs : (rto > retransmitMs_ ? retransmitMs_ : rto);
-      payloadLimit_ = static_cast<uint16_t>(payloadLimit_ + kGrowBytes > kMaxPayload ? kMaxPayload : payloadLimit_ + kGrowBytes);
+      payloadLimit_ =
+          static_cast<uint16_t>(payloadLimit_ + kGrowBytes > kMaxPayload ? kMaxPayload : payloadLimit_ + kGrowBytes);
     }
   }
 }
@@ -174,7 +175,8 @@ int MapSync::expire(uint32_t nowMs) {
   for (Slot& s : slots_) {
     if (s.used && nowMs - s.sentMs >= rtoMs_) {
       forget(s);
-      payloadLimit_ = static_cast<uint16_t>(payloadLimit_ / 2 < kMinDeltaPayload ? kMinDeltaPayload : payloadLimit_ / 2);
+      payloadLimit_ =
+          static_cast<uint16_t>(payloadLimit_ / 2 < kMinDeltaPayload ? kMinDeltaPayload : payloadLimit_ / 2);
       ++n;
     }
   }

@@ -117,7 +117,7 @@ class MapSync {
   uint16_t epoch_ = 0;
   uint16_t payloadLimit_ = kMaxPayload;  // kMinDeltaPayload .. kMaxPayload bytes
   uint16_t resume_ = 0;                  // torus index where the next scan starts
-  bool announce_ = true;  // the epoch's first delta is still to be sent
+  bool announce_ = true;                 // the epoch's first delta is still to be sent
   bool measured_ = false;
   Slot slots_[kSlots] = {};
 };

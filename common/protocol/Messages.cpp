@@ -199,7 +199,8 @@ bool decodeMapChunk(const uint8_t* p, size_t n, MapChunkMsg& out) {
   if (out.chunkCount == 0 || out.chunkIndex >= out.chunkCount) return false;
   if (static_cast<int>(out.offset) + out.count > cells) return false;
   for (uint16_t i = 0; i < out.count; ++i) {
-    if (out.state(i) != CellState::Unknown && out.state(i) != CellState::Free && out.state(i) != CellState::Occupied) return false;
+    if (out.state(i) != CellState::Unknown && out.state(i) != CellState::Free && out.state(i) != CellState::Occupied)
+      return false;
   }
   for (size_t i = out.count; i < packed * 4; ++i) {
     if (((out.states[i / 4] >> (2 * (i % 4))) & 3u) != 0) return false;  // padding is 0
@@ -229,8 +230,8 @@ bool decodeHelloReply(const uint8_t* p, size_t n, HelloReplyMsg& out) {
   out.maxPathCells = r.u16();
   const uint8_t fresh = r.u8();
   out.freshSession = fresh == 1;
-  return r.ok() && r.atEnd() && fresh <= 1 && out.gridWidthLog2 >= 1 && out.gridWidthLog2 <= 7 && out.gridHeightLog2 >= 1 &&
-         out.gridHeightLog2 <= 7 && out.maxPathCells >= 2;
+  return r.ok() && r.atEnd() && fresh <= 1 && out.gridWidthLog2 >= 1 && out.gridWidthLog2 <= 7 &&
+         out.gridHeightLog2 >= 1 && out.gridHeightLog2 <= 7 && out.maxPathCells >= 2;
 }
 
 // ---- Pose, PathProgress, NewRoom, Battery ----

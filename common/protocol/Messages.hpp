@@ -54,9 +54,9 @@ struct MapChunkMsg {
   uint16_t transferId = 0;
   uint16_t chunkIndex = 0;
   uint16_t chunkCount = 0;
-  Bounds window{};       // the whole map's window (non-empty, at most 128 x 128)
-  uint16_t offset = 0;   // first cell of this chunk, row-major in the window
-  uint16_t count = 0;    // cells in this chunk, 1..kChunkCells
+  Bounds window{};      // the whole map's window (non-empty, at most 128 x 128)
+  uint16_t offset = 0;  // first cell of this chunk, row-major in the window
+  uint16_t count = 0;   // cells in this chunk, 1..kChunkCells
   uint8_t states[(kChunkCells + 3) / 4] = {};
 
   CellState state(uint16_t i) const { return static_cast<CellState>((states[i / 4] >> (2 * (i % 4))) & 3u); }
@@ -71,8 +71,8 @@ bool decodeMapChunk(const uint8_t* p, size_t n, MapChunkMsg& out);
 
 struct HelloReplyMsg {
   uint8_t version = kProtocolVersion;
-  uint32_t session = 0;        // the PC's session, echoed
-  uint8_t gridWidthLog2 = 6;   // brick grid capacity: 64 x 64
+  uint32_t session = 0;       // the PC's session, echoed
+  uint8_t gridWidthLog2 = 6;  // brick grid capacity: 64 x 64
   uint8_t gridHeightLog2 = 6;
   uint16_t mapEpoch = 0;
   uint16_t maxPathCells = kMaxPathCells;
@@ -153,8 +153,8 @@ bool decodeCounters(const uint8_t* p, size_t n, CountersMsg& out);
 // capacity) turns an index back into coordinates. A run covers `count` consecutive indices of
 // one row: [index u16][count u8][states, 2 bits each, ceil(count/4) bytes].
 struct MapDeltaHeader {
-  uint16_t epoch = 0;       // changes when the brick's map restarts (new room, restructuring, resync)
-  uint8_t widthLog2 = 6;    // 1..7 (capacity up to 128)
+  uint16_t epoch = 0;     // changes when the brick's map restarts (new room, restructuring, resync)
+  uint8_t widthLog2 = 6;  // 1..7 (capacity up to 128)
   uint8_t heightLog2 = 6;
   Bounds window{};
   uint8_t runCount = 0;

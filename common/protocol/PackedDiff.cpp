@@ -67,7 +67,9 @@ void blendCells(const uint8_t* from, size_t step, uint8_t* to, uint32_t first, u
 }
 }  // namespace
 
-void copyCells(const uint8_t* from, uint8_t* to, uint32_t first, uint32_t count) { blendCells(from, 1, to, first, count); }
+void copyCells(const uint8_t* from, uint8_t* to, uint32_t first, uint32_t count) {
+  blendCells(from, 1, to, first, count);
+}
 
 void setCells(uint8_t* torus, uint32_t first, uint32_t count, uint8_t value) {
   const uint8_t v = static_cast<uint8_t>(value & 3u);

@@ -21,9 +21,7 @@ constexpr uint8_t differingCells(uint8_t a, uint8_t b) {
 }
 
 // The lowest cell in a non-zero differingCells() mask (0..3).
-constexpr uint8_t lowestCell(uint8_t mask) {
-  return (mask & 1u) ? 0 : (mask & 2u) ? 1 : (mask & 4u) ? 2 : 3;
-}
+constexpr uint8_t lowestCell(uint8_t mask) { return (mask & 1u) ? 0 : (mask & 2u) ? 1 : (mask & 4u) ? 2 : 3; }
 
 // Whether cell `index` differs between tori `a` and `b` (2 bits per cell).
 inline bool cellDiffers(const uint8_t* a, const uint8_t* b, uint32_t index) {

@@ -12,7 +12,11 @@ class SeqWindow {
   bool seen(uint16_t seq) const;
   // Records `seq` (a no-op for 0).
   void record(uint16_t seq);
-  void reset() { any_ = false; newest_ = 0; mask_ = 0; }
+  void reset() {
+    any_ = false;
+    newest_ = 0;
+    mask_ = 0;
+  }
 
   uint16_t ack() const { return any_ ? newest_ : 0; }
   uint16_t ackMask() const { return any_ ? mask_ : 0; }

@@ -15,10 +15,8 @@ bool nxtmapPacketValid(const uint8_t* t, size_t size) {
 
 bool legoCommandValid(const uint8_t* t, size_t size) {
   switch (t[1]) {
-    case kLegoGetBatteryLevel:
-      return size == kLegoBatteryCommandSize;
-    case kLegoKeepAlive:
-      return size == kLegoKeepAliveCommandSize;
+    case kLegoGetBatteryLevel: return size == kLegoBatteryCommandSize;
+    case kLegoKeepAlive: return size == kLegoKeepAliveCommandSize;
     case kLegoMessageRead:
       return size == kLegoReadCommandSize && t[2] < 2 * kLegoMailboxes && t[3] < kLegoMailboxes && t[4] <= 1;
     case kLegoMessageWrite: {
@@ -26,23 +24,17 @@ bool legoCommandValid(const uint8_t* t, size_t size) {
       const size_t n = t[3];
       return n >= 1 && n <= kLegoMaxMessage && size == 4 + n && t[size - 1] == 0;
     }
-    default:
-      return false;
+    default: return false;
   }
 }
 
 bool legoReplyValid(const uint8_t* t, size_t size) {
   switch (t[1]) {
-    case kLegoGetBatteryLevel:
-      return size == kLegoBatteryReplySize;
-    case kLegoKeepAlive:
-      return size == kLegoKeepAliveReplySize;
-    case kLegoMessageRead:
-      return size == kLegoReadReplySize && t[3] < kLegoMailboxes && t[4] <= kLegoMaxMessage;
-    case kLegoMessageWrite:
-      return size == kLegoWriteReplySize;
-    default:
-      return false;
+    case kLegoGetBatteryLevel: return size == kLegoBatteryReplySize;
+    case kLegoKeepAlive: return size == kLegoKeepAliveReplySize;
+    case kLegoMessageRead: return size == kLegoReadReplySize && t[3] < kLegoMailboxes && t[4] <= kLegoMaxMessage;
+    case kLegoMessageWrite: return size == kLegoWriteReplySize;
+    default: return false;
   }
 }
 
@@ -51,15 +43,11 @@ bool legoReplyValid(const uint8_t* t, size_t size) {
 bool telegramValid(const uint8_t* t, size_t size) {
   if (size < 2 || size > kMaxTelegram) return false;
   switch (t[0]) {
-    case kTypeNxtmap:
-      return nxtmapPacketValid(t, size);
+    case kTypeNxtmap: return nxtmapPacketValid(t, size);
     case kTypeDirect:
-    case kTypeDirectNoReply:
-      return legoCommandValid(t, size);
-    case kTypeReply:
-      return legoReplyValid(t, size);
-    default:
-      return false;
+    case kTypeDirectNoReply: return legoCommandValid(t, size);
+    case kTypeReply: return legoReplyValid(t, size);
+    default: return false;
   }
 }
 

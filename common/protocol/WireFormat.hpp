@@ -24,7 +24,7 @@ constexpr size_t kLengthPrefix = 2;
 constexpr size_t kMaxTelegram = 126;
 constexpr size_t kMaxFrame = kLengthPrefix + kMaxTelegram;  // 128
 constexpr size_t kPacketHeader = 10;
-constexpr size_t kPacketTrailer = 4;  // crc32
+constexpr size_t kPacketTrailer = 4;                                           // crc32
 constexpr size_t kMaxPayload = kMaxTelegram - kPacketHeader - kPacketTrailer;  // 112
 
 // Telegram types (byte 0).
@@ -51,23 +51,23 @@ constexpr uint8_t kLegoQueueFull = 0xFB;       // (LEGO: "insufficient memory av
 constexpr uint8_t kLegoMailboxes = 10;
 constexpr uint8_t kLegoMaxMessage = 59;
 // Telegram sizes of the served commands and replies.
-constexpr size_t kLegoBatteryCommandSize = 2, kLegoBatteryReplySize = 5;     // [02][0B][st][mV u16]
-constexpr size_t kLegoKeepAliveCommandSize = 2, kLegoKeepAliveReplySize = 7; // [02][0D][st][ms u32]
-constexpr size_t kLegoReadCommandSize = 5, kLegoReadReplySize = 64;  // [02][13][st][box][len][59]
-constexpr size_t kLegoWriteReplySize = 3;                            // [02][09][st]
+constexpr size_t kLegoBatteryCommandSize = 2, kLegoBatteryReplySize = 5;      // [02][0B][st][mV u16]
+constexpr size_t kLegoKeepAliveCommandSize = 2, kLegoKeepAliveReplySize = 7;  // [02][0D][st][ms u32]
+constexpr size_t kLegoReadCommandSize = 5, kLegoReadReplySize = 64;           // [02][13][st][box][len][59]
+constexpr size_t kLegoWriteReplySize = 3;                                     // [02][09][st]
 
 // nxtmap opcodes. PC -> brick:
 enum class Op : uint8_t {
-  Hello = 0x01,         // unreliable; HelloMsg
-  Explore = 0x02,       // reliable command, no payload: start (or resume) exploring
-  Stop = 0x03,          // reliable command, no payload: stop moving
-  FollowPath = 0x04,    // reliable command; PathMsg
-  RequestMap = 0x05,    // reliable command, no payload: send the whole map again (new epoch)
-  MapChunk = 0x06,      // reliable command; MapChunkMsg (whole map PC -> brick, in chunks)
-  Ack = 0x07,           // unreliable, no payload: carries only ack/ackMask
-  BatteryRequest = 0x08,// unreliable, no payload: answered by Battery
-  SetPose = 0x09,       // reliable command; PoseMsg: the robot stands at this pose of the brick's map
-                        // (sent after a MapChunk upload: the pose in the uploaded map's frame)
+  Hello = 0x01,           // unreliable; HelloMsg
+  Explore = 0x02,         // reliable command, no payload: start (or resume) exploring
+  Stop = 0x03,            // reliable command, no payload: stop moving
+  FollowPath = 0x04,      // reliable command; PathMsg
+  RequestMap = 0x05,      // reliable command, no payload: send the whole map again (new epoch)
+  MapChunk = 0x06,        // reliable command; MapChunkMsg (whole map PC -> brick, in chunks)
+  Ack = 0x07,             // unreliable, no payload: carries only ack/ackMask
+  BatteryRequest = 0x08,  // unreliable, no payload: answered by Battery
+  SetPose = 0x09,         // reliable command; PoseMsg: the robot stands at this pose of the brick's map
+                          // (sent after a MapChunk upload: the pose in the uploaded map's frame)
   // brick -> PC:
   HelloReply = 0x41,    // unreliable; HelloReplyMsg
   Status = 0x42,        // unreliable, periodic; StatusMsg

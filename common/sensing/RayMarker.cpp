@@ -2,26 +2,20 @@
 
 namespace nxtmap {
 
-RayMarkResult markRay(MapLayers& map, const RangeGeometry& geometry, Cell from, Dir d,
-                      const RangeReading& reading) {
+RayMarkResult markRay(MapLayers& map, const RangeGeometry& geometry, Cell from, Dir d, const RangeReading& reading) {
   RayMarkResult result;
-  int16_t freeUpTo = 0;   // last cell (1 = adjacent) to observe as free
-  int16_t hitAt = 0;      // cell to observe as occupied, 0 = none
+  int16_t freeUpTo = 0;  // last cell (1 = adjacent) to observe as free
+  int16_t hitAt = 0;     // cell to observe as occupied, 0 = none
   switch (reading.status) {
     case RangeStatus::Good:
       hitAt = geometry.hitCell(reading.cm);
       freeUpTo = static_cast<int16_t>(hitAt - 1);
       if (!geometry.sureHit(reading.cm)) hitAt = 0;  // may come from beside the axis
       break;
-    case RangeStatus::TooNear:
-      hitAt = 1;
-      break;
+    case RangeStatus::TooNear: hitAt = 1; break;
     case RangeStatus::NoEcho:
-    case RangeStatus::TooFar:
-      freeUpTo = geometry.freeCells();
-      break;
-    case RangeStatus::Inconsistent:
-      return result;
+    case RangeStatus::TooFar: freeUpTo = geometry.freeCells(); break;
+    case RangeStatus::Inconsistent: return result;
   }
   result.conclusive = true;
   for (int16_t k = 1; k <= freeUpTo; ++k) {

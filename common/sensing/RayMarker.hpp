@@ -21,7 +21,6 @@ struct RayMarkResult {
   bool conclusive = false;  // the reading said something (not Inconsistent)
 };
 
-RayMarkResult markRay(MapLayers& map, const RangeGeometry& geometry, Cell from, Dir d,
-                      const RangeReading& reading);
+RayMarkResult markRay(MapLayers& map, const RangeGeometry& geometry, Cell from, Dir d, const RangeReading& reading);
 
 }  // namespace nxtmap

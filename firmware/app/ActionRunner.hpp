@@ -25,8 +25,8 @@ class ActionRunner {
     int32_t right;
   };
 
-  ActionRunner(MotionController& motion, SonarSequencer& sonar, const MotionGeometry& drive,
-               const RangeGeometry& range, const uint8_t (&sensorPorts)[4])
+  ActionRunner(MotionController& motion, SonarSequencer& sonar, const MotionGeometry& drive, const RangeGeometry& range,
+               const uint8_t (&sensorPorts)[4])
       : motion_(motion), sonar_(sonar), drive_(drive), filter_(range) {
     for (int i = 0; i < 4; ++i) ports_[i] = sensorPorts[i];
   }
@@ -57,24 +57,17 @@ class ActionRunner {
         phase_ = Phase::Rotating;
         break;
       }
-      case DriveAction::Kind::Think:
-        phase_ = Phase::Thinking;
-        break;
-      case DriveAction::Kind::Done:
-        phase_ = Phase::Idle;
-        break;
+      case DriveAction::Kind::Think: phase_ = Phase::Thinking; break;
+      case DriveAction::Kind::Done: phase_ = Phase::Idle; break;
     }
   }
 
   // Advances the action; true (with `out` set) when it is over.
   bool poll(Wheels now, uint32_t nowMs, DriveEvent& out) {
     switch (phase_) {
-      case Phase::Idle:
-        return false;
-      case Phase::Reading:
-        return pollRead(nowMs, out);
-      case Phase::Thinking:
-        return finish(DriveEvent::thought(), out);
+      case Phase::Idle: return false;
+      case Phase::Reading: return pollRead(nowMs, out);
+      case Phase::Thinking: return finish(DriveEvent::thought(), out);
       case Phase::Driving: {
         const MotionController::Status s = motion_.update(now.left, now.right, nowMs);
         if (s == MotionController::Status::Done) {
@@ -120,13 +113,9 @@ class ActionRunner {
     const Phase p = interrupted_;
     interrupted_ = Phase::Idle;
     switch (p) {
-      case Phase::Idle:
-        return false;
-      case Phase::Reading:
-        filter_.reset();
-        break;
-      case Phase::Thinking:
-        break;
+      case Phase::Idle: return false;
+      case Phase::Reading: filter_.reset(); break;
+      case Phase::Thinking: break;
       case Phase::Driving:
       case Phase::Rotating:
         motion_.start(now.left, now.right, target_.left - now.left, target_.right - now.right, nowMs);

@@ -11,7 +11,7 @@ namespace {
 constexpr TachoDecoder::Pins kTachoPins[TachoDecoder::kMotors] = {
     {reg::kPinTachoA, reg::kPinDirA}, {reg::kPinTachoB, reg::kPinDirB}, {reg::kPinTachoC, reg::kPinDirC}};
 constexpr uint32_t kBlinkMs = 500;      // robot pixel blink and status refresh
-constexpr uint32_t kMapRedrawMs = 500;   // the map is redrawn at most this often, and only when it changed
+constexpr uint32_t kMapRedrawMs = 500;  // the map is redrawn at most this often, and only when it changed
 constexpr uint32_t kButtonStableMs = 50;
 constexpr uint16_t kAvrSilentTripMs = 100;
 constexpr uint32_t kRadioPeriodMs = 50;
@@ -42,7 +42,9 @@ __attribute__((noinline)) DriveAction nxtmapSensorUpdate(Pilot* pilot, const Dri
 
 BrickApp::BrickApp()
     : tacho_(kTachoPins),
-      ports_{{bus_, kSensorPortPins[0]}, {bus_, kSensorPortPins[1]}, {bus_, kSensorPortPins[2]},
+      ports_{{bus_, kSensorPortPins[0]},
+             {bus_, kSensorPortPins[1]},
+             {bus_, kSensorPortPins[2]},
              {bus_, kSensorPortPins[3]}},
       map_(storage_.map.view(), AppExplorerStorage::kWidth(), AppExplorerStorage::kHeight()),
       planner_(storage_.travel.view(), AppExplorerStorage::kWidth(), AppExplorerStorage::kHeight()),
@@ -159,8 +161,10 @@ void BrickApp::startExploring(Strategy s, uint32_t now) {
     // map left), from where the robot stands.
     const Pose here = pose();
     poseFromPath_ = false;
-    if (s == Strategy::Frontier) explorer_ = new (explorerBuf_) FrontierExplorer(map_, planner_, explorerConfig_);
-    else explorer_ = new (explorerBuf_) PropagationExplorer(map_, planner_, explorerConfig_);
+    if (s == Strategy::Frontier)
+      explorer_ = new (explorerBuf_) FrontierExplorer(map_, planner_, explorerConfig_);
+    else
+      explorer_ = new (explorerBuf_) PropagationExplorer(map_, planner_, explorerConfig_);
     pilot_ = new (pilotBuf_) Pilot(*explorer_, PilotConfig{});
     pending_ = pilot_->step(DriveEvent::startAt(here));
     runner_.begin(pending_, wheels(), now);
@@ -194,8 +198,10 @@ void BrickApp::takeMapChunk(const protocol::MapChunkMsg& chunk) {
   }
   for (uint16_t i = 0; i < chunk.count; ++i) {
     const CellState st = chunk.state(i);
-    if (st == CellState::Free) (void)map_.markVisited(chunk.cellOf(i));
-    else if (st == CellState::Occupied) (void)map_.markBlocked(chunk.cellOf(i));
+    if (st == CellState::Free)
+      (void)map_.markVisited(chunk.cellOf(i));
+    else if (st == CellState::Occupied)
+      (void)map_.markBlocked(chunk.cellOf(i));
   }
   if (chunk.chunkIndex + 1 >= chunk.chunkCount) link_.mapRestarted();
   mapDirty_ = true;
@@ -203,7 +209,7 @@ void BrickApp::takeMapChunk(const protocol::MapChunkMsg& chunk) {
 
 void BrickApp::restAt(const Pose& p) {
   stop();
-  restPose_ = p;  // e.g. the robot's cell in a room the PC just uploaded (SetPose), in that room's frame
+  restPose_ = p;        // e.g. the robot's cell in a room the PC just uploaded (SetPose), in that room's frame
   explorer_ = nullptr;  // the next run starts from there on the map as it is
   pilot_ = nullptr;
   poseFromPath_ = false;
@@ -252,8 +258,10 @@ void BrickApp::driveRobot(uint32_t now) {
     }
     runner_.begin(pending_, wheels(), now);
   } else if (mode_ == Mode::Following) {
-    if (follower_.next(&e, pending_)) runner_.begin(pending_, wheels(), now);
-    else mode_ = Mode::Idle;
+    if (follower_.next(&e, pending_))
+      runner_.begin(pending_, wheels(), now);
+    else
+      mode_ = Mode::Idle;
   }
 }
 
@@ -281,10 +289,14 @@ void BrickApp::readButtons(uint32_t now) {
   }
   if (now - candidateSince_ < kButtonStableMs || b == lastButton_) return;
   lastButton_ = b;
-  if (b == Button::Enter) startExploring(Strategy::Propagation, now);
-  else if (b == Button::Right) startExploring(Strategy::Frontier, now);
-  else if (b == Button::Exit) stop();
-  else if (b == Button::Left) newRoom();
+  if (b == Button::Enter)
+    startExploring(Strategy::Propagation, now);
+  else if (b == Button::Right)
+    startExploring(Strategy::Frontier, now);
+  else if (b == Button::Exit)
+    stop();
+  else if (b == Button::Left)
+    newRoom();
 }
 
 void BrickApp::serveRadio(uint32_t now) {

@@ -102,16 +102,16 @@ class BrickApp {
   ExplorerConfig explorerConfig_;
   uint8_t shadow_[packedBytes(AppExplorerStorage::kWidth(), AppExplorerStorage::kHeight(), 2)] = {};
   protocol::BrickLink link_;
-  alignas(PropagationExplorer) alignas(FrontierExplorer) uint8_t explorerBuf_[
-      sizeof(PropagationExplorer) > sizeof(FrontierExplorer) ? sizeof(PropagationExplorer)
-                                                             : sizeof(FrontierExplorer)];
+  alignas(PropagationExplorer) alignas(FrontierExplorer) uint8_t
+      explorerBuf_[sizeof(PropagationExplorer) > sizeof(FrontierExplorer) ? sizeof(PropagationExplorer)
+                                                                          : sizeof(FrontierExplorer)];
   alignas(Pilot) uint8_t pilotBuf_[sizeof(Pilot)];
   Explorer* explorer_ = nullptr;
   Pilot* pilot_ = nullptr;
   ActionRunner runner_;
   PathFollower follower_{};
   DriveAction pending_{};  // the action being carried out
-  Pose restPose_{};  // where the robot stands when neither the explorer nor a path moved it last
+  Pose restPose_{};        // where the robot stands when neither the explorer nor a path moved it last
   bool poseFromPath_ = false;
 
   volatile uint32_t ms_ = 0;

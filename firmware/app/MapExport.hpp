@@ -25,7 +25,8 @@ struct MapExport {
       for (int x = 0; x < width; ++x) {
         const int i = y * width + x;
         if (i / 4 >= static_cast<int>(sizeof(cells))) return;
-        const uint8_t s = static_cast<uint8_t>(grid.at(Cell{static_cast<int16_t>(minX + x), static_cast<int16_t>(minY + y)}));
+        const uint8_t s =
+            static_cast<uint8_t>(grid.at(Cell{static_cast<int16_t>(minX + x), static_cast<int16_t>(minY + y)}));
         cells[i / 4] = static_cast<uint8_t>(cells[i / 4] | ((s & 3u) << (2 * (i % 4))));
       }
     }

@@ -25,8 +25,10 @@ class Screen {
   void pixel(int x, int y, bool dark) {
     if (x < 0 || x >= kWidth || y < 0 || y >= kHeight) return;
     const uint8_t bit = static_cast<uint8_t>(1u << (y & 7));
-    if (dark) f_[y >> 3][x] = static_cast<uint8_t>(f_[y >> 3][x] | bit);
-    else f_[y >> 3][x] = static_cast<uint8_t>(f_[y >> 3][x] & ~bit);
+    if (dark)
+      f_[y >> 3][x] = static_cast<uint8_t>(f_[y >> 3][x] | bit);
+    else
+      f_[y >> 3][x] = static_cast<uint8_t>(f_[y >> 3][x] & ~bit);
   }
   bool pixelAt(int x, int y) const { return (f_[y >> 3][x] >> (y & 7)) & 1u; }
 

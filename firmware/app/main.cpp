@@ -16,11 +16,26 @@ inline void endOfInterrupt() { nxtmap::fw::Mmio::write(reg::kAicEoicr, 0u); }
 void onCheckFailed(const char* file, int line, const char* what) { g_app.checkFailed(file, line, what); }
 }  // namespace
 
-NXTMAP_ISR void nxtmapIsrSystem() { g_app.onSystem(); endOfInterrupt(); }
-NXTMAP_ISR void nxtmapIsrPio() { g_app.onPio(); endOfInterrupt(); }
-NXTMAP_ISR void nxtmapIsrTwi() { g_app.onTwi(); endOfInterrupt(); }
-NXTMAP_ISR void nxtmapIsrUsart1() { g_app.onUsart1(); endOfInterrupt(); }
-NXTMAP_ISR void nxtmapIsrTc0() { g_app.onTc0(); endOfInterrupt(); }
+NXTMAP_ISR void nxtmapIsrSystem() {
+  g_app.onSystem();
+  endOfInterrupt();
+}
+NXTMAP_ISR void nxtmapIsrPio() {
+  g_app.onPio();
+  endOfInterrupt();
+}
+NXTMAP_ISR void nxtmapIsrTwi() {
+  g_app.onTwi();
+  endOfInterrupt();
+}
+NXTMAP_ISR void nxtmapIsrUsart1() {
+  g_app.onUsart1();
+  endOfInterrupt();
+}
+NXTMAP_ISR void nxtmapIsrTc0() {
+  g_app.onTc0();
+  endOfInterrupt();
+}
 NXTMAP_ISR void nxtmapIsrSpurious() { endOfInterrupt(); }
 
 int main() {

@@ -7,7 +7,13 @@ namespace nxtmap::fw::reg {
 
 // Peripheral identifiers (AIC source numbers, PMC_PCER bits).
 enum PeripheralId : uint32_t {
-  kIdSys = 1, kIdPioa = 2, kIdAdc = 4, kIdSpi = 5, kIdUsart1 = 7, kIdTwi = 9, kIdTc0 = 12,
+  kIdSys = 1,
+  kIdPioa = 2,
+  kIdAdc = 4,
+  kIdSpi = 5,
+  kIdUsart1 = 7,
+  kIdTwi = 9,
+  kIdTc0 = 12,
 };
 
 // AIC
@@ -70,10 +76,10 @@ constexpr uint32_t kTwiIer = 0xFFFB8024;
 constexpr uint32_t kTwiIdr = 0xFFFB8028;
 constexpr uint32_t kTwiRhr = 0xFFFB8030;
 constexpr uint32_t kTwiThr = 0xFFFB8034;
-constexpr uint32_t kTwiCrStart = 1u << 0, kTwiCrStop = 1u << 1, kTwiCrMsen = 1u << 2,
-                   kTwiCrMsdis = 1u << 3, kTwiCrSwrst = 1u << 7;
-constexpr uint32_t kTwiSrTxcomp = 1u << 0, kTwiSrRxrdy = 1u << 1, kTwiSrTxrdy = 1u << 2,
-                   kTwiSrOvre = 1u << 6, kTwiSrUnre = 1u << 7, kTwiSrNack = 1u << 8;
+constexpr uint32_t kTwiCrStart = 1u << 0, kTwiCrStop = 1u << 1, kTwiCrMsen = 1u << 2, kTwiCrMsdis = 1u << 3,
+                   kTwiCrSwrst = 1u << 7;
+constexpr uint32_t kTwiSrTxcomp = 1u << 0, kTwiSrRxrdy = 1u << 1, kTwiSrTxrdy = 1u << 2, kTwiSrOvre = 1u << 6,
+                   kTwiSrUnre = 1u << 7, kTwiSrNack = 1u << 8;
 constexpr uint32_t kTwiMmrMread = 1u << 12;
 
 // USART1 (Bluetooth) and its PDC
@@ -87,8 +93,7 @@ constexpr uint32_t kUs1Brgr = 0xFFFC4020;
 constexpr uint32_t kUs1Tpr = 0xFFFC4108;
 constexpr uint32_t kUs1Tcr = 0xFFFC410C;
 constexpr uint32_t kUs1Ptcr = 0xFFFC4120;
-constexpr uint32_t kUsCsrRxrdy = 1u << 0, kUsCsrOvre = 1u << 5, kUsCsrEndtx = 1u << 4,
-                   kUsCsrTxempty = 1u << 9;
+constexpr uint32_t kUsCsrRxrdy = 1u << 0, kUsCsrOvre = 1u << 5, kUsCsrEndtx = 1u << 4, kUsCsrTxempty = 1u << 9;
 
 // SPI (LCD) and its PDC
 constexpr uint32_t kSpiCr = 0xFFFE0000;
@@ -118,11 +123,10 @@ constexpr uint32_t kTcCcrClken = 1u << 0, kTcCcrClkdis = 1u << 1, kTcCcrSwtrg = 
 
 // PIO A pins of the NXT board.
 constexpr uint32_t pin(int n) { return 1u << n; }
-constexpr uint32_t kPinTachoC = pin(0), kPinDirA = pin(1), kPinTwd = pin(3), kPinTwck = pin(4),
-                   kPinDirC = pin(8), kPinDirB = pin(9), kPinLcdCs = pin(10), kPinBtReset = pin(11),
-                   kPinLcdA0 = pin(12), kPinLcdMosi = pin(13), kPinLcdSpck = pin(14),
-                   kPinTachoA = pin(15), kPinBtRxd = pin(21), kPinBtTxd = pin(22),
-                   kPinBtRts = pin(24), kPinBtCts = pin(25), kPinTachoB = pin(26),
+constexpr uint32_t kPinTachoC = pin(0), kPinDirA = pin(1), kPinTwd = pin(3), kPinTwck = pin(4), kPinDirC = pin(8),
+                   kPinDirB = pin(9), kPinLcdCs = pin(10), kPinBtReset = pin(11), kPinLcdA0 = pin(12),
+                   kPinLcdMosi = pin(13), kPinLcdSpck = pin(14), kPinTachoA = pin(15), kPinBtRxd = pin(21),
+                   kPinBtTxd = pin(22), kPinBtRts = pin(24), kPinBtCts = pin(25), kPinTachoB = pin(26),
                    kPinBtArm7Cmd = pin(27), kPinBtCs = pin(31);
 
 // Master clock: 18.432 MHz crystal x 73 / 14 / 2.

@@ -8,8 +8,7 @@ namespace reg = nxtmap::fw::reg;
 
 namespace {
 void waitFor(uint32_t bits) {
-  for (uint32_t i = 0; i < 1000000 && (Mmio::read(reg::kPmcSr) & bits) == 0; ++i) {
-  }
+  for (uint32_t i = 0; i < 1000000 && (Mmio::read(reg::kPmcSr) & bits) == 0; ++i) {}
 }
 }  // namespace
 

@@ -14,11 +14,11 @@ constexpr uint8_t kAvrRxBytes = 13;
 
 // What the ARM asks of the AVR (one 9-byte frame).
 struct AvrCommand {
-  uint8_t power = 0;          // 0 normal, 0x5A power down, 0xA5 (+ pwmFreq 0x5A) SAM-BA
-  uint8_t pwmFreq = 8;        // motor PWM in kHz, 1..32
+  uint8_t power = 0;             // 0 normal, 0x5A power down, 0xA5 (+ pwmFreq 0x5A) SAM-BA
+  uint8_t pwmFreq = 8;           // motor PWM in kHz, 1..32
   int8_t pwm[4] = {0, 0, 0, 0};  // motors A, B, C, (unused) in -100..100 %
-  uint8_t brakeMask = 0;      // bit n: 1 brake, 0 coast (float), motor n
-  uint8_t inputPower = 0;     // bit n: pulsed 9 V, bit n+4: constant 9 V, sensor port n
+  uint8_t brakeMask = 0;         // bit n: 1 brake, 0 coast (float), motor n
+  uint8_t inputPower = 0;        // bit n: pulsed 9 V, bit n+4: constant 9 V, sensor port n
 };
 
 // Sets constant 9 V on sensor port n (0..3): the ultrasonic sensor's supply.
@@ -49,8 +49,8 @@ inline void packAvrCommand(const AvrCommand& c, uint8_t out[kAvrTxBytes]) {
 // What the AVR reports (one 13-byte frame).
 struct AvrStatus {
   uint16_t analog[4] = {0, 0, 0, 0};  // raw 10-bit A/D of sensor pin 1, ports 1..4
-  uint16_t buttonsRaw = 0;             // button ladder A/D, +0x7FF while Enter is down
-  uint16_t batteryRaw = 0;             // bits 0-9 A/D, bit 15 rechargeable pack
+  uint16_t buttonsRaw = 0;            // button ladder A/D, +0x7FF while Enter is down
+  uint16_t batteryRaw = 0;            // bits 0-9 A/D, bit 15 rechargeable pack
 };
 
 // Decodes a received frame; false (and `out` unchanged) when the 13 bytes do not sum to 0xFF.

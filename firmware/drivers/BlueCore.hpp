@@ -49,15 +49,15 @@ class BlueCore {
     bus_.write(kPioPdr, uartPins);
     bus_.write(kPioAsr, uartPins);
     bus_.write(kUs1Cr, (1u << 2) | (1u << 3) | (1u << 5) | (1u << 7));  // RSTRX RSTTX RXDIS TXDIS
-    bus_.write(kUs1Mr, 2u | (3u << 6) | (4u << 9) | (1u << 19));  // HW handshake, 8 bit, no parity, 1 stop, OVER
+    bus_.write(kUs1Mr, 2u | (3u << 6) | (4u << 9) | (1u << 19));        // HW handshake, 8 bit, no parity, 1 stop, OVER
     bus_.write(kUs1Brgr, mck / 8 / 460800);
     bus_.write(kUs1Ptcr, (1u << 1) | (1u << 9));  // RX/TX PDC off
     bus_.write(kUs1Idr, ~0u);
     bus_.write(kUs1Cr, (1u << 4) | (1u << 6));  // RXEN TXEN
     bus_.write(kUs1Ier, kUsCsrRxrdy);
     // ADC channel 6 reads the BC4 CMD line.
-    bus_.write(kAdcCr, 1u);                                          // SWRST
-    bus_.write(kAdcMr, (4u << 8) | (12u << 16) | (2u << 24));        // 5 MHz, 20 us startup, 600 ns S/H
+    bus_.write(kAdcCr, 1u);                                    // SWRST
+    bus_.write(kAdcMr, (4u << 8) | (12u << 16) | (2u << 24));  // 5 MHz, 20 us startup, 600 ns S/H
     bus_.write(kAdcCher, 1u << 6);
     enter(State::Resetting, nowMs);
   }
@@ -147,8 +147,7 @@ class BlueCore {
     switch (state_) {
       case State::Off:
       case State::Listening:
-      case State::Stream:
-        return;
+      case State::Stream: return;
       case State::Resetting:
         bus_.write(reg::kPioCodr, reg::kPinBtReset | reg::kPinBtArm7Cmd);
         if (in >= kResetMs) {

@@ -12,8 +12,8 @@ namespace bc {
 constexpr uint8_t kOpenPort = 0x03, kAcceptConnection = 0x09, kPinCode = 0x0A, kOpenStream = 0x0B,
                   kSetDiscoverable = 0x1C;
 // BC4 -> ARM
-constexpr uint8_t kConnectResult = 0x13, kResetIndication = 0x14, kRequestPinCode = 0x15,
-                  kRequestConnection = 0x16, kPortOpenResult = 0x1B;
+constexpr uint8_t kConnectResult = 0x13, kResetIndication = 0x14, kRequestPinCode = 0x15, kRequestConnection = 0x16,
+                  kPortOpenResult = 0x1B;
 }  // namespace bc
 
 constexpr uint8_t kBcMaxPayload = 32;

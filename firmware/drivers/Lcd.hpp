@@ -31,11 +31,11 @@ class Lcd {
     bus_.write(kPioPdr, kPinLcdMosi | kPinLcdSpck | kPinLcdCs);
     bus_.write(kPioAsr, kPinLcdMosi | kPinLcdSpck);
     bus_.write(kPioBsr, kPinLcdCs);
-    bus_.write(kSpiCr, 1u << 7);  // SWRST
-    bus_.write(kSpiCr, 1u << 0);  // SPIEN
-    bus_.write(kSpiMr, 1u | (1u << 4) | (0xBu << 16));  // master, no mode fault, fixed NPCS2
+    bus_.write(kSpiCr, 1u << 7);                         // SWRST
+    bus_.write(kSpiCr, 1u << 0);                         // SPIEN
+    bus_.write(kSpiMr, 1u | (1u << 4) | (0xBu << 16));   // master, no mode fault, fixed NPCS2
     bus_.write(kSpiCsr2, ((mck / 2000000u) << 8) | 1u);  // 2 MHz, 8 bit, CPOL
-    bus_.write(kSpiPtcr, 1u << 9);  // TXTDIS
+    bus_.write(kSpiPtcr, 1u << 9);                       // TXTDIS
     state_ = State::PowerWait;
     sinceMs_ = nowMs;
   }
@@ -47,8 +47,7 @@ class Lcd {
   // Main loop: advances bring-up, or sends the next page of a pending refresh.
   void pump(uint32_t nowMs) {
     switch (state_) {
-      case State::Off:
-        return;
+      case State::Off: return;
       case State::PowerWait:
         if (nowMs - sinceMs_ < kPowerMs) return;
         command(&kReset, 1);
@@ -61,8 +60,7 @@ class Lcd {
         state_ = State::Ready;
         dirty_ = true;
         return;
-      case State::Ready:
-        break;
+      case State::Ready: break;
     }
     if (!idle()) return;
     if (page_ == 0 && !dirty_) return;
@@ -82,20 +80,16 @@ class Lcd {
   enum class State : uint8_t { Off, PowerWait, ResetWait, Ready };
 
   // The SPI has sent everything (PDC done and shift register empty).
-  bool idle() const {
-    return bus_.read(reg::kSpiTcr) == 0 && (bus_.read(reg::kSpiSr) & reg::kSpiSrTxempty);
-  }
+  bool idle() const { return bus_.read(reg::kSpiTcr) == 0 && (bus_.read(reg::kSpiSr) & reg::kSpiSrTxempty); }
   void waitIdle() const {
-    for (uint32_t i = 0; i < 100000 && !idle(); ++i) {
-    }
+    for (uint32_t i = 0; i < 100000 && !idle(); ++i) {}
   }
   // Command bytes with A0 low, polled (a few bytes at 2 MHz).
   void command(const uint8_t* bytes, uint8_t n) {
     waitIdle();
     bus_.write(reg::kPioCodr, reg::kPinLcdA0);
     for (uint8_t i = 0; i < n; ++i) {
-      for (uint32_t k = 0; k < 100000 && !(bus_.read(reg::kSpiSr) & reg::kSpiSrTdre); ++k) {
-      }
+      for (uint32_t k = 0; k < 100000 && !(bus_.read(reg::kSpiSr) & reg::kSpiSrTdre); ++k) {}
       bus_.write(reg::kSpiTdr, bytes[i]);
     }
     waitIdle();

@@ -13,12 +13,12 @@ class MotionController {
  public:
   enum class Status : uint8_t { Idle, Running, Done, Blocked };
   struct Tuning {
-    int16_t maxPower = 70;     // % of battery
-    int16_t minPower = 22;     // below this the NXT motor does not turn under load
-    int16_t gainPer16 = 8;     // power per count left, in 1/16
-    int16_t syncPer4 = 6;      // power per count of lead over the other wheel, in 1/4
-    int16_t tolerance = 1;     // counts; 1 count of spin = 0.5 degree at 112 mm track, so 3 left every turn
-                               // up to 1.5 degrees short and made smaller heading corrections impossible
+    int16_t maxPower = 70;  // % of battery
+    int16_t minPower = 22;  // below this the NXT motor does not turn under load
+    int16_t gainPer16 = 8;  // power per count left, in 1/16
+    int16_t syncPer4 = 6;   // power per count of lead over the other wheel, in 1/4
+    int16_t tolerance = 1;  // counts; 1 count of spin = 0.5 degree at 112 mm track, so 3 left every turn
+                            // up to 1.5 degrees short and made smaller heading corrections impossible
     uint16_t settleMs = 40;
     uint16_t stallMs = 500;
     uint16_t timeoutMs = 8000;

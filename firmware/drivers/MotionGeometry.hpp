@@ -33,8 +33,8 @@ struct MotionGeometry {
   }
   // Spin by `eighths` of a full turn: pi cancels, counts = track * eighths * countsPerTurn / (8 * d).
   constexpr int32_t countsForTurn(int32_t eighths) const {
-    return static_cast<int32_t>(roundDiv(static_cast<int64_t>(trackMm) * eighths * countsPerTurn,
-                                         static_cast<int64_t>(8) * wheelDiameterMm));
+    return static_cast<int32_t>(
+        roundDiv(static_cast<int64_t>(trackMm) * eighths * countsPerTurn, static_cast<int64_t>(8) * wheelDiameterMm));
   }
 
  private:

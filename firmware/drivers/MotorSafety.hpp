@@ -18,7 +18,10 @@ class MotorSafety {
   static constexpr uint32_t kSilenceMs = 50;
 
   // The control loop is alive (main loop, every pass).
-  void feed(uint32_t nowMs) { lastFeedMs_ = nowMs; fed_ = true; }
+  void feed(uint32_t nowMs) {
+    lastFeedMs_ = nowMs;
+    fed_ = true;
+  }
   // Latches a fault (first reason wins).
   void trip(Reason r) {
     if (reason_ == Reason::None) reason_ = r;

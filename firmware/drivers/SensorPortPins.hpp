@@ -11,9 +11,10 @@ struct SensorPortPinPair {
   uint32_t scl;
   uint32_t sda;
 };
-constexpr SensorPortPinPair kSensorPortPins[4] = {
-    {reg::pin(23), reg::pin(18)}, {reg::pin(28), reg::pin(19)},
-    {reg::pin(29), reg::pin(20)}, {reg::pin(30), reg::pin(2)}};
+constexpr SensorPortPinPair kSensorPortPins[4] = {{reg::pin(23), reg::pin(18)},
+                                                  {reg::pin(28), reg::pin(19)},
+                                                  {reg::pin(29), reg::pin(20)},
+                                                  {reg::pin(30), reg::pin(2)}};
 
 // The SoftI2c pin interface for one sensor port over PIO A. SCL is always driven (push-pull, the
 // sensor does not stretch the clock); SDA is driven for 0 and 1 (port 4's RS-485 parts pull a

@@ -50,34 +50,56 @@ class SoftI2c {
     if (result_ != Result::Busy) return;
     switch (phase_) {
       case Phase::Start:  // from idle (both high): SDA falls while SCL high, then SCL low
-        if (sub_ == 0) { p.sdaDrive(true); p.scl(true); }
-        else if (sub_ == 1) p.sdaDrive(false);
-        else { p.scl(false); beginByte(out_[0]); next(Phase::WriteBit); return; }
+        if (sub_ == 0) {
+          p.sdaDrive(true);
+          p.scl(true);
+        } else if (sub_ == 1)
+          p.sdaDrive(false);
+        else {
+          p.scl(false);
+          beginByte(out_[0]);
+          next(Phase::WriteBit);
+          return;
+        }
         ++sub_;
         return;
       case Phase::WriteBit:
-        if (sub_ == 0) p.sdaDrive((byte_ >> bit_) & 1u);
-        else if (sub_ == 1) p.scl(true);
+        if (sub_ == 0)
+          p.sdaDrive((byte_ >> bit_) & 1u);
+        else if (sub_ == 1)
+          p.scl(true);
         else {
           p.scl(false);
-          if (bit_ == 0) next(Phase::AckIn); else { --bit_; sub_ = 0; }
+          if (bit_ == 0)
+            next(Phase::AckIn);
+          else {
+            --bit_;
+            sub_ = 0;
+          }
           return;
         }
         ++sub_;
         return;
       case Phase::AckIn:
-        if (sub_ == 0) p.sdaRelease();
-        else if (sub_ == 1) p.scl(true);
+        if (sub_ == 0)
+          p.sdaRelease();
+        else if (sub_ == 1)
+          p.scl(true);
         else {
           const bool nack = p.sda();
           p.scl(false);
-          if (nack) { nacked_ = true; next(Phase::Stop); return; }
+          if (nack) {
+            nacked_ = true;
+            next(Phase::Stop);
+            return;
+          }
           afterByteWritten();
           return;
         }
         ++sub_;
         return;
-      case Phase::LegoRestart:  // SDA low, SCL high, SDA high (STOP), SCL low, SCL high (extra), SDA low (START), SCL low
+      case Phase::
+          LegoRestart:  // SDA low, SCL high, SDA high (STOP), SCL low, SCL high (extra), SDA low (START), SCL low
         switch (sub_) {
           case 0: p.sdaDrive(false); break;
           case 1: p.scl(true); break;
@@ -96,33 +118,52 @@ class SoftI2c {
         return;
       case Phase::WaitBeforeRead:
         if (sub_ == 0) p.sdaRelease();
-        if (++sub_ >= kWaitBeforeRead) { beginByte(0); next(Phase::ReadBit); }
+        if (++sub_ >= kWaitBeforeRead) {
+          beginByte(0);
+          next(Phase::ReadBit);
+        }
         return;
       case Phase::ReadBit:
-        if (sub_ == 0) p.sdaRelease();
-        else if (sub_ == 1) p.scl(true);
+        if (sub_ == 0)
+          p.sdaRelease();
+        else if (sub_ == 1)
+          p.scl(true);
         else {
           byte_ = static_cast<uint8_t>((byte_ << 1) | (p.sda() ? 1u : 0u));
           p.scl(false);
-          if (bit_ == 0) { in_[readCount_++] = byte_; next(Phase::AckOut); }
-          else { --bit_; sub_ = 0; }
+          if (bit_ == 0) {
+            in_[readCount_++] = byte_;
+            next(Phase::AckOut);
+          } else {
+            --bit_;
+            sub_ = 0;
+          }
           return;
         }
         ++sub_;
         return;
       case Phase::AckOut:  // ACK (SDA low) all but the last byte
-        if (sub_ == 0) p.sdaDrive(readCount_ >= readLen_);
-        else if (sub_ == 1) p.scl(true);
+        if (sub_ == 0)
+          p.sdaDrive(readCount_ >= readLen_);
+        else if (sub_ == 1)
+          p.scl(true);
         else {
           p.scl(false);
-          if (readCount_ >= readLen_) next(Phase::Stop); else { beginByte(0); next(Phase::ReadBit); }
+          if (readCount_ >= readLen_)
+            next(Phase::Stop);
+          else {
+            beginByte(0);
+            next(Phase::ReadBit);
+          }
           return;
         }
         ++sub_;
         return;
       case Phase::Stop:  // SDA low with SCL low, SCL high, SDA high
-        if (sub_ == 0) p.sdaDrive(false);
-        else if (sub_ == 1) p.scl(true);
+        if (sub_ == 0)
+          p.sdaDrive(false);
+        else if (sub_ == 1)
+          p.scl(true);
         else {
           p.sdaDrive(true);
           result_ = nacked_ ? Result::Nack : Result::Done;  // the bus is free again
@@ -145,8 +186,15 @@ class SoftI2c {
     bit_ = 7;
   }
   void afterByteWritten() {
-    if (reading_) { next(Phase::WaitBeforeRead); return; }
-    if (++outPos_ < outLen_) { beginByte(out_[outPos_]); next(Phase::WriteBit); return; }
+    if (reading_) {
+      next(Phase::WaitBeforeRead);
+      return;
+    }
+    if (++outPos_ < outLen_) {
+      beginByte(out_[outPos_]);
+      next(Phase::WriteBit);
+      return;
+    }
     next(readLen_ > 0 ? Phase::LegoRestart : Phase::Stop);
   }
 

@@ -46,8 +46,7 @@ class SonarSequencer {
 
   void poll(uint32_t nowMs) {
     switch (step_) {
-      case Step::Idle:
-        return;
+      case Step::Idle: return;
       case Step::Ping: {
         if (nowMs - poweredAtMs_ < kWarmupMs || nowMs - lastCommandMs_ < kCommandGapMs) return;
         const uint8_t cmd[2] = {kRegCommand, kSingleShot};

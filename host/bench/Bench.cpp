@@ -20,10 +20,10 @@
 #include "host/report/ExperimentTable.hpp"
 
 namespace nxtmap::bench {
-int runPlanBench();  // host/bench/PlanBench.cpp: the path-search section
-int runHouseBench();  // host/bench/HouseBench.cpp: the house section
+int runPlanBench();     // host/bench/PlanBench.cpp: the path-search section
+int runHouseBench();    // host/bench/HouseBench.cpp: the house section
 int runRealismBench();  // host/bench/RealismBench.cpp: the realism section
-}
+}  // namespace nxtmap::bench
 
 namespace {
 namespace fs = std::filesystem;
@@ -171,8 +171,7 @@ int run(int argc, char** argv) {
               verdict(c.minDetected >= 100.0 - 1e-9));
   }
   for (const Clean& c : clean) {
-    table.row("wrong cells, every run", c.strategy, "max " + formatNumber(c.maxWrong), "0",
-              verdict(c.maxWrong == 0.0));
+    table.row("wrong cells, every run", c.strategy, "max " + formatNumber(c.maxWrong), "0", verdict(c.maxWrong == 0.0));
   }
   // The better strategy: the smaller of the two ratios' maximum, among those detecting 100 %.
   const Clean* best = nullptr;
@@ -200,9 +199,9 @@ int run(int argc, char** argv) {
   }
   for (size_t i = 0; i < clean.size(); ++i) {
     table.row(noisyLabel + "mean wrong cells", clean[i].strategy, pct(noisy[i].meanWrongPct) + " of room",
-              "<= " + formatNumber(kNoisyWrongTargetPct) + " %", verdict(noisy[i].meanWrongPct <= kNoisyWrongTargetPct));
-    table.row(noisyLabel + "max wrong cells", clean[i].strategy, pct(noisy[i].maxWrongPct) + " of room", "(info)",
-              "");
+              "<= " + formatNumber(kNoisyWrongTargetPct) + " %",
+              verdict(noisy[i].meanWrongPct <= kNoisyWrongTargetPct));
+    table.row(noisyLabel + "max wrong cells", clean[i].strategy, pct(noisy[i].maxWrongPct) + " of room", "(info)", "");
   }
   table.print();
   bench::printLinkBench(dir + "/occupancy-120.map", 1, 20);
@@ -216,10 +215,10 @@ int run(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   try {
-    if (argc > 1 && std::string(argv[1]) == "plan") return nxtmap::bench::runPlanBench();  // that section alone
-    if (argc > 1 && std::string(argv[1]) == "house") return nxtmap::bench::runHouseBench();  // that section alone
+    if (argc > 1 && std::string(argv[1]) == "plan") return nxtmap::bench::runPlanBench();        // that section alone
+    if (argc > 1 && std::string(argv[1]) == "house") return nxtmap::bench::runHouseBench();      // that section alone
     if (argc > 1 && std::string(argv[1]) == "realism") return nxtmap::bench::runRealismBench();  // that section alone
-    if (argc > 1 && std::string(argv[1]) == "link") {  // that section alone
+    if (argc > 1 && std::string(argv[1]) == "link") {                                            // that section alone
       nxtmap::bench::printLinkBench(scenarioDir(1, argv) + "/occupancy-120.map", 1, 20);
       return 0;
     }

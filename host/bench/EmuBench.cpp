@@ -43,8 +43,8 @@ int runEmuBench(const std::string& scenarioDir) {
   uint64_t worstUpdate = 0;
   double worstSpeed = 1e9, worstCpuSpeed = 1e9;
   bool allDone = true;
-  std::printf("  %-8s %-6s %8s %8s %8s %8s %8s %7s %7s %10s %8s\n", "run", "end", "robot s", "wall s", "speed",
-              "cpu s", "cpu spd", "RAM B", "stack B", "max/update", "updates");
+  std::printf("  %-8s %-6s %8s %8s %8s %8s %8s %7s %7s %10s %8s\n", "run", "end", "robot s", "wall s", "speed", "cpu s",
+              "cpu spd", "RAM B", "stack B", "max/update", "updates");
   for (size_t i : picks) {
     const report::Scenario& sc = suite.scenarios[i];
     emu::EmulatedRunOptions o;

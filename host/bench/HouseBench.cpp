@@ -21,7 +21,7 @@ using report::formatNumber;
 
 constexpr double kCleanTargetPct = 99.0;
 constexpr double kNoisyTargetPct = 97.0;
-constexpr int kNoisySeeds = 3;  // typical noise: seeds 1..3, every one must meet the target
+constexpr int kNoisySeeds = 3;    // typical noise: seeds 1..3, every one must meet the target
 constexpr int kSpreadSeeds = 20;  // typical noise, default strategy: the spread over seeds 1..20 (info)
 
 fs::path houseDir() {
@@ -67,11 +67,13 @@ int runHouseBench() {
     if (e.path().extension() == ".json") files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
-  std::cout << "\nhouses (HouseExpo, room by room with each strategy; agreement on cells a reachable cell can observe;\n"
-            << "typical noise: the worst of seeds 1-" << kNoisySeeds << ", their mean in brackets; time and sensors: means)\n";
+  std::cout
+      << "\nhouses (HouseExpo, room by room with each strategy; agreement on cells a reachable cell can observe;\n"
+      << "typical noise: the worst of seeds 1-" << kNoisySeeds
+      << ", their mean in brackets; time and sensors: means)\n";
   const std::vector<size_t> w = {20, 12, 8, 11, 9, 21, 9, 7, 9, 8};
-  const std::vector<std::string> head = {"house", "strategy", "noise", "rooms/plan", "gateways", "agreement", "target",
-                                         "result", "time", "sensors"};
+  const std::vector<std::string> head = {"house",     "strategy", "noise",  "rooms/plan", "gateways",
+                                         "agreement", "target",   "result", "time",       "sensors"};
   std::string line;
   for (size_t i = 0; i < head.size(); ++i) line += pad(head[i], w[i]) + " ";
   std::cout << line << "\n" << std::string(line.size(), '-') << "\n";
@@ -106,10 +108,15 @@ int runHouseBench() {
                                                 : formatNumber(worst.score.agreementPct(), 1) + " % (mean " +
                                                       formatNumber(sumPct / runs, 1) + ")";
         const std::vector<std::string> cells = {
-            f.stem().string().substr(0, 19), mapping::strategyName(strategy), noise,
+            f.stem().string().substr(0, 19),
+            mapping::strategyName(strategy),
+            noise,
             std::to_string(worst.score.rooms) + "/" + std::to_string(l.plan->roomNum),
-            std::to_string(worst.score.gateways), agreement,
-            ">= " + formatNumber(target) + " %", ok ? "PASS" : "MISS", formatNumber(sumTime / runs, 0),
+            std::to_string(worst.score.gateways),
+            agreement,
+            ">= " + formatNumber(target) + " %",
+            ok ? "PASS" : "MISS",
+            formatNumber(sumTime / runs, 0),
             formatNumber(sumSensors / runs, 0)};
         line.clear();
         for (size_t i = 0; i < cells.size(); ++i) line += pad(cells[i], w[i]) + " ";
@@ -127,16 +134,16 @@ int runHouseBench() {
       lowest = std::min(lowest, pct);
       good += pct >= kNoisyTargetPct ? 1 : 0;
     }
-    spread.push_back(pad(f.stem().string().substr(0, 19), 20) + " " + pad(formatNumber(sum / kSpreadSeeds, 2) + " %", 9) +
-                     " " + pad(formatNumber(lowest, 1) + " %", 8) + " " + std::to_string(good) + " of " +
-                     std::to_string(kSpreadSeeds));
+    spread.push_back(pad(f.stem().string().substr(0, 19), 20) + " " +
+                     pad(formatNumber(sum / kSpreadSeeds, 2) + " %", 9) + " " + pad(formatNumber(lowest, 1) + " %", 8) +
+                     " " + std::to_string(good) + " of " + std::to_string(kSpreadSeeds));
   }
-  std::cout << "\ntypical noise, seeds 1-" << kSpreadSeeds << ", " << mapping::strategyName(house::HouseConfig{}.strategy)
+  std::cout << "\ntypical noise, seeds 1-" << kSpreadSeeds << ", "
+            << mapping::strategyName(house::HouseConfig{}.strategy)
             << " (the default; info)\nhouse                mean      min      runs >= " << formatNumber(kNoisyTargetPct)
             << " %\n";
   for (const std::string& l : spread) std::cout << l << "\n";
-  std::cout << "house targets met: " << met << " of " << targets << " (wall time " << formatNumber(wall, 2)
-            << " s)\n";
+  std::cout << "house targets met: " << met << " of " << targets << " (wall time " << formatNumber(wall, 2) << " s)\n";
   return 0;
 }
 

@@ -12,7 +12,7 @@ namespace nxtmap::bench {
 namespace {
 
 struct LinkFigures {
-  double bytesPerChange = 0;     // every byte brick -> PC (status, pose, deltas...) per cell change
+  double bytesPerChange = 0;       // every byte brick -> PC (status, pose, deltas...) per cell change
   double deltaBytesPerChange = 0;  // bytes of the map deltas that arrived, per cell change
   uint64_t changes = 0;
   double meanLagMs = 0, p95LagMs = 0, maxLagMs = 0;
@@ -43,7 +43,8 @@ LinkFigures measure(const sim::World& world, int col, int row, bool lossy) {
   const uint64_t bytesAtStart = h.wireBytesToPc();
   pc.explore();
 
-  std::map<std::pair<int, int>, std::pair<CellState, uint32_t>> changedAt;  // brick state and since when, not yet on the PC
+  std::map<std::pair<int, int>, std::pair<CellState, uint32_t>>
+      changedAt;  // brick state and since when, not yet on the PC
   std::map<std::pair<int, int>, CellState> last;
   std::vector<double> lags;
   uint64_t changes = 0;
@@ -73,7 +74,8 @@ LinkFigures measure(const sim::World& world, int col, int row, bool lossy) {
     const protocol::MapSync::Work before = brick.link().mapSync().work();
     h.tick();
     const protocol::MapSync::Work after = brick.link().mapSync().work();
-    const uint32_t bytes = after.bytesCompared - before.bytesCompared, cells = after.cellsExamined - before.cellsExamined;
+    const uint32_t bytes = after.bytesCompared - before.bytesCompared,
+                   cells = after.cellsExamined - before.cellsExamined;
     const uint32_t scans = after.scans - before.scans;
     f.scans += scans;
     bytesSum += bytes;
@@ -85,7 +87,8 @@ LinkFigures measure(const sim::World& world, int col, int row, bool lossy) {
   }
   f.bytesPerScan = f.scans ? static_cast<double>(bytesSum) / static_cast<double>(f.scans) : 0;
   f.cellsPerScan = f.scans ? static_cast<double>(cellsSum) / static_cast<double>(f.scans) : 0;
-  f.capacityCells = static_cast<uint32_t>(brick.grid().capacityWidth()) * static_cast<uint32_t>(brick.grid().capacityHeight());
+  f.capacityCells =
+      static_cast<uint32_t>(brick.grid().capacityWidth()) * static_cast<uint32_t>(brick.grid().capacityHeight());
   f.runMs = h.nowMs();
   f.changes = changes;
   f.bytesPerChange = changes ? static_cast<double>(h.wireBytesToPc() - bytesAtStart) / static_cast<double>(changes) : 0;
@@ -122,27 +125,30 @@ void printLinkBench(const std::string& worldPath, int col, int row) {
                 f.bytesPerChange, f.deltaBytesPerChange, static_cast<unsigned long long>(f.changes), f.meanLagMs,
                 f.p95LagMs, f.maxLagMs, f.equal ? "yes" : "NO");
   }
-  std::printf("(bytes/change counts every byte the brick sends - deltas, status, pose - per cell whose state changed;\n"
-              " delta B/chg only the map-delta frames that arrived intact;\n"
-              " lag: from a change of the brick's grid to the same state in the PC's copy, brick ticks of 1 ms)\n");
+  std::printf(
+      "(bytes/change counts every byte the brick sends - deltas, status, pose - per cell whose state changed;\n"
+      " delta B/chg only the map-delta frames that arrived intact;\n"
+      " lag: from a change of the brick's grid to the same state in the PC's copy, brick ticks of 1 ms)\n");
   // The brick's CPU cost of the link is MapSync's scan of the grid against the PC's shadow.
   const uint32_t cap = figures[0].capacityCells;
-  std::printf("\nMapSync scan work (the brick's CPU cost of transmit), same runs; grid capacity %u cells = %u bytes:\n", cap,
-              cap / 4);
+  std::printf("\nMapSync scan work (the brick's CPU cost of transmit), same runs; grid capacity %u cells = %u bytes:\n",
+              cap, cap / 4);
   std::printf("%-22s %7s %15s %15s %15s %15s %15s\n", "link", "scans", "bytes cmp/scan", "cells dec/scan",
               "step max bytes", "step max cells", "before: cells");
   for (int k = 0; k < 2; ++k) {
     const LinkFigures& f = figures[k];
     std::printf("%-22s %7llu %15.1f %15.2f %15u %15u %15u\n", k ? "5 % bytes damaged" : "clean",
-                static_cast<unsigned long long>(f.scans), f.bytesPerScan, f.cellsPerScan, f.maxStepBytes, f.maxStepCells,
-                cap);
+                static_cast<unsigned long long>(f.scans), f.bytesPerScan, f.cellsPerScan, f.maxStepBytes,
+                f.maxStepCells, cap);
   }
-  std::printf("(bytes cmp: grid bytes compared with the shadow, a 32-bit word at a time; cells dec: cells decoded one by\n"
-              " one (runs and their gaps, partial bytes); step max: all scans of the worst 1 ms brick step (at most %u scans).\n"
-              " before: the cell-by-cell scan of 8aca170 decoded every cell of the capacity, grid and shadow, every scan.\n"
-              " Brick target: a transmit <= 20,000 instructions with nothing to send, <= 48,000 with a full delta; the\n"
-              " instruction counts (ARM7TDMI Thumb -Os under Unicorn) are in the link2 report, not measured here)\n",
-              std::max(figures[0].maxStepScans, figures[1].maxStepScans));
+  std::printf(
+      "(bytes cmp: grid bytes compared with the shadow, a 32-bit word at a time; cells dec: cells decoded one by\n"
+      " one (runs and their gaps, partial bytes); step max: all scans of the worst 1 ms brick step (at most %u "
+      "scans).\n"
+      " before: the cell-by-cell scan of 8aca170 decoded every cell of the capacity, grid and shadow, every scan.\n"
+      " Brick target: a transmit <= 20,000 instructions with nothing to send, <= 48,000 with a full delta; the\n"
+      " instruction counts (ARM7TDMI Thumb -Os under Unicorn) are in the link2 report, not measured here)\n",
+      std::max(figures[0].maxStepScans, figures[1].maxStepScans));
 }
 
 }  // namespace nxtmap::bench

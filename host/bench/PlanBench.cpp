@@ -41,8 +41,8 @@ constexpr size_t kPeerSample = 40;           // problems per map given to the pe
 constexpr int kSeedGoalsPerRoom = 6;
 constexpr uint64_t kPublishedMaxNodes = 950;  // Appendix A: depth 8-29 -> 35-950 nodes
 
-const char* kMaps[] = {"dao/arena2.map", "maze/maze512-1-0.map", "room/8room_000.map",
-                       "random/random512-10-0.map", "street/Berlin_0_512.map"};
+const char* kMaps[] = {"dao/arena2.map", "maze/maze512-1-0.map", "room/8room_000.map", "random/random512-10-0.map",
+                       "street/Berlin_0_512.map"};
 
 // Appendix A, "Time complexity of the path finding algorithm": depth -> number of nodes (c = 4, branch 5).
 const std::array<std::pair<int, int>, 7> kPublished = {
@@ -103,9 +103,8 @@ std::string preparePeer(const fs::path& peerDir) {
   if (fs::exists(peerDir / "node_modules" / "pathfinding" / "package.json", ec)) return "";
   std::cerr << "[plan] npm install pathfinding into " << peerDir.string() << " ...\n";
   int status = 0;
-  const std::string log = capture("cd " + quote(peerDir.string()) +
-                                      " && npm install --no-audit --no-fund --loglevel=error 2>&1",
-                                  status);
+  const std::string log =
+      capture("cd " + quote(peerDir.string()) + " && npm install --no-audit --no-fund --loglevel=error 2>&1", status);
   if (status != 0 || !fs::exists(peerDir / "node_modules" / "pathfinding" / "package.json", ec)) {
     std::string firstLine = log.substr(0, log.find('\n'));
     return "npm install failed in " + peerDir.string() + (firstLine.empty() ? "" : ": " + firstLine);
@@ -153,8 +152,8 @@ PeerRun runPeer(const fs::path& peerDir, const fs::path& map, const std::vector<
 
 class Rows {
  public:
-  void add(const std::string& measure, const std::string& what, const std::string& measured,
-           const std::string& target, const std::string& result) {
+  void add(const std::string& measure, const std::string& what, const std::string& measured, const std::string& target,
+           const std::string& result) {
     rows_.push_back({measure, what, measured, target, result});
     if (result == "PASS") ++pass_;
     if (result == "PASS" || result == "MISS") ++targets_;
@@ -176,7 +175,8 @@ class Rows {
     for (size_t x : w) total += x + 2;
     std::cout << std::string(total - 2, '-') << '\n';
     for (const auto& r : rows_) line(r);
-    std::cout << std::string(total - 2, '-') << '\n' << "path search targets met: " << pass_ << " of " << targets_ << '\n';
+    std::cout << std::string(total - 2, '-') << '\n'
+              << "path search targets met: " << pass_ << " of " << targets_ << '\n';
   }
 
  private:
@@ -196,12 +196,12 @@ struct MapRun {
   std::string name;
   int width = 0, height = 0;
   size_t problems = 0;
-  std::array<size_t, 3> matched{};        // per timed algorithm
-  std::array<double, 3> median{};         // all problems, microseconds
-  std::array<double, 3> sampleMedian{};   // the peer's sample, microseconds
-  double tableMs = 0;                     // jps+ jump table build, once per map
+  std::array<size_t, 3> matched{};       // per timed algorithm
+  std::array<double, 3> median{};        // all problems, microseconds
+  std::array<double, 3> sampleMedian{};  // the peer's sample, microseconds
+  double tableMs = 0;                    // jps+ jump table build, once per map
   double samplePeer = 0;
-  size_t peerEqual = 0, peerSample = 0;   // peer lengths equal to the optimum
+  size_t peerEqual = 0, peerSample = 0;  // peer lengths equal to the optimum
   std::string peerError;
 };
 
@@ -264,18 +264,22 @@ void seedSection(Rows& rows) {
     }
     std::string published;
     for (const auto& [d, n] : kPublished) {
-      if (d >= band[0] && d <= band[1]) published += (published.empty() ? "" : ", ") + std::to_string(d) + " -> " + std::to_string(n);
+      if (d >= band[0] && d <= band[1])
+        published += (published.empty() ? "" : ", ") + std::to_string(d) + " -> " + std::to_string(n);
     }
     if (nodes.empty() && published.empty()) continue;
     char line[256];
-    const std::string bandText = band[1] >= 1000 ? std::to_string(band[0]) + "+" : std::to_string(band[0]) + "-" + std::to_string(band[1]);
+    const std::string bandText =
+        band[1] >= 1000 ? std::to_string(band[0]) + "+" : std::to_string(band[0]) + "-" + std::to_string(band[1]);
     if (nodes.empty()) {
-      std::snprintf(line, sizeof line, "  %-11s  %8d  %-36s  %-29s  %s\n", bandText.c_str(), 0, "-", "-", published.c_str());
+      std::snprintf(line, sizeof line, "  %-11s  %8d  %-36s  %-29s  %s\n", bandText.c_str(), 0, "-", "-",
+                    published.c_str());
     } else {
       const std::string n = formatNumber(*std::min_element(nodes.begin(), nodes.end()), 0) + " / " +
                             formatNumber(plan::median(nodes), 0) + " / " +
                             formatNumber(*std::max_element(nodes.begin(), nodes.end()), 0);
-      const std::string l = formatNumber(ratioSum / static_cast<double>(nodes.size()), 3) + " / " + formatNumber(ratioMax, 3);
+      const std::string l =
+          formatNumber(ratioSum / static_cast<double>(nodes.size()), 3) + " / " + formatNumber(ratioMax, 3);
       std::snprintf(line, sizeof line, "  %-11s  %8zu  %-36s  %-29s  %s\n", bandText.c_str(), nodes.size(), n.c_str(),
                     l.c_str(), published.c_str());
     }
@@ -335,8 +339,8 @@ int runPlanBench() {
     for (size_t i = step / 2; i < problems.size() && sample.size() < kPeerSample; i += step) sample.push_back(i);
     run.peerSample = sample.size();
     for (size_t a = 0; a < 3; ++a) {
-      std::cerr << "[plan] " << run.name << ": " << problems.size() << " problems, "
-                << plan::algorithmName(kTimed[a]) << "...\n";
+      std::cerr << "[plan] " << run.name << ": " << problems.size() << " problems, " << plan::algorithmName(kTimed[a])
+                << "...\n";
       auto planner = plan::makePlanner(kTimed[a]);
       const auto out = plan::runProblems(*planner, grid, problems);  // jps+ builds its table on the first one
       std::vector<double> t, st;
@@ -371,12 +375,13 @@ int runPlanBench() {
                "        jps+ table  jps vs astar  jps+ vs astar\n";
   for (const MapRun& r : runs) {
     char line[320];
-    const std::string opt = std::to_string(r.matched[kA]) + " / " + std::to_string(r.matched[kJ]) + " / " +
-                            std::to_string(r.matched[kJP]);
+    const std::string opt =
+        std::to_string(r.matched[kA]) + " / " + std::to_string(r.matched[kJ]) + " / " + std::to_string(r.matched[kJP]);
     std::snprintf(line, sizeof line, "  %-15s  %-8s  %8zu  %-26s  %-14s  %-10s  %-10s  %-10s  %11sx  %12sx\n",
                   r.name.c_str(), (std::to_string(r.width) + "x" + std::to_string(r.height)).c_str(), r.problems,
                   opt.c_str(), ms(r.median[kA]).c_str(), ms(r.median[kJ]).c_str(), ms(r.median[kJP]).c_str(),
-                  (formatNumber(r.tableMs, 1) + " ms").c_str(), formatNumber(ratio(r.median[kA], r.median[kJ]), 1).c_str(),
+                  (formatNumber(r.tableMs, 1) + " ms").c_str(),
+                  formatNumber(ratio(r.median[kA], r.median[kJ]), 1).c_str(),
                   formatNumber(ratio(r.median[kA], r.median[kJP]), 1).c_str());
     std::cout << line;
   }
@@ -391,9 +396,9 @@ int runPlanBench() {
     } else {
       std::snprintf(line, sizeof line, "  %-15s  %6zu  %14s  %11s  %-10s  %-10s  %-10s  %12sx  %10sx  %11sx\n",
                     r.name.c_str(), r.peerSample,
-                    (std::to_string(r.peerEqual) + "/" + std::to_string(r.peerSample)).c_str(), ms(r.samplePeer).c_str(),
-                    ms(r.sampleMedian[kA]).c_str(), ms(r.sampleMedian[kJ]).c_str(), ms(r.sampleMedian[kJP]).c_str(),
-                    formatNumber(ratio(r.samplePeer, r.sampleMedian[kA]), 1).c_str(),
+                    (std::to_string(r.peerEqual) + "/" + std::to_string(r.peerSample)).c_str(),
+                    ms(r.samplePeer).c_str(), ms(r.sampleMedian[kA]).c_str(), ms(r.sampleMedian[kJ]).c_str(),
+                    ms(r.sampleMedian[kJP]).c_str(), formatNumber(ratio(r.samplePeer, r.sampleMedian[kA]), 1).c_str(),
                     formatNumber(ratio(r.samplePeer, r.sampleMedian[kJ]), 1).c_str(),
                     formatNumber(ratio(r.samplePeer, r.sampleMedian[kJP]), 1).c_str());
     }
@@ -420,8 +425,9 @@ int runPlanBench() {
       const bool held = a == kJ;
       rows.add("median time vs PathFinding.js, equal lengths", who, formatNumber(speedup, 1) + "x",
                held ? ">= " + formatNumber(kPeerSpeedupTarget, 0) + "x faster" : "(info)",
-               held ? verdict(speedup >= kPeerSpeedupTarget && r.peerEqual == r.peerSample && r.matched[a] == r.problems)
-                    : "");
+               held
+                   ? verdict(speedup >= kPeerSpeedupTarget && r.peerEqual == r.peerSample && r.matched[a] == r.problems)
+                   : "");
     }
   }
   for (size_t a : {kJ, kJP}) {

@@ -54,8 +54,10 @@ void RealismWorlds::load() {
   suite20 = cli::loadSuite((root / "seed-appendix-a").string(), 20);
   published = RealismSet{"published", *sim::robotByName("published"), {}, kRoomSeeds, false};
   brick = RealismSet{"brick", *sim::robotByName("brick"), {}, kRoomSeeds, false};
-  for (const report::Scenario& s : suite10.scenarios) published.starts.push_back({&suite10.site(s), s.startCol, s.startRow, {}});
-  for (const report::Scenario& s : suite20.scenarios) brick.starts.push_back({&suite20.site(s), s.startCol, s.startRow, {}});
+  for (const report::Scenario& s : suite10.scenarios)
+    published.starts.push_back({&suite10.site(s), s.startCol, s.startRow, {}});
+  for (const report::Scenario& s : suite20.scenarios)
+    brick.starts.push_back({&suite20.site(s), s.startCol, s.startRow, {}});
 
   furnished = RealismSet{"furnished", *sim::robotByName("brick"), {}, kFurnishedSeeds, false};
   houses = RealismSet{"houses", *sim::robotByName("published"), {}, kHouseSeeds, true};
@@ -121,16 +123,18 @@ void presetTable(const RealismWorlds& w) {
   size_t total = 0;
   for (const RealismSet* s : sets) total += s->starts.size() * static_cast<size_t>(s->seeds);
   total *= sim::noiseProfileNames().size() * mapping::strategyNames().size();
-  std::cout << "\nrealism 1: noise preset x strategy x worlds (information, no targets). Every run set down square on\n"
-            << "its start (no jitter, no misalignment: misalignment is a factor of table 2). Detected % of observable\n"
-            << "occupied cells in the start frame (mean, worst), wrong and unsafe-free cells (means), lost runs, and the\n"
-            << "same map after the best rigid alignment (detected %, wrong cells). Worlds: published = the 18 Appendix-A\n"
-            << "runs at 10 cm, published robot, seeds 1-" << kRoomSeeds << "; brick = the same layouts at 20 cm cells, brick\n"
-            << "robot, seeds 1-" << kRoomSeeds << "; furnished = worlds/rooms (" << w.furnished.starts.size()
-            << " rooms), brick robot, seeds 1-" << kFurnishedSeeds << "; houses = " << w.houses.starts.size()
-            << " HouseExpo plans (the first by name), published robot, HouseMapper, seeds 1-" << kHouseSeeds
-            << "\n(houses: the merged map scored like a room's; lost not known, HouseMapper keeps its belief to itself;\n"
-            << "agreement %: the house section's own measure, free and occupied cells of the observable area alike).\n\n";
+  std::cout
+      << "\nrealism 1: noise preset x strategy x worlds (information, no targets). Every run set down square on\n"
+      << "its start (no jitter, no misalignment: misalignment is a factor of table 2). Detected % of observable\n"
+      << "occupied cells in the start frame (mean, worst), wrong and unsafe-free cells (means), lost runs, and the\n"
+      << "same map after the best rigid alignment (detected %, wrong cells). Worlds: published = the 18 Appendix-A\n"
+      << "runs at 10 cm, published robot, seeds 1-" << kRoomSeeds
+      << "; brick = the same layouts at 20 cm cells, brick\n"
+      << "robot, seeds 1-" << kRoomSeeds << "; furnished = worlds/rooms (" << w.furnished.starts.size()
+      << " rooms), brick robot, seeds 1-" << kFurnishedSeeds << "; houses = " << w.houses.starts.size()
+      << " HouseExpo plans (the first by name), published robot, HouseMapper, seeds 1-" << kHouseSeeds
+      << "\n(houses: the merged map scored like a room's; lost not known, HouseMapper keeps its belief to itself;\n"
+      << "agreement %: the house section's own measure, free and occupied cells of the observable area alike).\n\n";
   std::vector<std::vector<std::string>> rows;
   ProgressLine progress("presets", total);
   for (const RealismSet* set : sets) {

@@ -14,7 +14,7 @@ namespace nxtmap::bench {
 
 // Every world the section runs, loaded once (the sets point into the suites and `sites`).
 struct RealismWorlds {
-  cli::Suite suite10, suite20;  // worlds/seed-appendix-a at 10 cm (published) and 20 cm cells (brick)
+  cli::Suite suite10, suite20;   // worlds/seed-appendix-a at 10 cm (published) and 20 cm cells (brick)
   std::vector<sim::Site> sites;  // worlds/rooms/*.yaml at 20 cm, then the HouseExpo plans at 10 cm
   RealismSet published, brick, furnished, houses;
   // Throws cli::CliError naming the file on any problem.

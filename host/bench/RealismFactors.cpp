@@ -104,18 +104,21 @@ std::vector<Factor> factors(const RealismSet& published, const RealismSet& brick
   add("+ near field: no echo < 7 cm", published, typicalWith([n](sim::SonarNoise& s) {
         s.nearFieldCm = n.nearFieldCm;
         s.nearFieldMode = sim::NearField::NoEcho;
-      }), b);
+      }),
+      b);
   add("+ near field: reads +2 cm high < 7 cm", published, typicalWith([n](sim::SonarNoise& s) {
         s.nearFieldCm = n.nearFieldCm;
         s.nearFieldMode = sim::NearField::ReadsHigh;
         s.nearFieldHighCm = n.nearFieldHighCm;
-      }), b);
+      }),
+      b);
   add("+ per-pose error (1 cm fixed, +-0.5 per ping)", published, typicalWith(poseError), b);
   add("+ per-pose + linear error (0.9757 x + 1.88)", published, typicalWith([n, poseError](sim::SonarNoise& s) {
         poseError(s);
         s.rangeScale = n.rangeScale;
         s.biasCm = n.biasCm;
-      }), b);
+      }),
+      b);
   add("+ range limit (reliable 160, none past 260 cm)", published, typicalWith(rangeLimit), b);
   add("+ specular loss (35-60 deg, 0.9; phantom 0.3)", published, typicalWith(specular), b);
   add("+ cross-talk fields, firmware schedule", published, typicalWith(crosstalk), b);
@@ -123,20 +126,27 @@ std::vector<Factor> factors(const RealismSet& published, const RealismSet& brick
   add("+ cross-talk, harsh's 80 ms window, firmware schedule", published, typicalWith([h](sim::SonarNoise& s) {
         s.crosstalkProb = h.crosstalkProb;
         s.crosstalkWindowMs = h.crosstalkWindowMs;
-      }), b);
+      }),
+      b);
   add("+ wild readings (2 %)", published, typicalWith([n](sim::SonarNoise& s) { s.wildProb = n.wildProb; }), b);
   add("+ track width 2 % (uncalibrated Eb)", published,
       typicalWith({}, [unc](sim::WheelNoise& w) { w.trackError = unc.trackError; }), b);
   add("+ wheel ratio 2 deg/m (uncalibrated Ed)", published,
       typicalWith({}, [unc](sim::WheelNoise& w) { w.diameterRatioError = unc.diameterRatioError; }), b);
-  add("+ track + ratio, calibrated (nxt: a quarter)", published, typicalWith({}, [cal](sim::WheelNoise& w) {
-        w.trackError = cal.trackError;
-        w.diameterRatioError = cal.diameterRatioError;
-      }), b);
-  add("+ backlash 2 deg + encoder 1 deg", published, typicalWith({}, [cal](sim::WheelNoise& w) {
-        w.encoderDeg = cal.encoderDeg;
-        w.backlashDeg = cal.backlashDeg;
-      }), b);
+  add("+ track + ratio, calibrated (nxt: a quarter)", published,
+      typicalWith({},
+                  [cal](sim::WheelNoise& w) {
+                    w.trackError = cal.trackError;
+                    w.diameterRatioError = cal.diameterRatioError;
+                  }),
+      b);
+  add("+ backlash 2 deg + encoder 1 deg", published,
+      typicalWith({},
+                  [cal](sim::WheelNoise& w) {
+                    w.encoderDeg = cal.encoderDeg;
+                    w.backlashDeg = cal.backlashDeg;
+                  }),
+      b);
   add("misaligned 3 deg", published, misaligned(3.0, 0.0), b);
   add("misaligned 10 deg", published, misaligned(10.0, 0.0), b);
   add("offset 1/3 cell, square", published, misaligned(0.0, 1.0 / 3.0), b);
@@ -152,11 +162,11 @@ std::vector<Factor> factors(const RealismSet& published, const RealismSet& brick
   const int bf = add("typical, brick as a point (base)", furnished, point(presetVariant("typical")), -1);
   add("body 16 x 18 cm (the brick's)", furnished, presetVariant("typical"), bf);
   add("+ soft/thin surfaces (echo probability)", furnished, point(typicalWith(surfaces)), bf);
-  add("+ soft/thin surfaces + range limit", furnished,
-      point(typicalWith([surfaces, rangeLimit](sim::SonarNoise& s) {
+  add("+ soft/thin surfaces + range limit", furnished, point(typicalWith([surfaces, rangeLimit](sim::SonarNoise& s) {
         surfaces(s);
         rangeLimit(s);
-      })), bf);
+      })),
+      bf);
   add("+ specular loss", furnished, point(typicalWith(specular)), bf);
   add("+ cross-talk, sensors together", furnished, point(together), bf);
   return f;
@@ -172,14 +182,18 @@ std::vector<std::string> rowOf(const Factor& f, const std::string& strategy, con
   const Tally& b = isBase ? t : *base;
   const bool same = t.detected == b.detected && t.detectedAligned == b.detectedAligned && t.wrong == b.wrong &&
                     t.unsafeFree == b.unsafeFree && t.lost == b.lost && t.wrongAligned == b.wrongAligned;
-  return {f.name, f.set->name, strategy,
+  return {f.name,
+          f.set->name,
+          strategy,
           withDelta(t.mean(t.detected), b.mean(b.detected), 1, isBase),
           withDelta(t.mean(t.detectedAligned), b.mean(b.detectedAligned), 1, isBase),
           withDelta(t.mean(t.wrong), b.mean(b.wrong), 1, isBase),
           withDelta(t.mean(t.unsafeFree), b.mean(b.unsafeFree), 1, isBase),
           std::to_string(t.lost) + "/" + std::to_string(t.runs) +
               (isBase ? "" : " (" + formatDelta(t.lost - b.lost, 0) + ")"),
-          isBase ? "base" : same ? "NO CHANGE" : "measured"};
+          isBase ? "base"
+          : same ? "NO CHANGE"
+                 : "measured"};
 }
 
 }  // namespace
@@ -200,13 +214,14 @@ void factorTable(const RealismWorlds& w) {
       }
     }
   }
-  std::cout << "\nrealism 2: one factor at a time: `typical` plus one measured fact of `nxt` (its own values), seeds 1-"
-            << kFactorSeeds << ", each row\nagainst its base row (difference in brackets). Means over runs; lost: runs "
-            << "lost of runs. Misaligned: the start heading\nturned by DEG (+ on odd seeds, - on even), the offset moves "
-            << "the start right and down inside its cell. published = the\n18 Appendix-A rooms at 10 cm (published "
-            << "robot); brick = the same at 20 cm (brick robot); furnished = worlds/rooms with the brick's\n"
-            << "cells and sensor mounts, as a point except in its body row.\n"
-            << "NO CHANGE: not one number of the row differs from its base row.\n\n";
+  std::cout
+      << "\nrealism 2: one factor at a time: `typical` plus one measured fact of `nxt` (its own values), seeds 1-"
+      << kFactorSeeds << ", each row\nagainst its base row (difference in brackets). Means over runs; lost: runs "
+      << "lost of runs. Misaligned: the start heading\nturned by DEG (+ on odd seeds, - on even), the offset moves "
+      << "the start right and down inside its cell. published = the\n18 Appendix-A rooms at 10 cm (published "
+      << "robot); brick = the same at 20 cm (brick robot); furnished = worlds/rooms with the brick's\n"
+      << "cells and sensor mounts, as a point except in its body row.\n"
+      << "NO CHANGE: not one number of the row differs from its base row.\n\n";
   std::vector<std::vector<std::string>> rows;
   for (size_t i = 0; i < list.size(); ++i) {
     if (list[i].base < 0 && i > 0) rows.push_back({});

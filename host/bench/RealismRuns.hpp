@@ -19,16 +19,16 @@ namespace nxtmap::bench {
 // One start in one world. Sites are owned by the caller and outlive every run.
 struct RealismStart {
   const sim::Site* site = nullptr;
-  int startCol = 0, startRow = 0;       // a raster cell, heading N (when pose is empty: the published set-up)
-  std::optional<sim::StartPose> pose;   // the world file's own start instead
+  int startCol = 0, startRow = 0;      // a raster cell, heading N (when pose is empty: the published set-up)
+  std::optional<sim::StartPose> pose;  // the world file's own start instead
 };
 
 // Worlds run alike: rooms (MappingRun) or houses (HouseMapper, room by room).
 struct RealismSet {
-  std::string name;              // as printed: "published", "brick", "furnished", "houses"
+  std::string name;  // as printed: "published", "brick", "furnished", "houses"
   sim::RobotDescription robot;
   std::vector<RealismStart> starts;
-  int seeds = 1;                 // seeds 1..seeds per start
+  int seeds = 1;  // seeds 1..seeds per start
   bool houses = false;
 };
 
@@ -44,11 +44,11 @@ struct RealismVariant {
 // Sums over runs; means and counts for the table.
 struct Tally {
   int runs = 0;
-  int lost = 0;              // runs whose believed cell at the end is not the true one
-  bool lostKnown = true;     // false for houses (HouseMapper keeps its belief to itself)
+  int lost = 0;           // runs whose believed cell at the end is not the true one
+  bool lostKnown = true;  // false for houses (HouseMapper keeps its belief to itself)
   double detected = 0.0, worstDetected = 100.0, wrong = 0.0, unsafeFree = 0.0;
   double detectedAligned = 0.0, wrongAligned = 0.0;
-  double agreement = 0.0;    // houses: house::scoreHouse's agreement %, summed (the house section's measure)
+  double agreement = 0.0;  // houses: house::scoreHouse's agreement %, summed (the house section's measure)
 
   void add(const mapping::MapScore& s);
   double mean(double sum) const { return runs == 0 ? 0.0 : sum / runs; }

@@ -40,13 +40,14 @@ int runCli(int argc, char** argv) {
   CLI::App* simHouse = addSimHouseCommand(app, simHouseOptions);
   ExportOptions exportOptions;
   CLI::App* exportCmd = addExportCommand(app, exportOptions);
-  app.footer("Examples:\n  nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live\n"
-             "  nxtmap emulate worlds/seed-appendix-a/occupancy-120.map --start 1,20 --listen tcp:127.0.0.1:5555\n"
-             "  nxtmap experiments worlds/seed-appendix-a --strategy both --csv results.csv --plots plots\n"
-             "  nxtmap path worlds/seed-appendix-a/occupancy-120.map --from 1,20 --to 20,1 --algo seed\n"
-             "  nxtmap paths worlds/movingai/dao/arena2.map --scen worlds/movingai/dao/arena2.map.scen --algo jps\n"
-             "  nxtmap connect bt:00:16:53:0A:1B:2C      (or serial:/dev/rfcomm0, tcp:localhost:5000, sim:WORLD)\n"
-             "  nxtmap flash build/firmware/nxtmap.bin   (nxtmap flash --restore: LEGO's firmware)");
+  app.footer(
+      "Examples:\n  nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live\n"
+      "  nxtmap emulate worlds/seed-appendix-a/occupancy-120.map --start 1,20 --listen tcp:127.0.0.1:5555\n"
+      "  nxtmap experiments worlds/seed-appendix-a --strategy both --csv results.csv --plots plots\n"
+      "  nxtmap path worlds/seed-appendix-a/occupancy-120.map --from 1,20 --to 20,1 --algo seed\n"
+      "  nxtmap paths worlds/movingai/dao/arena2.map --scen worlds/movingai/dao/arena2.map.scen --algo jps\n"
+      "  nxtmap connect bt:00:16:53:0A:1B:2C      (or serial:/dev/rfcomm0, tcp:localhost:5000, sim:WORLD)\n"
+      "  nxtmap flash build/firmware/nxtmap.bin   (nxtmap flash --restore: LEGO's firmware)");
 
   try {
     if (argc > 1 && argv[1][0] != '-') {
@@ -85,8 +86,9 @@ int runCli(int argc, char** argv) {
     if (exportCmd->parsed()) return runExport(exportOptions);
     if (emulate->parsed()) return runEmulate(emulateOptions);
     std::cout << app.help();
-    throw CliError("no command given: use sim, experiments, path, paths, sim-house, export, emulate, connect or flash "
-                   "(see nxtmap --help)");
+    throw CliError(
+        "no command given: use sim, experiments, path, paths, sim-house, export, emulate, connect or flash "
+        "(see nxtmap --help)");
   } catch (const CliError& e) {
     printError(e.what());
     return kExitUsage;

@@ -84,8 +84,7 @@ std::vector<mapping::Strategy> parseStrategies(const std::string& text) {
     return all;
   }
   if (const auto s = mapping::strategyByName(text)) return {*s};
-  throw CliError("--strategy must be one of " + joinNames(mapping::strategyNames()) + ", both, not '" + text +
-                 "'");
+  throw CliError("--strategy must be one of " + joinNames(mapping::strategyNames()) + ", both, not '" + text + "'");
 }
 
 double checkRangeM(double rangeM) {

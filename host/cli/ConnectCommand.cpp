@@ -31,9 +31,11 @@ CLI::App* addConnectCommand(CLI::App& app, ConnectOptions& o) {
   c->add_option("--connect-timeout", o.connectTimeoutS,
                 "seconds to wait for the brick to answer, (0, 3600] (default 20); also the longest a write may wait");
   c->add_flag("!--no-live", o.live, "do not redraw the map while the brick explores");
-  c->add_option("--house", o.house, "load a saved house directory (nxtmap sim-house / save DIR); its room --room goes to the brick");
-  c->add_option("--room", o.room, "with --house: the room the brick stands in, by number (default 0); the brick's pose is read in "
-                                  "that room's frame");
+  c->add_option("--house", o.house,
+                "load a saved house directory (nxtmap sim-house / save DIR); its room --room goes to the brick");
+  c->add_option("--room", o.room,
+                "with --house: the room the brick stands in, by number (default 0); the brick's pose is read in "
+                "that room's frame");
   addWorldRunOptions(*c, o.run);
   c->add_option("--seed", o.seed, "sim: links only: random seed of the noise and the start jitter (default 1)");
   return c;
@@ -48,12 +50,14 @@ int runConnect(const ConnectOptions& o) {
     throw CliError(std::string("connect: ") + e.what());
   }
   if (!(o.speed > 0 && o.speed <= 1000)) throw CliError("connect: --speed must be in (0, 1000]");
-  if (o.speed != 1.0 && spec.kind != link::LinkSpec::Kind::Sim) throw CliError("connect: --speed only applies to sim: links");
+  if (o.speed != 1.0 && spec.kind != link::LinkSpec::Kind::Sim)
+    throw CliError("connect: --speed only applies to sim: links");
   const WorldRunOptions defaults;
   if (spec.kind != link::LinkSpec::Kind::Sim &&
       (o.run.noise != defaults.noise || o.run.robot != defaults.robot || o.run.startJitterDeg != 0.0 || o.seed != "1"))
-    throw CliError("connect: --noise, --robot, --start-jitter and --seed only apply to sim: links (a real or emulated "
-                   "brick has its own)");
+    throw CliError(
+        "connect: --noise, --robot, --start-jitter and --seed only apply to sim: links (a real or emulated "
+        "brick has its own)");
   link::SimTransportOptions simOptions;
   simOptions.noise = parseNoise(o.run.noise);
   simOptions.seed = parseSeed(o.seed);
@@ -146,7 +150,8 @@ int runConnect(const ConnectOptions& o) {
   auto lastDraw = std::chrono::steady_clock::now();
   // Live map: redraw when bytes arrived, at most 10 times a second (also while a command waits).
   auto redraw = [&] {
-    if (!live || runner.changes() == drawn || std::chrono::steady_clock::now() - lastDraw < std::chrono::milliseconds(100))
+    if (!live || runner.changes() == drawn ||
+        std::chrono::steady_clock::now() - lastDraw < std::chrono::milliseconds(100))
       return;
     drawn = runner.changes();
     lastDraw = std::chrono::steady_clock::now();

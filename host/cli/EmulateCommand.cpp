@@ -92,24 +92,26 @@ int runEmulate(const EmulateOptions& o) {
   std::ostringstream out;
   out << "run              " << site.name << ", robot " << robot.name << " (" << robot.cellCm << " cm cells), start "
       << (o.start.empty() ? "the world's own" : o.start) << " heading " << o.heading << ", firmware " << o.firmware
-      << ", noise "
-      << run.brick.noise.name << ", seed " << run.brick.seed << "\n"
+      << ", noise " << run.brick.noise.name << ", seed " << run.brick.seed << "\n"
       << "end              "
-      << (r.fault ? "FAULT" : r.pcLeft ? (r.finished ? "the PC disconnected (exploration done)" : "the PC disconnected")
-                  : r.finished ? "exploration done" : "time limit reached") << "\n"
+      << (r.fault      ? "FAULT"
+          : r.pcLeft   ? (r.finished ? "the PC disconnected (exploration done)" : "the PC disconnected")
+          : r.finished ? "exploration done"
+                       : "time limit reached")
+      << "\n"
       << "emulated time    " << num(r.emulatedSeconds, 2) << " s\n"
       << "wall time        " << num(r.wallSeconds, 2) << " s (" << num(r.speedRatio()) << "x real time; CPU "
       << num(r.cpuSeconds, 2) << " s = " << num(r.cpuSpeedRatio()) << "x)\n"
-      << "instructions     " << r.executed << " executed, " << r.irqs << " interrupts, " << r.idles << " idles, " << r.slices
-      << " CPU slices\n"
+      << "instructions     " << r.executed << " executed, " << r.irqs << " interrupts, " << r.idles << " idles, "
+      << r.slices << " CPU slices\n"
       << "RAM high-water   " << r.ram.total() << " B (static " << r.ram.staticBytes << " + stack " << r.ram.stackBytes
       << ") of 65536\n"
       << "sensor updates   " << r.sensorUpdates << ", at most " << r.maxPerUpdate << " instructions each\n"
       << "longest busy     " << r.maxBusy << " instructions between idles\n"
       << "AVR frames       " << r.avrGood << " good, " << r.avrBad << " bad; sonar pings " << r.pings << "\n"
       << "bluetooth        port " << (r.btPortOpen ? "open" : "closed") << ", PC "
-      << (r.btConnected ? "connected" : "not connected") << (r.btStreaming ? ", stream mode" : "") << ", "
-      << r.btToPc << " bytes to the PC, " << r.btFromPc << " from it\n"
+      << (r.btConnected ? "connected" : "not connected") << (r.btStreaming ? ", stream mode" : "") << ", " << r.btToPc
+      << " bytes to the PC, " << r.btFromPc << " from it\n"
       << "robot            x " << num(r.xCm) << " cm, y " << num(r.yCm) << " cm, heading " << num(r.headingDeg)
       << " deg, driven " << num(r.drivenCm) << " cm\n";
   std::cout << out.str() << std::flush;

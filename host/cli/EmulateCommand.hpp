@@ -18,14 +18,14 @@ struct EmulateOptions {
   std::string start;
   std::string heading = "N";
   std::string firmware = "build/firmware/nxtmap.elf";
-  std::string listen;        // empty = no PC side
-  std::string until;         // explored | disconnect (default: disconnect with --listen, else explored)
-  std::string lcd;           // PNG of the LCD at the end
-  std::string speed = "max"; // max | realtime
+  std::string listen;                     // empty = no PC side
+  std::string until;                      // explored | disconnect (default: disconnect with --listen, else explored)
+  std::string lcd;                        // PNG of the LCD at the end
+  std::string speed = "max";              // max | realtime
   WorldRunOptions run{"ideal", "", 0.0};  // --noise, --robot (empty: the firmware's own), --start-jitter
   std::string seed = "1";
-  double seconds = 3600.0;   // emulated time limit
-  double enterAt = 1.0;      // emulated second at which Enter is pressed (< 0: never)
+  double seconds = 3600.0;  // emulated time limit
+  double enterAt = 1.0;     // emulated second at which Enter is pressed (< 0: never)
 };
 
 CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& options);

@@ -29,7 +29,7 @@ Suite loadSuite(const std::string& dirOrTsv, int cellCm) {
     auto it = suite.worlds.find(s.mapPath);
     if (it == suite.worlds.end()) {
       sim::WorldLoad w = fs::path(s.mapPath).extension() == ".map" ? sim::World::loadMovingAi(s.mapPath, cellCm / 100.0)
-                                                                    : sim::World::load(s.mapPath);
+                                                                   : sim::World::load(s.mapPath);
       if (!w.world) throw CliError(where + w.error);
       it = suite.worlds.emplace(s.mapPath, std::move(*w.world)).first;
       suite.sites.emplace(s.mapPath, sim::siteFromRaster(it->second));
@@ -39,8 +39,8 @@ Suite loadSuite(const std::string& dirOrTsv, int cellCm) {
   return suite;
 }
 
-mapping::RunConfig scenarioConfig(const report::Scenario& s, mapping::Strategy strategy,
-                                  const sim::NoiseProfile& noise, uint64_t seed) {
+mapping::RunConfig scenarioConfig(const report::Scenario& s, mapping::Strategy strategy, const sim::NoiseProfile& noise,
+                                  uint64_t seed) {
   mapping::RunConfig c;
   c.startCol = s.startCol;
   c.startRow = s.startRow;

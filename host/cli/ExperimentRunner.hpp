@@ -15,7 +15,7 @@ namespace nxtmap::cli {
 
 struct Suite {
   std::string tsvPath;
-  int cellCm = 10;                           // the layouts' cells: the robot's (10 published, 20 brick)
+  int cellCm = 10;  // the layouts' cells: the robot's (10 published, 20 brick)
   std::vector<report::Scenario> scenarios;
   std::map<std::string, sim::World> worlds;  // by Scenario::mapPath
   std::map<std::string, sim::Site> sites;    // the same worlds traced into scenes
@@ -38,8 +38,8 @@ struct SuiteSettings {
 };
 
 // The published set-up for a scenario: 1 m range, initial heading N (a point robot of the raster's cells).
-mapping::RunConfig scenarioConfig(const report::Scenario& s, mapping::Strategy strategy,
-                                  const sim::NoiseProfile& noise, uint64_t seed);
+mapping::RunConfig scenarioConfig(const report::Scenario& s, mapping::Strategy strategy, const sim::NoiseProfile& noise,
+                                  uint64_t seed);
 // The same for a robot and a start jitter.
 mapping::RunConfig scenarioConfig(const report::Scenario& s, const SuiteSettings& settings, uint64_t seed);
 
@@ -54,8 +54,7 @@ using Progress = std::function<void(size_t done, size_t total, const std::string
 // Every scenario of the suite, seeds 1..seeds each (the same seed list for every scenario).
 // `progress` is called before each run with the runs done so far and the total.
 report::ExperimentTable runSuite(const Suite& suite, mapping::Strategy strategy, const std::string& noiseName,
-                                 int seeds, const Progress& progress = {}, size_t doneBefore = 0,
-                                 size_t total = 0);
+                                 int seeds, const Progress& progress = {}, size_t doneBefore = 0, size_t total = 0);
 report::ExperimentTable runSuite(const Suite& suite, const SuiteSettings& settings, const Progress& progress = {},
                                  size_t doneBefore = 0, size_t total = 0);
 

@@ -103,8 +103,8 @@ int runExperiments(const ExperimentsOptions& o) {
   if (o.seeds > 1) std::cout << " x " << o.seeds << " seeds";
   std::cout << ", robot " << settings.robot.name << " (" << settings.robot.cellCm << " cm cells)";
   if (settings.startJitterDeg > 0.0) std::cout << ", set down up to " << settings.startJitterDeg << " deg off square";
-  std::cout << ", published medians " << report::formatNumber(report::kPublishedMedianTimeUnits)
-            << " time units, " << report::formatNumber(report::kPublishedMedianSensorReads) << " sensor reads\n";
+  std::cout << ", published medians " << report::formatNumber(report::kPublishedMedianTimeUnits) << " time units, "
+            << report::formatNumber(report::kPublishedMedianSensorReads) << " sensor reads\n";
   for (const report::ExperimentTable& t : tables) {
     std::cout << '\n';
     t.writeConsole(std::cout);

@@ -13,10 +13,10 @@ namespace nxtmap::cli {
 
 struct ExperimentsOptions {
   std::string dir;
-  std::string csv;       // --strategy both: FILE-<strategy>.csv per strategy
+  std::string csv;  // --strategy both: FILE-<strategy>.csv per strategy
   std::string markdown;
-  std::string plots;     // directory
-  WorldRunOptions run;   // --noise, --robot (brick: the layouts scaled to 20 cm cells), --start-jitter
+  std::string plots;    // directory
+  WorldRunOptions run;  // --noise, --robot (brick: the layouts scaled to 20 cm cells), --start-jitter
   int seeds = 1;
   std::string strategy = "propagation";  // or frontier, both
 };

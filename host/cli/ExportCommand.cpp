@@ -70,7 +70,8 @@ void writeSvgFile(const network::HouseNetwork& h, const network::RoomMap& m, con
   for (const Cell c : gatewayCells(h)) {
     int col, row;
     network::roomCellToMap(m, c, col, row);
-    o << "<rect class=\"gateway\" x=\"" << col << "\" y=\"" << row << "\" width=\"1\" height=\"1\" fill=\"#28aa3c\"/>\n";
+    o << "<rect class=\"gateway\" x=\"" << col << "\" y=\"" << row
+      << "\" width=\"1\" height=\"1\" fill=\"#28aa3c\"/>\n";
   }
   for (const network::RoomNode& r : h.rooms()) {
     int col, row;

@@ -13,8 +13,8 @@ struct ExportOptions {
   std::string house;  // a house directory (nxtmap sim-house --save)
   std::string png;
   std::string svg;
-  std::string ros;    // directory for merged.yaml + merged.pgm
-  int cellPx = 4;     // PNG pixels per cell
+  std::string ros;  // directory for merged.yaml + merged.pgm
+  int cellPx = 4;   // PNG pixels per cell
 };
 
 CLI::App* addExportCommand(CLI::App& app, ExportOptions& options);

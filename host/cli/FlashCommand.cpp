@@ -43,7 +43,8 @@ int runFlash(const FlashOptions& o) {
   const std::string image = o.restore ? std::string(kLegoFirmwarePath) : o.image;
   std::error_code ec;
   if (!std::filesystem::is_regular_file(image, ec)) {
-    if (o.restore) throw CliError(std::string("flash: ") + kLegoFirmwarePath + " is missing: install Debian's nxt-firmware package");
+    if (o.restore)
+      throw CliError(std::string("flash: ") + kLegoFirmwarePath + " is missing: install Debian's nxt-firmware package");
     throw CliError("flash: " + image + " is not a file");
   }
   const auto size = std::filesystem::file_size(image, ec);
@@ -60,8 +61,9 @@ int runFlash(const FlashOptions& o) {
   }
   if (rc == 127 || rc == -1) throw CliError("flash: fwflash was not found: install Debian's libnxt package");
   if (output.find("NXT not found") != std::string::npos) {
-    printError("flash: no NXT brick waiting in SAM-BA mode on USB: connect it by USB and hold the reset button "
-               "(the pinhole under the USB port) for 5 seconds until it ticks, then try again");
+    printError(
+        "flash: no NXT brick waiting in SAM-BA mode on USB: connect it by USB and hold the reset button "
+        "(the pinhole under the USB port) for 5 seconds until it ticks, then try again");
     return 1;
   }
   std::string firstLine = output.substr(0, output.find('\n'));

@@ -83,8 +83,9 @@ int runHousePath(const PathOptions& o) {
       << (label.empty() ? "" : " (next to " + label + ")") << "\n"
       << "rooms            " << rooms << "\n";
   for (const network::HouseLeg& leg : r.legs) {
-    out << "  in " << h.rooms()[static_cast<size_t>(leg.room)].name << ": " << roomCellText(h, leg.room, leg.cells.front())
-        << " -> " << roomCellText(h, leg.room, leg.cells.back()) << ", " << leg.cells.size() - 1 << " moves\n";
+    out << "  in " << h.rooms()[static_cast<size_t>(leg.room)].name << ": "
+        << roomCellText(h, leg.room, leg.cells.front()) << " -> " << roomCellText(h, leg.room, leg.cells.back()) << ", "
+        << leg.cells.size() - 1 << " moves\n";
   }
   out << "length           " << report::formatNumber(r.length, 3) << " cells ("
       << report::formatNumber(r.length * l.resolutionM, 2) << " m)\n"

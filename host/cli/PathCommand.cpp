@@ -95,12 +95,13 @@ std::string drawMap(const mapio::OccupancyMap& map, const plan::PlanResult& r, c
 CLI::App* addPathCommand(CLI::App& app, PathOptions& o) {
   CLI::App* c = app.add_subcommand("path", "one path on a map, drawn, with its length and nodes expanded");
   c->add_option("map", o.map, "map: a world (.map, .yaml) or a map saved by 'nxtmap sim --save'");
-  c->add_option("--house", o.house, "route across the rooms of a house directory instead (--from ROOM:C,R "
-                                    "--to ROOM:C,R|near:LABEL, cells of the room's map)");
+  c->add_option("--house", o.house,
+                "route across the rooms of a house directory instead (--from ROOM:C,R "
+                "--to ROOM:C,R|near:LABEL, cells of the room's map)");
   c->add_option("--from", o.from, "start cell COL,ROW (col right, row down from the top-left)")->required();
-  c->add_option("--to", o.to, "goal cell COL,ROW, or near:LABEL (closest reachable cell next to a label)")
-      ->required();
-  c->add_option("--algo", o.algo, "seed (the published search), astar, jps, jps+ (precomputed jumps) or dijkstra (default astar)");
+  c->add_option("--to", o.to, "goal cell COL,ROW, or near:LABEL (closest reachable cell next to a label)")->required();
+  c->add_option("--algo", o.algo,
+                "seed (the published search), astar, jps, jps+ (precomputed jumps) or dijkstra (default astar)");
   c->add_option("--label", o.labels, "add a label NAME=COL,ROW or NAME=COL,ROW,WIDTH,HEIGHT (repeatable)");
   c->add_option("--clearance", o.clearance, "keep this many cells away from obstacles (default 0)");
   c->add_flag("--through-unknown", o.throughUnknown, "allow unknown cells (default: never used)");
@@ -168,8 +169,8 @@ int runPath(const PathOptions& o) {
   }
   if (!r.found()) throw CliError(std::string("cannot plan: ") + plan::statusName(r.status));
 
-  const bool draw = o.draw == "always" ||
-                    (o.draw == "auto" && map.width() <= kAutoDrawSide && map.height() <= kAutoDrawSide);
+  const bool draw =
+      o.draw == "always" || (o.draw == "auto" && map.width() <= kAutoDrawSide && map.height() <= kAutoDrawSide);
   std::ostringstream out;
   if (draw) out << drawMap(map, r, target) << "\n";
   int diagonal = 0;

@@ -14,14 +14,14 @@ namespace nxtmap::cli {
 struct PathOptions {
   std::string map;
   std::string from;
-  std::string to;                   // "C,R" or "near:LABEL"
+  std::string to;  // "C,R" or "near:LABEL"
   std::string algo = "astar";
   std::vector<std::string> labels;  // extra labels "NAME=C,R" or "NAME=C,R,W,H"
   int clearance = 0;                // cells
   bool throughUnknown = false;
-  std::string draw = "auto";        // auto | always | never
-  uint64_t maxNodes = 0;            // 0: no limit
-  std::string house;                // --house DIR: route across the rooms of a saved house (HousePathCommand)
+  std::string draw = "auto";  // auto | always | never
+  uint64_t maxNodes = 0;      // 0: no limit
+  std::string house;          // --house DIR: route across the rooms of a saved house (HousePathCommand)
 };
 
 CLI::App* addPathCommand(CLI::App& app, PathOptions& options);

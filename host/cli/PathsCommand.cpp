@@ -33,7 +33,8 @@ CLI::App* addPathsCommand(CLI::App& app, PathsOptions& o) {
   c->add_option("--scen", o.scen, "Moving AI scenario file (.scen, version 1)")->required();
   c->add_option("--algo", o.algo, "seed, astar, jps, jps+ or dijkstra (default astar)");
   c->add_option("--csv", o.csv, "write one line per problem as CSV");
-  c->add_option("--max-nodes", o.maxNodes, "per problem: give up after this many expanded nodes, 1..10^12 (default: no limit)")
+  c->add_option("--max-nodes", o.maxNodes,
+                "per problem: give up after this many expanded nodes, 1..10^12 (default: no limit)")
       ->check(maxNodesProblem);
   return c;
 }
@@ -121,10 +122,11 @@ int runPaths(const PathsOptions& o) {
     s << "mismatch         problem " << i + 1 << " (bucket " << problems[i].bucket << ") "
       << cellText(problems[i].start) << " -> " << cellText(problems[i].goal) << ": "
       << (out[i].status == plan::PlanStatus::Found ? "length " + report::formatNumber(out[i].length, 5)
-                                                    : std::string(plan::statusName(out[i].status)))
+                                                   : std::string(plan::statusName(out[i].status)))
       << ", published " << report::formatNumber(problems[i].optimal, 5) << "\n";
   }
-  if (mismatches.size() > kListedMismatches) s << "                 ... " << mismatches.size() - kListedMismatches << " more\n";
+  if (mismatches.size() > kListedMismatches)
+    s << "                 ... " << mismatches.size() - kListedMismatches << " more\n";
   if (!o.csv.empty()) s << "wrote            " << o.csv << "\n";
   std::cout << s.str() << std::flush;
   return mismatches.empty() ? kExitOk : 1;

@@ -160,14 +160,14 @@ int runSim(const SimOptions& o) {
   const mapping::MapScore s = mapping::scoreRun(run);
   auto num = [](double v) { return report::formatNumber(v, 1); };
   std::ostringstream out;
-  out << "\nrun              " << world.name() << " " << world.width() << "x" << world.height() << " cells of " << robot.cellCm << " cm, robot " << robot.name << ", start "
-      << run.config().startCol << "," << run.config().startRow << " heading " << o.heading;
+  out << "\nrun              " << world.name() << " " << world.width() << "x" << world.height() << " cells of "
+      << robot.cellCm << " cm, robot " << robot.name << ", start " << run.config().startCol << ","
+      << run.config().startRow << " heading " << o.heading;
   if (config.startJitterDeg > 0.0) {
     out << " (set down " << report::formatNumber(run.robot().frame().headingDeg, 1) << " deg off square)";
   }
-  out << ", strategy "
-      << mapping::strategyName(config.strategy) << ", noise " << config.noise.name << ", seed " << config.seed
-      << ", range " << report::formatNumber(robot.rangeM) << " m\n"
+  out << ", strategy " << mapping::strategyName(config.strategy) << ", noise " << config.noise.name << ", seed "
+      << config.seed << ", range " << report::formatNumber(robot.rangeM) << " m\n"
       << "end              " << endName(run.explorer().end()) << "\n"
       << "time units       " << report::formatNumber(c.timeHalfUnits() / 2.0, 1) << "\n"
       << "sensor requests  " << c.sensorRequests << "\n"
@@ -175,10 +175,10 @@ int runSim(const SimOptions& o) {
       << "cells moved      " << c.cellsMoved << "\n"
       << "turns            " << report::formatNumber(c.turnEighths / 2.0, 1) << " x 90 deg\n"
       << "blocked moves    " << c.blockedMoves << "\n"
-      << "detected         " << num(s.detectedPct()) << " % of the observable occupied cells ("
-      << s.detectedOccupied << " of " << s.observableOccupied << ")\n"
-      << "found/actual occ " << num(s.seedPerformancePct()) << " % (" << s.foundOccupied << " of "
-      << s.actualOccupied << ", the thesis's performance)\n"
+      << "detected         " << num(s.detectedPct()) << " % of the observable occupied cells (" << s.detectedOccupied
+      << " of " << s.observableOccupied << ")\n"
+      << "found/actual occ " << num(s.seedPerformancePct()) << " % (" << s.foundOccupied << " of " << s.actualOccupied
+      << ", the thesis's performance)\n"
       << "wrong cells      " << s.wrongCells << "\n"
       << "unknown cells    " << s.unknown << " (" << s.unknownObservable << " of them observable)\n"
       << "free cells       " << s.foundFree << " found of " << s.actualFree << "\n"
@@ -186,8 +186,8 @@ int runSim(const SimOptions& o) {
       << "phantom occupied " << s.phantomOccupied << " cells the map calls occupied where there is nothing\n"
       << "lost             " << (s.lost ? "yes: the robot believes it stands in another cell" : "no") << "\n"
       << "aligned          map turned " << num(s.alignRotationDeg) << " deg, moved " << num(s.alignShiftCol) << ","
-      << num(s.alignShiftRow) << " cells to fit the world best: detected " << num(s.detectedPctAligned()) << " %, wrong "
-      << s.wrongCellsAligned << ", unsafe free " << s.unsafeFreeAligned << ", lost "
+      << num(s.alignShiftRow) << " cells to fit the world best: detected " << num(s.detectedPctAligned())
+      << " %, wrong " << s.wrongCellsAligned << ", unsafe free " << s.unsafeFreeAligned << ", lost "
       << (s.lostAligned ? "yes" : "no") << "\n";
   std::cout << out.str() << std::flush;
 

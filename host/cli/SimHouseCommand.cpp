@@ -52,7 +52,9 @@ CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& o) {
   addRangeOption(*c, o.run);
   addWorldRunOptions(*c, o.run);
   c->add_option("--seed", o.seed, "random seed of the noise (default 1)");
-  c->add_option("--strategy", o.strategy, "exploration strategy per room: propagation, frontier (default frontier: fewer turns, so the pose holds better across rooms)");
+  c->add_option("--strategy", o.strategy,
+                "exploration strategy per room: propagation, frontier (default frontier: fewer turns, so the pose "
+                "holds better across rooms)");
   c->add_option("--save", o.save, "directory to save the house in (ROS map per room + house.yaml)");
   return c;
 }
@@ -97,8 +99,8 @@ int runSimHouse(const SimHouseOptions& o) {
   std::ostringstream out;
   out << "house            " << (plan ? plan->id : world.name()) << " " << world.width() << "x" << world.height()
       << ", robot " << robot.name << " (" << robot.cellCm << " cm cells), start " << mapper.config().startCol << ","
-      << mapper.config().startRow << " heading " << o.heading << ", strategy "
-      << mapping::strategyName(config.strategy) << ", noise " << config.noise.name << ", seed " << config.seed << "\n";
+      << mapper.config().startRow << " heading " << o.heading << ", strategy " << mapping::strategyName(config.strategy)
+      << ", noise " << config.noise.name << ", seed " << config.seed << "\n";
   for (const network::RoomNode& r : mapper.network().rooms()) {
     out << "  " << r.name << "  " << r.map.width() << "x" << r.map.height() << " cells, "
         << r.map.count(CellState::Free) << " free, origin at house cell " << r.toHouse.x() << "," << r.toHouse.y()
@@ -106,8 +108,8 @@ int runSimHouse(const SimHouseOptions& o) {
   }
   for (const network::Gateway& g : mapper.network().gateways()) {
     const auto& rooms = mapper.network().rooms();
-    out << "  gateway " << rooms[static_cast<size_t>(g.roomA)].name << " <-> " << rooms[static_cast<size_t>(g.roomB)].name
-        << ", " << g.cellsA.size() << " cells\n";
+    out << "  gateway " << rooms[static_cast<size_t>(g.roomA)].name << " <-> "
+        << rooms[static_cast<size_t>(g.roomB)].name << ", " << g.cellsA.size() << " cells\n";
   }
   out << "rooms            " << s.rooms;
   if (plan) {
@@ -117,9 +119,8 @@ int runSimHouse(const SimHouseOptions& o) {
   }
   out << "\ngateways         " << s.gateways << " (exits found " << mapper.exitsFound() << ", not passed "
       << mapper.exitsUnreached() << ", openings onto unmapped space explored " << mapper.openingsTried() << ")\n"
-      << "agreement        " << num(s.agreementPct()) << " % of " << s.observable
-      << " observable cells (unknown " << s.unknown << ", wrong " << s.wrong << "; wrong elsewhere "
-      << s.wrongElsewhere << ")\n"
+      << "agreement        " << num(s.agreementPct()) << " % of " << s.observable << " observable cells (unknown "
+      << s.unknown << ", wrong " << s.wrong << "; wrong elsewhere " << s.wrongElsewhere << ")\n"
       << "time units       " << num(c.timeUnits()) << " (between rooms: " << c.travel.cellsMoved << " cells; "
       << "relocalisations " << mapper.relocalisations() << "; start room moved by the start readings "
       << mapper.startShift().x << "," << mapper.startShift().y << ")\n"

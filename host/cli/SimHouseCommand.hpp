@@ -15,13 +15,13 @@ class App;
 namespace nxtmap::cli {
 
 struct SimHouseOptions {
-  std::string world;   // HouseExpo .json, Moving AI .map or ROS .yaml
-  std::string start;   // COL,ROW; optional for a HouseExpo plan (a start is picked)
+  std::string world;  // HouseExpo .json, Moving AI .map or ROS .yaml
+  std::string start;  // COL,ROW; optional for a HouseExpo plan (a start is picked)
   std::string heading = "N";
   WorldRunOptions run;  // --noise, --robot, --start-jitter, --range-m
   std::string seed = "1";
   std::string strategy = "frontier";
-  std::string save;    // directory to write the house to
+  std::string save;  // directory to write the house to
 };
 
 CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& options);

@@ -68,7 +68,8 @@ sim::StartPose parseSiteStart(const sim::Site& site, const std::string& start, c
   double v[3] = {0.0, 0.0, 90.0};
   int count = 0;
   if (!parseMetres(start, v, count) || std::fabs(v[0]) > 1000.0 || std::fabs(v[1]) > 1000.0)
-    throw CliError(where + "--start must be X,Y or X,Y,YAW in the world file's metres and degrees (|X|, |Y| <= 1000), not '" +
+    throw CliError(where +
+                   "--start must be X,Y or X,Y,YAW in the world file's metres and degrees (|X|, |Y| <= 1000), not '" +
                    start + "'");
   return sim::StartPose{sim::Vec2(v[0] * 100.0, -v[1] * 100.0), 90.0 - v[2]};
 }
@@ -95,14 +96,16 @@ void addWorldRunOptions(CLI::App& command, WorldRunOptions& o, const std::string
                          " (default ideal); 'list' prints each preset's values");
   command.add_option("--robot", o.robot,
                      "the robot: published (10 cm cells, sensors at the centre, a point) or brick (the NXT as "
-                     "built: 20 cm cells, sensors 6 cm out, a 16 x 18 cm body); " + robotNote);
+                     "built: 20 cm cells, sensors 6 cm out, a 16 x 18 cm body); " +
+                         robotNote);
   command.add_option("--start-jitter", o.startJitterDeg,
                      "set the robot down off the start cell's centre and up to DEG degrees off square, drawn per "
                      "seed (0 = square on the centre, the default)");
 }
 
 void addRangeOption(CLI::App& command, WorldRunOptions& o) {
-  command.add_option("--range-m", o.rangeM, "trusted maximum sensor range in metres (default: the robot's, 1 m published)")
+  command
+      .add_option("--range-m", o.rangeM, "trusted maximum sensor range in metres (default: the robot's, 1 m published)")
       ->each([&o](const std::string&) { o.rangeGiven = true; });
 }
 

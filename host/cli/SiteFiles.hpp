@@ -39,11 +39,11 @@ void checkStartFits(const sim::Site& site, const sim::RobotDescription& robot, c
 
 // The options every simulating command shares, with their defaults.
 struct WorldRunOptions {
-    std::string noise = "ideal";      // a preset name, or "list" to print the presets and exit
-    std::string robot = "published";
-    double startJitterDeg = 0.0;
-    double rangeM = 0.0;              // --range-m (addRangeOption), when rangeGiven
-    bool rangeGiven = false;          // otherwise the robot's own trusted range
+  std::string noise = "ideal";  // a preset name, or "list" to print the presets and exit
+  std::string robot = "published";
+  double startJitterDeg = 0.0;
+  double rangeM = 0.0;      // --range-m (addRangeOption), when rangeGiven
+  bool rangeGiven = false;  // otherwise the robot's own trusted range
 };
 // robotNote: what an unset --robot means (default: "default published").
 void addWorldRunOptions(CLI::App& command, WorldRunOptions& o, const std::string& robotNote = "default published");

@@ -39,11 +39,13 @@ MapView viewOf(const link::Session& s, const std::set<std::pair<int, int>>& bloc
   v.map = mapio::OccupancyMap(b.width(), b.height(), mapio::Occupancy::Unknown);
   s.map().forEach([&](Cell c, CellState st) {
     int col = 0, row = 0;
-    if (v.toMap(c, col, row)) v.map.set(col, row, st == CellState::Free ? mapio::Occupancy::Free : mapio::Occupancy::Occupied);
+    if (v.toMap(c, col, row))
+      v.map.set(col, row, st == CellState::Free ? mapio::Occupancy::Free : mapio::Occupancy::Occupied);
   });
   for (const auto& [x, y] : blocked) {
     int col = 0, row = 0;
-    if (v.toMap(Cell{static_cast<int16_t>(x), static_cast<int16_t>(y)}, col, row)) v.map.set(col, row, mapio::Occupancy::Occupied);
+    if (v.toMap(Cell{static_cast<int16_t>(x), static_cast<int16_t>(y)}, col, row))
+      v.map.set(col, row, mapio::Occupancy::Occupied);
   }
   if (s.pose()) {
     int col = 0, row = 0;
@@ -80,13 +82,16 @@ std::string Console::renderMap() const {
       static const sim::Heading kHeading[4] = {sim::Heading::N, sim::Heading::E, sim::Heading::S, sim::Heading::W};
       robot = report::RobotMark{v.robot->col, v.robot->row, kHeading[static_cast<int>(v.heading)]};
     }
-    return report::renderMapText(v.map.width(), v.map.height(), [&](int col, int row) {
-      switch (v.map.at(col, row)) {
-        case mapio::Occupancy::Free: return CellState::Free;
-        case mapio::Occupancy::Occupied: return CellState::Occupied;
-        default: return CellState::Unknown;
-      }
-    }, robot);
+    return report::renderMapText(
+        v.map.width(), v.map.height(),
+        [&](int col, int row) {
+          switch (v.map.at(col, row)) {
+            case mapio::Occupancy::Free: return CellState::Free;
+            case mapio::Occupancy::Occupied: return CellState::Occupied;
+            default: return CellState::Unknown;
+          }
+        },
+        robot);
   });
 }
 
@@ -130,7 +135,8 @@ std::vector<Cell> Console::planTo(Cell target, std::string& why) const {
 void Console::sendSegment() {
   const size_t from = goal_.sentUpTo;
   const size_t to = std::min(goal_.path.size() - 1, from + kSegmentCells - 1);
-  std::vector<Cell> segment(goal_.path.begin() + static_cast<long>(from), goal_.path.begin() + static_cast<long>(to) + 1);
+  std::vector<Cell> segment(goal_.path.begin() + static_cast<long>(from),
+                            goal_.path.begin() + static_cast<long>(to) + 1);
   goal_.pathId = nextPathId_++;
   goal_.sentUpTo = to;
   runner_.with([&](link::Session& s) { return s.followPath(segment, goal_.pathId); });
@@ -164,8 +170,9 @@ std::string Console::poll() {
   std::string out;
   out.swap(notes_);
   if (!runner_.with([](link::Session& s) { return s.takeUnconfirmed(); }).empty()) {
-    out += "the brick did not know this console any more (it restarted, or another console talked to it): the "
-           "command sent last may not have run; it is not sent again\n";
+    out +=
+        "the brick did not know this console any more (it restarted, or another console talked to it): the "
+        "command sent last may not have run; it is not sent again\n";
   }
   out += pollRooms();
   out += pollUpload();
@@ -220,16 +227,13 @@ std::string Console::executeCommand(const ConsoleCommand& c) {
   using K = ConsoleCommand::Kind;
   const bool connected = runner_.with([](link::Session& s) { return s.connected(); });
   auto needLink = [&](const char* what) {
-    if (!connected) throw ConsoleError(std::string(what) + ": the brick is not connected (" + runner_.state() + "); nothing sent");
+    if (!connected)
+      throw ConsoleError(std::string(what) + ": the brick is not connected (" + runner_.state() + "); nothing sent");
   };
   switch (c.kind) {
-    case K::Empty:
-      return "";
-    case K::Help:
-      return consoleHelp();
-    case K::Quit:
-      quit_ = true;
-      return "";
+    case K::Empty: return "";
+    case K::Help: return consoleHelp();
+    case K::Quit: quit_ = true; return "";
     case K::Explore:
       needLink("explore");
       goal_.active = false;
@@ -251,18 +255,22 @@ std::string Console::executeCommand(const ConsoleCommand& c) {
                            std::to_string(v.map.height()) + " cells); nothing sent");
       }
       const mapio::Occupancy o = v.map.at(c.col, c.row);
-      if (o == mapio::Occupancy::Occupied) throw ConsoleError("goto " + where + ": that cell is an obstacle; nothing sent");
-      if (o == mapio::Occupancy::Unknown) throw ConsoleError("goto " + where + ": that cell is unexplored; nothing sent");
+      if (o == mapio::Occupancy::Occupied)
+        throw ConsoleError("goto " + where + ": that cell is an obstacle; nothing sent");
+      if (o == mapio::Occupancy::Unknown)
+        throw ConsoleError("goto " + where + ": that cell is unexplored; nothing sent");
       return startGoal(v.toCell(c.col, c.row), "goto " + where);
     }
     case K::GotoNear: {
       needLink("goto near");
       const auto it = labels().find(c.name);
-      if (it == labels().end()) throw ConsoleError("goto near " + c.name + ": no such label (see label NAME C R); nothing sent");
+      if (it == labels().end())
+        throw ConsoleError("goto near " + c.name + ": no such label (see label NAME C R); nothing sent");
       // The nearest free cell next to the labelled one, by route length.
       const MapView v = runner_.with([&](link::Session& s) { return viewOf(s, blocked_); });
       int col = 0, row = 0;
-      if (!v.toMap(it->second, col, row) || !v.robot) throw ConsoleError("goto near " + c.name + ": the label is outside the map; nothing sent");
+      if (!v.toMap(it->second, col, row) || !v.robot)
+        throw ConsoleError("goto near " + c.name + ": the label is outside the map; nothing sent");
       auto planner = plan::makePlanner(plan::Algorithm::AStar);
       std::optional<Cell> best;
       double bestLength = 0;
@@ -284,15 +292,13 @@ std::string Console::executeCommand(const ConsoleCommand& c) {
         throw ConsoleError("label " + c.name + ": a name is 1..64 letters, digits, _ or -, starting with a letter");
       }
       const MapView v = runner_.with([&](link::Session& s) { return viewOf(s, blocked_); });
-      if (v.bounds.empty() || !v.map.inside(c.col, c.row)) throw ConsoleError("label " + c.name + ": the cell is outside the map");
+      if (v.bounds.empty() || !v.map.inside(c.col, c.row))
+        throw ConsoleError("label " + c.name + ": the cell is outside the map");
       labels()[c.name] = v.toCell(c.col, c.row);
       return "label " + c.name + " at (" + std::to_string(c.col) + "," + std::to_string(c.row) + ")\n";
     }
-    case K::Rooms:
-      return roomsText();
-    case K::Route:
-      needLink("route");
-      return startRoute(c);
+    case K::Rooms: return roomsText();
+    case K::Route: needLink("route"); return startRoute(c);
     case K::Save:
       if (c.name.size() > 5 && c.name.substr(c.name.size() - 5) == ".yaml") return saveRoom(c.name);
       return saveHouse(c.name);
@@ -336,7 +342,8 @@ std::string Console::executeCommand(const ConsoleCommand& c) {
         o << "pc: " << pc.bytesIn << " bytes in, " << pc.deltasApplied << " map deltas, " << pc.commandsAcknowledged
           << " commands acknowledged, " << pc.commandRetries << " resent, " << s.decoderCounters().skipped
           << " noise bytes skipped, " << pc.connects << " connects\n";
-        if (!goal_.outcome.empty() || goal_.active) o << "goal: " << (goal_.active ? "on the way" : goal_.outcome) << "\n";
+        if (!goal_.outcome.empty() || goal_.active)
+          o << "goal: " << (goal_.active ? "on the way" : goal_.outcome) << "\n";
         return o.str();
       });
     case K::Battery: {
@@ -346,33 +353,40 @@ std::string Console::executeCommand(const ConsoleCommand& c) {
         s.requestLegoBattery();
         return 0;
       });
-      const bool got = waitFor([&] {
-        return runner_.with([](link::Session& s) { return s.batteryMillivolts().has_value() && s.legoBatteryMillivolts().has_value(); });
-      }, 3.0);
+      const bool got = waitFor(
+          [&] {
+            return runner_.with([](link::Session& s) {
+              return s.batteryMillivolts().has_value() && s.legoBatteryMillivolts().has_value();
+            });
+          },
+          3.0);
       const auto mv = runner_.with([](link::Session& s) { return s.batteryMillivolts(); });
       const auto lego = runner_.with([](link::Session& s) { return s.legoBatteryMillivolts(); });
       if (!got && !mv && !lego) throw ConsoleError("battery: no answer from the brick within 3 s");
       std::ostringstream o;
-      o << "battery: " << (mv ? std::to_string(*mv) : std::string("?")) << " mV (LEGO GET_BATTERY_LEVEL: "
-        << (lego ? std::to_string(*lego) : std::string("no answer")) << ")\n";
+      o << "battery: " << (mv ? std::to_string(*mv) : std::string("?"))
+        << " mV (LEGO GET_BATTERY_LEVEL: " << (lego ? std::to_string(*lego) : std::string("no answer")) << ")\n";
       return o.str();
     }
-    case K::Map:
-      return renderMap();
+    case K::Map: return renderMap();
     case K::Wait: {
       bool ok = false;
       if (c.name == "explored") {
-        ok = waitFor([&] {
-          return runner_.with([](link::Session& s) {
-            return s.status() && s.status()->mode == protocol::BrickMode::Done;
-          });
-        }, c.seconds);
+        ok = waitFor(
+            [&] {
+              return runner_.with(
+                  [](link::Session& s) { return s.status() && s.status()->mode == protocol::BrickMode::Done; });
+            },
+            c.seconds);
       } else {
-        if (!goal_.active && !route_.active && goal_.outcome.empty()) throw ConsoleError("wait goal: no goal was given");
+        if (!goal_.active && !route_.active && goal_.outcome.empty())
+          throw ConsoleError("wait goal: no goal was given");
         ok = waitFor([&] { return !goal_.active && !route_.active; }, c.seconds);
         if (ok && goal_.outcome != "reached") throw ConsoleError("goal not reached: " + goal_.outcome);
       }
-      if (!ok) throw ConsoleError("wait " + c.name + ": still not there after " + std::to_string(static_cast<int>(c.seconds)) + " s");
+      if (!ok)
+        throw ConsoleError("wait " + c.name + ": still not there after " + std::to_string(static_cast<int>(c.seconds)) +
+                           " s");
       return c.name == "explored" ? "exploring done\n" : "done waiting: goal reached\n";
     }
   }

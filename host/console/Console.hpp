@@ -78,7 +78,7 @@ class Console {
     size_t sentUpTo = 0;     // index in path of the current segment's last cell
     int replans = 0;
     bool active = false;
-    std::string outcome;     // "reached", "unreachable: ..."
+    std::string outcome;  // "reached", "unreachable: ..."
   };
   // A route across rooms being driven: legs[leg] is being driven (or, while switching, is about
   // to start once the brick holds its room's map and the pose sent with it).
@@ -87,8 +87,8 @@ class Console {
     std::vector<network::HouseLeg> legs;
     size_t leg = 0;
     bool switching = false;
-    Pose arrival{};             // the robot's pose in the new room (sent with SetPose)
-    uint16_t poseSeq = 0;       // the SetPose command
+    Pose arrival{};        // the robot's pose in the new room (sent with SetPose)
+    uint16_t poseSeq = 0;  // the SetPose command
     std::chrono::steady_clock::time_point since{};
   };
   // Waiting for the brick to echo an uploaded room map (its new epoch with the cells).
@@ -96,7 +96,7 @@ class Console {
     bool pending = false;
     bool hadEpoch = false;
     uint16_t epochBefore = 0;
-    size_t cells = 0;           // known cells uploaded
+    size_t cells = 0;  // known cells uploaded
     std::chrono::steady_clock::time_point since{};
   };
   std::string startGoal(Cell target, const std::string& what);
@@ -126,8 +126,8 @@ class Console {
   network::HouseNetwork house_;            // every room; labels per room (room-frame cells)
   std::vector<bool> placed_;               // per room: whether its place in the house is known
   double resolutionM_ = 0.10;
-  int current_ = 0;                        // the room the brick is in (its map frame)
-  bool liveValid_ = true;                  // the live map is the current room's (not while an upload echoes)
+  int current_ = 0;        // the room the brick is in (its map frame)
+  bool liveValid_ = true;  // the live map is the current room's (not while an upload echoes)
   UploadEcho echo_;
   RouteDrive route_;
   uint16_t nextTransferId_ = 1;

@@ -97,7 +97,8 @@ ConsoleCommand parseConsoleCommand(const std::string& line) {
     expectArgs(w, 2, "export FILE.png");
     c.kind = ConsoleCommand::Kind::Export;
     c.name = w[1];
-    if (c.name.size() < 5 || c.name.substr(c.name.size() - 4) != ".png") throw ConsoleError("export needs a .png file name: export FILE.png");
+    if (c.name.size() < 5 || c.name.substr(c.name.size() - 4) != ".png")
+      throw ConsoleError("export needs a .png file name: export FILE.png");
   } else if (k == "status") {
     expectArgs(w, 1, "status");
     c.kind = ConsoleCommand::Kind::Status;
@@ -108,7 +109,8 @@ ConsoleCommand parseConsoleCommand(const std::string& line) {
     expectArgs(w, 1, "map");
     c.kind = ConsoleCommand::Kind::Map;
   } else if (k == "wait") {
-    if (w.size() < 2 || w.size() > 3 || (w[1] != "explored" && w[1] != "goal")) throw ConsoleError("usage: wait explored|goal [SECONDS]");
+    if (w.size() < 2 || w.size() > 3 || (w[1] != "explored" && w[1] != "goal"))
+      throw ConsoleError("usage: wait explored|goal [SECONDS]");
     c.kind = ConsoleCommand::Kind::Wait;
     c.name = w[1];
     c.seconds = 600;

@@ -6,13 +6,30 @@
 namespace nxtmap::console {
 
 struct ConsoleCommand {
-  enum class Kind { Explore, Stop, Goto, GotoNear, Label, Rooms, Route, Save, Export, Status, Battery, Map, Wait, Help, Quit, Empty };
+  enum class Kind {
+    Explore,
+    Stop,
+    Goto,
+    GotoNear,
+    Label,
+    Rooms,
+    Route,
+    Save,
+    Export,
+    Status,
+    Battery,
+    Map,
+    Wait,
+    Help,
+    Quit,
+    Empty
+  };
   Kind kind = Kind::Empty;
-  int col = 0, row = 0;   // Goto, Label, Route: map cell (column right, row down, as the map display shows)
-  std::string name;       // Label, GotoNear: label; Route: room (or label with near); Save: file or house
-                          // directory; Export: file; Wait: what
-  bool near = false;      // Route: `route near LABEL`
-  double seconds = 0;     // Wait: the longest wait
+  int col = 0, row = 0;  // Goto, Label, Route: map cell (column right, row down, as the map display shows)
+  std::string name;      // Label, GotoNear: label; Route: room (or label with near); Save: file or house
+                         // directory; Export: file; Wait: what
+  bool near = false;     // Route: `route near LABEL`
+  double seconds = 0;    // Wait: the longest wait
 };
 
 // A malformed line: the message names what was wrong and the right form.

@@ -9,7 +9,7 @@
 namespace nxtmap::console {
 namespace {
 
-constexpr double kEchoWaitS = 10.0;    // an upload's echo: after this, a partial echo will do
+constexpr double kEchoWaitS = 10.0;      // an upload's echo: after this, a partial echo will do
 constexpr double kSwitchGiveUpS = 30.0;  // a room switch the brick does not confirm is given up
 
 double secondsSince(std::chrono::steady_clock::time_point t) {
@@ -83,7 +83,8 @@ void Console::uploadRoom(int room) {
     if (m.width() <= 0 || m.height() <= 0) throw ConsoleError(node.name + " has no map to send to the brick");
     if (m.width() > capW || m.height() > capH || m.width() > 128 || m.height() > 128) {
       throw ConsoleError(node.name + "'s map is " + std::to_string(m.width()) + " x " + std::to_string(m.height()) +
-                         " cells, more than the brick holds (" + std::to_string(capW) + " x " + std::to_string(capH) + ")");
+                         " cells, more than the brick holds (" + std::to_string(capW) + " x " + std::to_string(capH) +
+                         ")");
     }
     echo_ = UploadEcho{};
     echo_.pending = true;
@@ -100,8 +101,8 @@ void Console::uploadRoom(int room) {
 std::string Console::enterHouseRoom() {
   const network::RoomNode& node = house_.rooms()[static_cast<size_t>(current_)];
   std::ostringstream o;
-  o << "house: " << house_.rooms().size() << " rooms, " << house_.gateways().size() << " gateways; the brick is in room "
-    << current_ << " (" << node.name << ")";
+  o << "house: " << house_.rooms().size() << " rooms, " << house_.gateways().size()
+    << " gateways; the brick is in room " << current_ << " (" << node.name << ")";
   if (node.map.width() == 0) {
     liveValid_ = true;
     o << ", which has no map yet\n";
@@ -197,11 +198,12 @@ std::string Console::roomsText() const {
     o << "room " << i << " " << r.name;
     if (static_cast<int>(i) == current_) o << " (current)";
     o << ": ";
-    if (r.map.width() == 0) o << "no map yet";
+    if (r.map.width() == 0)
+      o << "no map yet";
     else
-      o << r.map.width() << " x " << r.map.height() << " cells from " << cellText(Cell{static_cast<int16_t>(r.map.minX()),
-                                                                                  static_cast<int16_t>(r.map.minY())})
-        << ", " << r.map.count(CellState::Free) << " free, " << r.map.count(CellState::Occupied) << " occupied";
+      o << r.map.width() << " x " << r.map.height() << " cells from "
+        << cellText(Cell{static_cast<int16_t>(r.map.minX()), static_cast<int16_t>(r.map.minY())}) << ", "
+        << r.map.count(CellState::Free) << " free, " << r.map.count(CellState::Occupied) << " occupied";
     if (static_cast<int>(i) == current_ && pose) o << "; robot at " << cellText(pose->cell);
     if (!placed_[i]) o << "; not connected yet";
     bool first = true;
@@ -209,7 +211,8 @@ std::string Console::roomsText() const {
       const bool a = g.roomA == static_cast<int>(i), b = g.roomB == static_cast<int>(i);
       if (!a && !b) continue;
       const std::vector<Cell>& here = a ? g.cellsA : g.cellsB;
-      o << (first ? "; exits: " : ", ") << "to room " << (a ? g.roomB : g.roomA) << " at " << cellText(here[here.size() / 2]);
+      o << (first ? "; exits: " : ", ") << "to room " << (a ? g.roomB : g.roomA) << " at "
+        << cellText(here[here.size() / 2]);
       if (here.size() > 1) o << " (" << here.size() << " cells)";
       first = false;
     }
@@ -224,8 +227,8 @@ std::string Console::roomsText() const {
 }
 
 std::string Console::startRoute(const ConsoleCommand& c) {
-  const std::string what = c.near ? "route near " + c.name
-                                  : "route " + c.name + " " + std::to_string(c.col) + " " + std::to_string(c.row);
+  const std::string what =
+      c.near ? "route near " + c.name : "route " + c.name + " " + std::to_string(c.col) + " " + std::to_string(c.row);
   if (echo_.pending) waitFor([&] { return !echo_.pending; }, 5.0);
   if (!liveValid_) throw ConsoleError(what + ": the brick has not taken this room's map yet; nothing sent");
   const network::HouseNetwork h = snapshot();
@@ -248,8 +251,8 @@ std::string Console::startRoute(const ConsoleCommand& c) {
     }
     const network::RoomMap& m = h.rooms()[static_cast<size_t>(room)].map;
     if (c.col >= m.width() || c.row >= m.height()) {
-      throw ConsoleError(what + ": outside room " + std::to_string(room) + "'s map (" + std::to_string(m.width()) + " x " +
-                         std::to_string(m.height()) + " cells); nothing sent");
+      throw ConsoleError(what + ": outside room " + std::to_string(room) + "'s map (" + std::to_string(m.width()) +
+                         " x " + std::to_string(m.height()) + " cells); nothing sent");
     }
     const Cell cell = network::mapCellToRoom(m, c.col, c.row);
     if (m.at(cell) == CellState::Occupied) throw ConsoleError(what + ": that cell is an obstacle; nothing sent");
@@ -266,7 +269,8 @@ std::string Console::startRoute(const ConsoleCommand& c) {
     const network::RoomMap& m = h.rooms()[static_cast<size_t>(room)].map;
     const int cap = runner_.with([](link::Session& s) { return s.hello() ? (1 << s.hello()->gridWidthLog2) : 64; });
     if (m.width() > cap || m.height() > cap) {
-      throw ConsoleError(what + ": room " + std::to_string(room) + "'s map is larger than the brick holds; nothing sent");
+      throw ConsoleError(what + ": room " + std::to_string(room) +
+                         "'s map is larger than the brick holds; nothing sent");
     }
   }
   // Keep the current room's live map, so the rooms to come are uploaded as the brick left them.
@@ -359,7 +363,8 @@ std::string Console::saveHouse(const std::string& dir) {
   for (size_t i = 0; i < h.rooms().size(); ++i) {
     if (h.rooms()[i].map.width() == 0) h.rooms()[i].map = network::RoomMap(0, 0, 1, 1);  // nothing known yet
     if (!placed_[i]) {
-      notes += "note: room " + std::to_string(i) + " is not connected: its place in the house is unknown (written at the house origin)\n";
+      notes += "note: room " + std::to_string(i) +
+               " is not connected: its place in the house is unknown (written at the house origin)\n";
     }
   }
   std::string error;

@@ -9,141 +9,163 @@ constexpr uint64_t kBootCycles = kMckHz / 1000 * 50;  // RESET_INDICATION 50 ms 
 constexpr uint64_t kPollCycles = kMckHz / 1000;       // the PC side is polled every millisecond
 const std::vector<uint8_t> kBdAddr{0x00, 0x16, 0x53, 0x0E, 0x4D, 0x5A, 0x00};
 std::vector<uint8_t> name16(const std::string& s) {
-    std::vector<uint8_t> v(16, 0);
-    std::copy_n(s.begin(), std::min<size_t>(s.size(), 15), v.begin());
-    return v;
+  std::vector<uint8_t> v(16, 0);
+  std::copy_n(s.begin(), std::min<size_t>(s.size(), 15), v.begin());
+  return v;
 }
 }  // namespace
 
 void BlueCore::reply(uint8_t cmd, const std::vector<uint8_t>& payload) {
-    const auto len = static_cast<uint8_t>(payload.size() + 3);
-    unsigned sum = len + cmd;
-    for (uint8_t b : payload) sum += b;
-    const auto cs = static_cast<uint16_t>(0x10000u - (sum & 0xFFFF));  // RX checksum includes the length
-    toArm_.push_back(len);
-    toArm_.push_back(cmd);
-    toArm_.insert(toArm_.end(), payload.begin(), payload.end());
-    toArm_.push_back(static_cast<uint8_t>(cs >> 8));
-    toArm_.push_back(static_cast<uint8_t>(cs & 0xFF));
-    clock_.poke();
+  const auto len = static_cast<uint8_t>(payload.size() + 3);
+  unsigned sum = len + cmd;
+  for (uint8_t b : payload) sum += b;
+  const auto cs = static_cast<uint16_t>(0x10000u - (sum & 0xFFFF));  // RX checksum includes the length
+  toArm_.push_back(len);
+  toArm_.push_back(cmd);
+  toArm_.insert(toArm_.end(), payload.begin(), payload.end());
+  toArm_.push_back(static_cast<uint8_t>(cs >> 8));
+  toArm_.push_back(static_cast<uint8_t>(cs & 0xFF));
+  clock_.poke();
 }
 
 void BlueCore::fromArm(uint8_t b) {
-    if (!running_) return;
-    if (dataMode()) {  // stream data: to the PC while a stream is open, else lost with the link
-        if (link_ && connected_ && streamOpen_) {
-            link_->send(&b, 1);
-            ++toPc_;
-        }
-        return;
+  if (!running_) return;
+  if (dataMode()) {  // stream data: to the PC while a stream is open, else lost with the link
+    if (link_ && connected_ && streamOpen_) {
+      link_->send(&b, 1);
+      ++toPc_;
     }
-    frame_.push_back(b);
-    if (frame_.size() < 2 || frame_.size() < static_cast<size_t>(frame_[0]) + 1) return;
-    std::vector<uint8_t> f(frame_.begin() + 1, frame_.end());  // cmd, payload, csum
-    frame_.clear();
-    if (f.size() < 3) { ++bad_; return; }
-    unsigned sum = 0;
-    for (size_t i = 0; i + 2 < f.size(); ++i) sum += f[i];
-    const unsigned cs = (static_cast<unsigned>(f[f.size() - 2]) << 8) | f.back();
-    if (((sum + cs) & 0xFFFF) != 0) { ++bad_; return; }  // TX checksum: cmd + payload only
-    f.resize(f.size() - 2);
-    ++commands_;
-    command(f);
+    return;
+  }
+  frame_.push_back(b);
+  if (frame_.size() < 2 || frame_.size() < static_cast<size_t>(frame_[0]) + 1) return;
+  std::vector<uint8_t> f(frame_.begin() + 1, frame_.end());  // cmd, payload, csum
+  frame_.clear();
+  if (f.size() < 3) {
+    ++bad_;
+    return;
+  }
+  unsigned sum = 0;
+  for (size_t i = 0; i + 2 < f.size(); ++i) sum += f[i];
+  const unsigned cs = (static_cast<unsigned>(f[f.size() - 2]) << 8) | f.back();
+  if (((sum + cs) & 0xFFFF) != 0) {
+    ++bad_;
+    return;
+  }  // TX checksum: cmd + payload only
+  f.resize(f.size() - 2);
+  ++commands_;
+  command(f);
 }
 
 void BlueCore::command(const std::vector<uint8_t>& f) {
-    const uint8_t cmd = f[0];
-    switch (cmd) {
-        case 0x03: portOpen_ = true; reply(0x1B, {1, 1}); break;                // OPEN_PORT -> PORT_OPEN_RESULT
-        case 0x1D: portOpen_ = false; reply(0x1E, {1}); break;                  // CLOSE_PORT
-        case 0x09:                                                              // ACCEPT_CONNECTION
-            if (f.size() > 1 && f[1] == 1 && requested_) { connected_ = true; reply(0x13, {1, 1}); }
-            else { requested_ = false; reply(0x13, {0, 0}); }
-            break;
-        case 0x0B: if (connected_) streamOpen_ = true; break;                   // OPEN_STREAM: CMD line high
-        case 0x08: connected_ = requested_ = streamOpen_ = false; reply(0x1A, {1, 1}); break;  // CLOSE_CONNECTION
-        case 0x0C: reply(0x0D, {0, 0}); break;                                  // START_HEART -> HEARTBEAT
-        case 0x2F: reply(0x30, {1, 0x1F}); break;                               // GET_VERSION
-        case 0x27: reply(0x28, kBdAddr); break;                                 // GET_LOCAL_ADDR
-        case 0x29: reply(0x2C, name16("NXT")); break;                           // GET_FRIENDLY_NAME
-        case 0x21: reply(0x22, {1}); break;                                     // SET_FRIENDLY_NAME
-        case 0x1C: reply(0x20, {1}); break;                                     // SET_DISCOVERABLE
-        case 0x2A: reply(0x2D, {1}); break;                                     // GET_DISCOVERABLE
-        case 0x2B: reply(0x2E, {static_cast<uint8_t>(portOpen_ ? 1 : 0)}); break;  // GET_PORT_OPEN
-        case 0x33: reply(0x31, {0, 0}); break;                                  // GET_BRICK_STATUSBYTE
-        case 0x34: reply(0x32, {1}); break;                                     // SET_BRICK_STATUSBYTE
-        case 0x07: reply(0x19, {}); break;                                      // DUMP_LIST -> LIST_DUMP_STOPPED
-        case 0x0A: reply(0x1F, {}); break;                                      // PIN_CODE -> PIN_CODE_ACK
-        case 0x25: reply(0x26, {}); break;                                      // SET_FACTORY_SETTINGS
-        case 0x23: reply(0x24, {0xFF}); break;                                  // GET_LINK_QUALITY
-        default: unknown_.push_back(cmd); break;
-    }
+  const uint8_t cmd = f[0];
+  switch (cmd) {
+    case 0x03:
+      portOpen_ = true;
+      reply(0x1B, {1, 1});
+      break;  // OPEN_PORT -> PORT_OPEN_RESULT
+    case 0x1D:
+      portOpen_ = false;
+      reply(0x1E, {1});
+      break;    // CLOSE_PORT
+    case 0x09:  // ACCEPT_CONNECTION
+      if (f.size() > 1 && f[1] == 1 && requested_) {
+        connected_ = true;
+        reply(0x13, {1, 1});
+      } else {
+        requested_ = false;
+        reply(0x13, {0, 0});
+      }
+      break;
+    case 0x0B:
+      if (connected_) streamOpen_ = true;
+      break;  // OPEN_STREAM: CMD line high
+    case 0x08:
+      connected_ = requested_ = streamOpen_ = false;
+      reply(0x1A, {1, 1});
+      break;                                                                   // CLOSE_CONNECTION
+    case 0x0C: reply(0x0D, {0, 0}); break;                                     // START_HEART -> HEARTBEAT
+    case 0x2F: reply(0x30, {1, 0x1F}); break;                                  // GET_VERSION
+    case 0x27: reply(0x28, kBdAddr); break;                                    // GET_LOCAL_ADDR
+    case 0x29: reply(0x2C, name16("NXT")); break;                              // GET_FRIENDLY_NAME
+    case 0x21: reply(0x22, {1}); break;                                        // SET_FRIENDLY_NAME
+    case 0x1C: reply(0x20, {1}); break;                                        // SET_DISCOVERABLE
+    case 0x2A: reply(0x2D, {1}); break;                                        // GET_DISCOVERABLE
+    case 0x2B: reply(0x2E, {static_cast<uint8_t>(portOpen_ ? 1 : 0)}); break;  // GET_PORT_OPEN
+    case 0x33: reply(0x31, {0, 0}); break;                                     // GET_BRICK_STATUSBYTE
+    case 0x34: reply(0x32, {1}); break;                                        // SET_BRICK_STATUSBYTE
+    case 0x07: reply(0x19, {}); break;                                         // DUMP_LIST -> LIST_DUMP_STOPPED
+    case 0x0A: reply(0x1F, {}); break;                                         // PIN_CODE -> PIN_CODE_ACK
+    case 0x25: reply(0x26, {}); break;                                         // SET_FACTORY_SETTINGS
+    case 0x23: reply(0x24, {0xFF}); break;                                     // GET_LINK_QUALITY
+    default: unknown_.push_back(cmd); break;
+  }
 }
 
 bool BlueCore::hasByteForArm() const {
-    if (!running_) return false;
-    return dataMode() ? streamOpen_ && !pcIn_.empty() : !toArm_.empty();
+  if (!running_) return false;
+  return dataMode() ? streamOpen_ && !pcIn_.empty() : !toArm_.empty();
 }
 
 uint8_t BlueCore::takeByteForArm() {
-    const bool stream = dataMode();
-    if (stream) ++fromPc_;
-    std::deque<uint8_t>& q = stream ? pcIn_ : toArm_;
-    const uint8_t b = q.front();
-    q.pop_front();
-    return b;
+  const bool stream = dataMode();
+  if (stream) ++fromPc_;
+  std::deque<uint8_t>& q = stream ? pcIn_ : toArm_;
+  const uint8_t b = q.front();
+  q.pop_front();
+  return b;
 }
 
 uint64_t BlueCore::nextEventAt() const {
-    uint64_t t = kNever;
-    if (bootAt_ != kNever) t = bootAt_;
-    if (link_ && running_) t = std::min(t, nextPoll_);
-    return t;
+  uint64_t t = kNever;
+  if (bootAt_ != kNever) t = bootAt_;
+  if (link_ && running_) t = std::min(t, nextPoll_);
+  return t;
 }
 
 void BlueCore::pollLink() {
-    if (!link_) return;
-    const bool pc = link_->connected();
-    if (pc && portOpen_ && !announced_) {  // once per PC connection, as soon as the port is open
-        announced_ = true;
-        requested_ = true;
-        std::vector<uint8_t> p = kBdAddr;
-        reply(0x16, p);  // REQUEST_CONNECTION
-    }
-    if (!pc && pcWasConnected_) {  // the PC hung up: its undelivered bytes go with the link
-        connected_ = requested_ = streamOpen_ = announced_ = false;
-        pcIn_.clear();
-        reply(0x1A, {1, 1});  // CLOSE_CONNECTION_RESULT, delivered once the ARM is in command mode
-    }
-    pcWasConnected_ = pc;
-    // Until the brick accepts, and while the input is full, the PC's bytes wait on its side (its
-    // transport's window closes: back-pressure, as the radio's flow control would).
-    const size_t before = pcIn_.size();
-    if (connected_ && before < kPcInputBytes) link_->receive(pcIn_, kPcInputBytes - before);
-    if (pcIn_.size() != before) clock_.poke();
+  if (!link_) return;
+  const bool pc = link_->connected();
+  if (pc && portOpen_ && !announced_) {  // once per PC connection, as soon as the port is open
+    announced_ = true;
+    requested_ = true;
+    std::vector<uint8_t> p = kBdAddr;
+    reply(0x16, p);  // REQUEST_CONNECTION
+  }
+  if (!pc && pcWasConnected_) {  // the PC hung up: its undelivered bytes go with the link
+    connected_ = requested_ = streamOpen_ = announced_ = false;
+    pcIn_.clear();
+    reply(0x1A, {1, 1});  // CLOSE_CONNECTION_RESULT, delivered once the ARM is in command mode
+  }
+  pcWasConnected_ = pc;
+  // Until the brick accepts, and while the input is full, the PC's bytes wait on its side (its
+  // transport's window closes: back-pressure, as the radio's flow control would).
+  const size_t before = pcIn_.size();
+  if (connected_ && before < kPcInputBytes) link_->receive(pcIn_, kPcInputBytes - before);
+  if (pcIn_.size() != before) clock_.poke();
 }
 
 void BlueCore::advanceTo(uint64_t now) {
-    const bool reset = pio_.level(kResetPin) && (pio_.driven() >> kResetPin & 1u);
-    if (!reset && running_) {  // held in reset
-        running_ = false;
-        bootAt_ = kNever;
-        toArm_.clear();
-        frame_.clear();
-        pcIn_.clear();
-        portOpen_ = requested_ = connected_ = streamOpen_ = false;
-    }
-    if (reset && !running_ && bootAt_ == kNever) bootAt_ = now + kBootCycles;
-    if (bootAt_ != kNever && now >= bootAt_) {
-        bootAt_ = kNever;
-        running_ = true;
-        nextPoll_ = now;
-        reply(0x14, {});  // RESET_INDICATION
-    }
-    if (running_ && link_ && now >= nextPoll_) {
-        pollLink();
-        nextPoll_ = now + kPollCycles;
-    }
+  const bool reset = pio_.level(kResetPin) && (pio_.driven() >> kResetPin & 1u);
+  if (!reset && running_) {  // held in reset
+    running_ = false;
+    bootAt_ = kNever;
+    toArm_.clear();
+    frame_.clear();
+    pcIn_.clear();
+    portOpen_ = requested_ = connected_ = streamOpen_ = false;
+  }
+  if (reset && !running_ && bootAt_ == kNever) bootAt_ = now + kBootCycles;
+  if (bootAt_ != kNever && now >= bootAt_) {
+    bootAt_ = kNever;
+    running_ = true;
+    nextPoll_ = now;
+    reply(0x14, {});  // RESET_INDICATION
+  }
+  if (running_ && link_ && now >= nextPoll_) {
+    pollLink();
+    nextPoll_ = now + kPollCycles;
+  }
 }
 
 }  // namespace nxtmap::emu

@@ -25,54 +25,54 @@
 namespace nxtmap::emu {
 
 class BlueCore : public SerialPeer, public IoDevice {
-public:
-    static constexpr int kResetPin = 11, kArmCmdPin = 27;
-    BlueCore(Clock& clock, Pioa& pio, LinkEndpoint* link) : clock_(clock), pio_(pio), link_(link) {}
+ public:
+  static constexpr int kResetPin = 11, kArmCmdPin = 27;
+  BlueCore(Clock& clock, Pioa& pio, LinkEndpoint* link) : clock_(clock), pio_(pio), link_(link) {}
 
-    // SerialPeer
-    void fromArm(uint8_t byte) override;
-    bool hasByteForArm() const override;
-    uint8_t takeByteForArm() override;
+  // SerialPeer
+  void fromArm(uint8_t byte) override;
+  bool hasByteForArm() const override;
+  uint8_t takeByteForArm() override;
 
-    // Time source (not on the bus): polls the PC side every millisecond, boot delay after reset.
-    const char* name() const override { return "BC4"; }
-    bool read(uint32_t, uint32_t&) override { return false; }
-    bool write(uint32_t, uint32_t) override { return false; }
-    uint64_t nextEventAt() const override;
-    void advanceTo(uint64_t now) override;
+  // Time source (not on the bus): polls the PC side every millisecond, boot delay after reset.
+  const char* name() const override { return "BC4"; }
+  bool read(uint32_t, uint32_t&) override { return false; }
+  bool write(uint32_t, uint32_t) override { return false; }
+  uint64_t nextEventAt() const override;
+  void advanceTo(uint64_t now) override;
 
-    bool cmdSignal() const { return streamOpen_; }  // BC4 CMD line (ADC 6): high = stream open
-    bool streaming() const { return streamOpen_ && pio_.level(kArmCmdPin); }
-    uint64_t commandsSeen() const { return commands_; }
-    uint64_t badFrames() const { return bad_; }
-    const std::vector<uint8_t>& unknownCommands() const { return unknown_; }
-    bool portOpen() const { return portOpen_; }
-    bool connected() const { return connected_; }
-    uint64_t bytesToPc() const { return toPc_; }
-    uint64_t bytesFromPc() const { return fromPc_; }
-    static constexpr size_t kPcInputBytes = 4096;             // most bytes from the PC held here
-    size_t pcBuffered() const { return pcIn_.size(); }        // 0..kPcInputBytes
+  bool cmdSignal() const { return streamOpen_; }  // BC4 CMD line (ADC 6): high = stream open
+  bool streaming() const { return streamOpen_ && pio_.level(kArmCmdPin); }
+  uint64_t commandsSeen() const { return commands_; }
+  uint64_t badFrames() const { return bad_; }
+  const std::vector<uint8_t>& unknownCommands() const { return unknown_; }
+  bool portOpen() const { return portOpen_; }
+  bool connected() const { return connected_; }
+  uint64_t bytesToPc() const { return toPc_; }
+  uint64_t bytesFromPc() const { return fromPc_; }
+  static constexpr size_t kPcInputBytes = 4096;       // most bytes from the PC held here
+  size_t pcBuffered() const { return pcIn_.size(); }  // 0..kPcInputBytes
 
-private:
-    void command(const std::vector<uint8_t>& f);  // [cmd][payload...] of a checked frame
-    void reply(uint8_t cmd, const std::vector<uint8_t>& payload);
-    void pollLink();
-    bool dataMode() const { return pio_.level(kArmCmdPin); }  // ARM7_CMD high
+ private:
+  void command(const std::vector<uint8_t>& f);  // [cmd][payload...] of a checked frame
+  void reply(uint8_t cmd, const std::vector<uint8_t>& payload);
+  void pollLink();
+  bool dataMode() const { return pio_.level(kArmCmdPin); }  // ARM7_CMD high
 
-    Clock& clock_;
-    Pioa& pio_;
-    LinkEndpoint* link_;
-    bool running_ = false;          // RESET released
-    uint64_t bootAt_ = kNever;     // RESET_INDICATION due
-    std::vector<uint8_t> frame_;   // command-mode bytes from the ARM being assembled
-    std::deque<uint8_t> toArm_;
-    std::deque<uint8_t> pcIn_;     // stream bytes waiting for the ARM, at most kPcInputBytes
-    bool portOpen_ = false, requested_ = false, connected_ = false, streamOpen_ = false;
-    bool pcWasConnected_ = false;
-    bool announced_ = false;       // REQUEST_CONNECTION sent for the current PC connection
-    uint64_t nextPoll_ = 0;
-    uint64_t commands_ = 0, bad_ = 0, toPc_ = 0, fromPc_ = 0;
-    std::vector<uint8_t> unknown_;
+  Clock& clock_;
+  Pioa& pio_;
+  LinkEndpoint* link_;
+  bool running_ = false;        // RESET released
+  uint64_t bootAt_ = kNever;    // RESET_INDICATION due
+  std::vector<uint8_t> frame_;  // command-mode bytes from the ARM being assembled
+  std::deque<uint8_t> toArm_;
+  std::deque<uint8_t> pcIn_;  // stream bytes waiting for the ARM, at most kPcInputBytes
+  bool portOpen_ = false, requested_ = false, connected_ = false, streamOpen_ = false;
+  bool pcWasConnected_ = false;
+  bool announced_ = false;  // REQUEST_CONNECTION sent for the current PC connection
+  uint64_t nextPoll_ = 0;
+  uint64_t commands_ = 0, bad_ = 0, toPc_ = 0, fromPc_ = 0;
+  std::vector<uint8_t> unknown_;
 };
 
 }  // namespace nxtmap::emu

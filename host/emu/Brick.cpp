@@ -11,11 +11,11 @@ constexpr uint64_t kCrosstalkWindow = kMckHz / 1000 * 30;  // pings within 30 ms
 
 // The robot set down in the site as the configuration says.
 sim::SimRobot robotFor(const sim::Site& site, const BrickConfig& c) {
-    const sim::RobotPlacement placed = sim::placeRobot(
-        site, sim::PlacementRequest{c.robot, c.startPose, c.startCol, c.startRow, c.heading, c.startJitterDeg, c.seed,
-                                    c.mountOffsetCm});
-    return sim::SimRobot(placed.scene, placed.robot, placed.grid.frame, placed.start.cm, placed.start.headingDeg,
-                         c.noise, c.seed, 255.0);
+  const sim::RobotPlacement placed =
+      sim::placeRobot(site, sim::PlacementRequest{c.robot, c.startPose, c.startCol, c.startRow, c.heading,
+                                                  c.startJitterDeg, c.seed, c.mountOffsetCm});
+  return sim::SimRobot(placed.scene, placed.robot, placed.grid.frame, placed.start.cm, placed.start.headingDeg, c.noise,
+                       c.seed, 255.0);
 }
 }  // namespace
 
@@ -35,51 +35,51 @@ Brick::Brick(const ElfImage& image, const sim::Site& site, const BrickConfig& c)
       tc_(machine_.clock()),
       buttons_(avr_, c.pressEnterAtS < 0 ? kNever : static_cast<uint64_t>(c.pressEnterAtS * kMckHz),
                cyclesFromMs(300)) {
-    machine_.attach(Pioa::kBase, Pioa::kSize, pioa_);
-    machine_.attach(Twi::kBase, Twi::kSize, twi_);
-    machine_.attach(Usart::kBase1, Usart::kSize, usart_);
-    machine_.attach(Spi::kBase, Spi::kSize, spi_);
-    machine_.attach(Adc::kBase, Adc::kSize, adc_);
-    machine_.attach(TimerCounter::kBase, TimerCounter::kSize, tc_);
-    machine_.addTimeSource(drive_);
-    machine_.addTimeSource(bc4_);
-    machine_.addTimeSource(buttons_);
-    Aic& aic = machine_.aic();
-    aic.connect(Aic::kIdPioa, [this] { return pioa_.irqLine(); });
-    aic.connect(Aic::kIdTwi, [this] { return twi_.irqLine(); });
-    aic.connect(Aic::kIdUs1, [this] { return usart_.irqLine(); });
-    aic.connect(Aic::kIdSpi, [this] { return spi_.irqLine(); });
-    aic.connect(Aic::kIdAdc, [this] { return adc_.irqLine(); });
-    for (int ch = 0; ch < 3; ++ch) aic.connect(12 + ch, [this, ch] { return tc_.irqLine(ch); });
-    for (int p = 0; p < 4; ++p)
-        sensors_[static_cast<size_t>(p)] = std::make_unique<UltrasonicSensor>(
-            machine_.clock(), pioa_, avr_, robot_, p, c.portFacing[static_cast<size_t>(p)],
-            [this](int port) { return othersFiring(port); });
-    if (c.testPort) {
-        testPort_ = std::make_unique<TestPort>();
-        machine_.attach(TestPort::kBase, TestPort::kSize, *testPort_);
-    }
-    if (c.link) {
-        LinkEndpoint* link = c.link;
-        machine_.setExternalWait([link] { return link->waitForActivity(200); });
-    }
+  machine_.attach(Pioa::kBase, Pioa::kSize, pioa_);
+  machine_.attach(Twi::kBase, Twi::kSize, twi_);
+  machine_.attach(Usart::kBase1, Usart::kSize, usart_);
+  machine_.attach(Spi::kBase, Spi::kSize, spi_);
+  machine_.attach(Adc::kBase, Adc::kSize, adc_);
+  machine_.attach(TimerCounter::kBase, TimerCounter::kSize, tc_);
+  machine_.addTimeSource(drive_);
+  machine_.addTimeSource(bc4_);
+  machine_.addTimeSource(buttons_);
+  Aic& aic = machine_.aic();
+  aic.connect(Aic::kIdPioa, [this] { return pioa_.irqLine(); });
+  aic.connect(Aic::kIdTwi, [this] { return twi_.irqLine(); });
+  aic.connect(Aic::kIdUs1, [this] { return usart_.irqLine(); });
+  aic.connect(Aic::kIdSpi, [this] { return spi_.irqLine(); });
+  aic.connect(Aic::kIdAdc, [this] { return adc_.irqLine(); });
+  for (int ch = 0; ch < 3; ++ch) aic.connect(12 + ch, [this, ch] { return tc_.irqLine(ch); });
+  for (int p = 0; p < 4; ++p)
+    sensors_[static_cast<size_t>(p)] = std::make_unique<UltrasonicSensor>(
+        machine_.clock(), pioa_, avr_, robot_, p, c.portFacing[static_cast<size_t>(p)],
+        [this](int port) { return othersFiring(port); });
+  if (c.testPort) {
+    testPort_ = std::make_unique<TestPort>();
+    machine_.attach(TestPort::kBase, TestPort::kSize, *testPort_);
+  }
+  if (c.link) {
+    LinkEndpoint* link = c.link;
+    machine_.setExternalWait([link] { return link->waitForActivity(200); });
+  }
 }
 
 bool Brick::othersFiring(int port) const {
-    const uint64_t now = machine_.stats().cycles;
-    for (int p = 0; p < 4; ++p) {
-        if (p == port || !avr_.sensorPowered(p)) continue;
-        const UltrasonicSensor& s = *sensors_[static_cast<size_t>(p)];
-        if (s.mode() == 0x02) return true;
-        if (s.pings() > 0 && now - s.lastPingAt() < kCrosstalkWindow) return true;
-    }
-    return false;
+  const uint64_t now = machine_.stats().cycles;
+  for (int p = 0; p < 4; ++p) {
+    if (p == port || !avr_.sensorPowered(p)) continue;
+    const UltrasonicSensor& s = *sensors_[static_cast<size_t>(p)];
+    if (s.mode() == 0x02) return true;
+    if (s.pings() > 0 && now - s.lastPingAt() < kCrosstalkWindow) return true;
+  }
+  return false;
 }
 
 bool Brick::runFor(double seconds, const std::function<bool()>& stop) {
-    const auto until = static_cast<uint64_t>(std::llround(seconds * static_cast<double>(kMckHz)));
-    TestPort* tp = testPort_.get();
-    return machine_.run(until, [&] { return (tp && tp->exitCode) || (stop && stop()); });
+  const auto until = static_cast<uint64_t>(std::llround(seconds * static_cast<double>(kMckHz)));
+  TestPort* tp = testPort_.get();
+  return machine_.run(until, [&] { return (tp && tp->exitCode) || (stop && stop()); });
 }
 
 }  // namespace nxtmap::emu

@@ -30,66 +30,66 @@
 namespace nxtmap::emu {
 
 struct BrickConfig {
-    int startCol = 0, startRow = 0;         // start cell of the site's raster (when startPose is empty)
-    sim::Heading heading = sim::Heading::N;
-    std::optional<sim::StartPose> startPose;  // a start in the plane instead
-    double startJitterDeg = 0.0;            // > 0: set down off the cell centre and up to this far off square
-    // The robot as built (cells, body, sensor mounts); empty: a point robot of the raster's cells with its
-    // sensors mountOffsetCm out. It must match the firmware's own geometry (nxtmap.elf: brick).
-    std::optional<sim::RobotDescription> robot;
-    sim::NoiseProfile noise;
-    uint64_t seed = 1;
-    DriveGeometry drive;
-    double mountOffsetCm = 0.0;     // sensors ahead of the robot's centre, cm (as the firmware's mountCm)
-    std::array<int, 4> portFacing{0, 1, 2, 3};  // sensor port 1..4 -> 0 front, 1 right, 2 back, 3 left
-    MachineOptions machine;
-    double pressEnterAtS = -1.0;    // press Enter at this emulated second for 0.3 s (< 0: never)
-    bool testPort = false;          // tests only: the TestPort device at 0xFFFE8000
-    LinkEndpoint* link = nullptr;   // PC side of the Bluetooth link (may be null)
+  int startCol = 0, startRow = 0;  // start cell of the site's raster (when startPose is empty)
+  sim::Heading heading = sim::Heading::N;
+  std::optional<sim::StartPose> startPose;  // a start in the plane instead
+  double startJitterDeg = 0.0;              // > 0: set down off the cell centre and up to this far off square
+  // The robot as built (cells, body, sensor mounts); empty: a point robot of the raster's cells with its
+  // sensors mountOffsetCm out. It must match the firmware's own geometry (nxtmap.elf: brick).
+  std::optional<sim::RobotDescription> robot;
+  sim::NoiseProfile noise;
+  uint64_t seed = 1;
+  DriveGeometry drive;
+  double mountOffsetCm = 0.0;                 // sensors ahead of the robot's centre, cm (as the firmware's mountCm)
+  std::array<int, 4> portFacing{0, 1, 2, 3};  // sensor port 1..4 -> 0 front, 1 right, 2 back, 3 left
+  MachineOptions machine;
+  double pressEnterAtS = -1.0;   // press Enter at this emulated second for 0.3 s (< 0: never)
+  bool testPort = false;         // tests only: the TestPort device at 0xFFFE8000
+  LinkEndpoint* link = nullptr;  // PC side of the Bluetooth link (may be null)
 };
 
 class Brick {
-public:
-    // The site must outlive the brick (its scene is shared).
-    Brick(const ElfImage& image, const sim::Site& site, const BrickConfig& config);
-    Brick(const ElfImage& image, const sim::World& world, const BrickConfig& config);
+ public:
+  // The site must outlive the brick (its scene is shared).
+  Brick(const ElfImage& image, const sim::Site& site, const BrickConfig& config);
+  Brick(const ElfImage& image, const sim::World& world, const BrickConfig& config);
 
-    Machine& machine() { return machine_; }
-    const Machine& machine() const { return machine_; }
-    sim::SimRobot& robot() { return robot_; }
-    const AvrModel& avr() const { return avr_; }
-    AvrModel& avr() { return avr_; }
-    const Lcd& lcd() const { return lcd_; }
-    const DriveModel& drive() const { return drive_; }
-    const BlueCore& blueCore() const { return bc4_; }
-    const Twi& twi() const { return twi_; }
-    const Usart& usart() const { return usart_; }
-    const Pioa& pioa() const { return pioa_; }
-    const UltrasonicSensor& sensor(int port) const { return *sensors_[static_cast<size_t>(port)]; }
-    TestPort* testPort() { return testPort_.get(); }
+  Machine& machine() { return machine_; }
+  const Machine& machine() const { return machine_; }
+  sim::SimRobot& robot() { return robot_; }
+  const AvrModel& avr() const { return avr_; }
+  AvrModel& avr() { return avr_; }
+  const Lcd& lcd() const { return lcd_; }
+  const DriveModel& drive() const { return drive_; }
+  const BlueCore& blueCore() const { return bc4_; }
+  const Twi& twi() const { return twi_; }
+  const Usart& usart() const { return usart_; }
+  const Pioa& pioa() const { return pioa_; }
+  const UltrasonicSensor& sensor(int port) const { return *sensors_[static_cast<size_t>(port)]; }
+  TestPort* testPort() { return testPort_.get(); }
 
-    // Runs until the emulated time reaches `seconds` (from reset), a fault, or stop() says so.
-    bool runFor(double seconds, const std::function<bool()>& stop = {});
-    double seconds() const { return secondsFromCycles(machine_.stats().cycles); }
+  // Runs until the emulated time reaches `seconds` (from reset), a fault, or stop() says so.
+  bool runFor(double seconds, const std::function<bool()>& stop = {});
+  double seconds() const { return secondsFromCycles(machine_.stats().cycles); }
 
-private:
-    bool othersFiring(int port) const;
+ private:
+  bool othersFiring(int port) const;
 
-    sim::SimRobot robot_;
-    Machine machine_;
-    AvrModel avr_;
-    Pioa pioa_;
-    Twi twi_;
-    DriveModel drive_;
-    BlueCore bc4_;
-    Usart usart_;
-    Lcd lcd_;
-    Spi spi_;
-    Adc adc_;
-    TimerCounter tc_;
-    ButtonScript buttons_;
-    std::array<std::unique_ptr<UltrasonicSensor>, 4> sensors_;
-    std::unique_ptr<TestPort> testPort_;
+  sim::SimRobot robot_;
+  Machine machine_;
+  AvrModel avr_;
+  Pioa pioa_;
+  Twi twi_;
+  DriveModel drive_;
+  BlueCore bc4_;
+  Usart usart_;
+  Lcd lcd_;
+  Spi spi_;
+  Adc adc_;
+  TimerCounter tc_;
+  ButtonScript buttons_;
+  std::array<std::unique_ptr<UltrasonicSensor>, 4> sensors_;
+  std::unique_ptr<TestPort> testPort_;
 };
 
 }  // namespace nxtmap::emu

@@ -16,10 +16,10 @@ constexpr uint64_t cyclesFromMs(uint64_t ms) { return ms * kMckHz / 1000u; }
 inline double secondsFromCycles(uint64_t cycles) { return static_cast<double>(cycles) / static_cast<double>(kMckHz); }
 
 struct Clock {
-    uint64_t now = 0;       // cycles since reset
-    uint64_t stopAt = 0;    // the machine stops at the first block boundary with now >= stopAt
-    // A model changed interrupt or timing state: re-plan at the next block boundary.
-    void poke() { stopAt = 0; }
+  uint64_t now = 0;     // cycles since reset
+  uint64_t stopAt = 0;  // the machine stops at the first block boundary with now >= stopAt
+  // A model changed interrupt or timing state: re-plan at the next block boundary.
+  void poke() { stopAt = 0; }
 };
 
 }  // namespace nxtmap::emu

@@ -15,7 +15,7 @@ namespace nxtmap::emu {
 constexpr uint32_t kFlashBase = 0x00100000;
 constexpr uint32_t kFlashSize = 0x00040000;  // 256 KiB
 constexpr uint32_t kRamBase = 0x00200000;
-constexpr uint32_t kRamSize = 0x00010000;    // 64 KiB
+constexpr uint32_t kRamSize = 0x00010000;  // 64 KiB
 // Largest firmware file read, bytes, checked before reading (only regular files are read): 32 times the
 // flash, room for the symbols and debug information of an image that fits it (ours, built with -g: 0.6 MiB).
 constexpr size_t kMaxElfBytes = size_t{8} << 20;
@@ -23,36 +23,36 @@ constexpr size_t kMaxElfBytes = size_t{8} << 20;
 struct ElfLoad;
 
 class ElfImage {
-public:
-    // A regular file of at most kMaxElfBytes; otherwise, or when it is no ARM ELF that fits the chip, an error.
-    static ElfLoad load(const std::string& path);
+ public:
+  // A regular file of at most kMaxElfBytes; otherwise, or when it is no ARM ELF that fits the chip, an error.
+  static ElfLoad load(const std::string& path);
 
-    const std::vector<uint8_t>& flash() const { return flash_; }  // kFlashSize bytes, 0xFF where unused
-    const std::vector<uint8_t>& ram() const { return ram_; }      // kRamSize bytes loaded into RAM (RAM-run images)
-    // The [offset, offset + size) ranges of RAM the ELF loads (offsets from kRamBase).
-    const std::vector<std::pair<uint32_t, uint32_t>>& ramSegments() const { return ramSegments_; }
-    bool hasFlashCode() const { return flashUsed_ > 0; }
-    uint32_t flashUsed() const { return flashUsed_; }            // bytes from kFlashBase to the end of the last segment
-    uint32_t entry() const { return entry_; }
-    std::optional<uint32_t> symbol(const std::string& name) const;
-    // The first of the names that exists.
-    std::optional<uint32_t> firstSymbol(std::initializer_list<const char*> names) const;
-    const std::string& path() const { return path_; }
+  const std::vector<uint8_t>& flash() const { return flash_; }  // kFlashSize bytes, 0xFF where unused
+  const std::vector<uint8_t>& ram() const { return ram_; }      // kRamSize bytes loaded into RAM (RAM-run images)
+  // The [offset, offset + size) ranges of RAM the ELF loads (offsets from kRamBase).
+  const std::vector<std::pair<uint32_t, uint32_t>>& ramSegments() const { return ramSegments_; }
+  bool hasFlashCode() const { return flashUsed_ > 0; }
+  uint32_t flashUsed() const { return flashUsed_; }  // bytes from kFlashBase to the end of the last segment
+  uint32_t entry() const { return entry_; }
+  std::optional<uint32_t> symbol(const std::string& name) const;
+  // The first of the names that exists.
+  std::optional<uint32_t> firstSymbol(std::initializer_list<const char*> names) const;
+  const std::string& path() const { return path_; }
 
-private:
-    std::string path_;
-    std::vector<uint8_t> flash_ = std::vector<uint8_t>(kFlashSize, 0xFF);
-    std::vector<uint8_t> ram_ = std::vector<uint8_t>(kRamSize, 0x00);
-    std::vector<std::pair<uint32_t, uint32_t>> ramSegments_;
-    uint32_t flashUsed_ = 0;
-    uint32_t entry_ = 0;
-    std::map<std::string, uint32_t> symbols_;
-    friend struct ElfLoader;
+ private:
+  std::string path_;
+  std::vector<uint8_t> flash_ = std::vector<uint8_t>(kFlashSize, 0xFF);
+  std::vector<uint8_t> ram_ = std::vector<uint8_t>(kRamSize, 0x00);
+  std::vector<std::pair<uint32_t, uint32_t>> ramSegments_;
+  uint32_t flashUsed_ = 0;
+  uint32_t entry_ = 0;
+  std::map<std::string, uint32_t> symbols_;
+  friend struct ElfLoader;
 };
 
 struct ElfLoad {
-    std::optional<ElfImage> image;
-    std::string error;  // names the file and the problem
+  std::optional<ElfImage> image;
+  std::string error;  // names the file and the problem
 };
 
 }  // namespace nxtmap::emu

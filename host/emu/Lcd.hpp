@@ -11,22 +11,22 @@
 namespace nxtmap::emu {
 
 class Lcd {
-public:
-    static constexpr int kWidth = 100, kHeight = 64, kColumns = 132, kPages = 8;
-    void byte(bool data, uint8_t value);
-    bool pixel(int x, int y) const;  // x 0..99, y 0..63
-    bool displayOn() const { return on_; }
-    uint64_t dataBytes() const { return dataBytes_; }
-    // Writes a PNG (scale x scale pixels per LCD pixel, scale 1..16) whole or not at all (fileio::AtomicFile);
-    // false with the path and the reason in error, `path` then untouched.
-    bool savePng(const std::string& path, int scale, std::string& error) const;
+ public:
+  static constexpr int kWidth = 100, kHeight = 64, kColumns = 132, kPages = 8;
+  void byte(bool data, uint8_t value);
+  bool pixel(int x, int y) const;  // x 0..99, y 0..63
+  bool displayOn() const { return on_; }
+  uint64_t dataBytes() const { return dataBytes_; }
+  // Writes a PNG (scale x scale pixels per LCD pixel, scale 1..16) whole or not at all (fileio::AtomicFile);
+  // false with the path and the reason in error, `path` then untouched.
+  bool savePng(const std::string& path, int scale, std::string& error) const;
 
-private:
-    std::array<std::array<uint8_t, kColumns>, kPages> ram_{};
-    int column_ = 0, page_ = 0;
-    bool on_ = false;
-    bool expectArg_ = false;  // the next command byte is an argument (e.g. after 0x81 contrast)
-    uint64_t dataBytes_ = 0;
+ private:
+  std::array<std::array<uint8_t, kColumns>, kPages> ram_{};
+  int column_ = 0, page_ = 0;
+  bool on_ = false;
+  bool expectArg_ = false;  // the next command byte is an argument (e.g. after 0x81 contrast)
+  uint64_t dataBytes_ = 0;
 };
 
 }  // namespace nxtmap::emu

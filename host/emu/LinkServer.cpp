@@ -21,152 +21,156 @@ const int kRadioWindowBytes = 4096;  // SO_RCVBUF asked for; Linux doubles it fo
 }  // namespace
 
 TcpLink::TcpLink(int port) : port_(port) {
-    listen_ = ::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
-    if (listen_ < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
-    const int one = 1;
-    ::setsockopt(listen_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-    // A PC's connection gets a receive window of about a radio's (accepted sockets inherit it), so a
-    // PC that sends faster than the brick reads is held back within a few KiB.
-    ::setsockopt(listen_, SOL_SOCKET, SO_RCVBUF, &kRadioWindowBytes, sizeof kRadioWindowBytes);
-    sockaddr_in a{};
-    a.sin_family = AF_INET;
-    a.sin_port = htons(static_cast<uint16_t>(port));
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    if (::bind(listen_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 || ::listen(listen_, 1) != 0) {
-        const std::string why = std::strerror(errno);
-        ::close(listen_);
-        throw std::runtime_error("cannot listen on 127.0.0.1:" + std::to_string(port) + ": " + why);
-    }
+  listen_ = ::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+  if (listen_ < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
+  const int one = 1;
+  ::setsockopt(listen_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+  // A PC's connection gets a receive window of about a radio's (accepted sockets inherit it), so a
+  // PC that sends faster than the brick reads is held back within a few KiB.
+  ::setsockopt(listen_, SOL_SOCKET, SO_RCVBUF, &kRadioWindowBytes, sizeof kRadioWindowBytes);
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_port = htons(static_cast<uint16_t>(port));
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (::bind(listen_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 || ::listen(listen_, 1) != 0) {
+    const std::string why = std::strerror(errno);
+    ::close(listen_);
+    throw std::runtime_error("cannot listen on 127.0.0.1:" + std::to_string(port) + ": " + why);
+  }
 }
 
 TcpLink::~TcpLink() {
-    drop();
-    if (listen_ >= 0) ::close(listen_);
+  drop();
+  if (listen_ >= 0) ::close(listen_);
 }
 
 void TcpLink::drop() {
-    if (client_ >= 0) {
-        ::close(client_);
-        hungUp_ = true;
-    }
-    client_ = -1;
+  if (client_ >= 0) {
+    ::close(client_);
+    hungUp_ = true;
+  }
+  client_ = -1;
 }
 
 bool TcpLink::connected() {
-    if (hungUp_) {  // the brick sees this PC leave before the next one, even one already waiting
-        hungUp_ = false;
-        return false;
-    }
-    if (client_ < 0) client_ = ::accept4(listen_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
-    return client_ >= 0;
+  if (hungUp_) {  // the brick sees this PC leave before the next one, even one already waiting
+    hungUp_ = false;
+    return false;
+  }
+  if (client_ < 0) client_ = ::accept4(listen_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+  return client_ >= 0;
 }
 
 void TcpLink::send(const uint8_t* d, size_t n) {
-    int stalledMs = 0;  // wall time the PC has taken no byte
-    while (client_ >= 0 && n > 0) {
-        const ssize_t w = ::send(client_, d, n, MSG_NOSIGNAL);
-        if (w > 0) {
-            d += w;
-            n -= static_cast<size_t>(w);
-            stalledMs = 0;
-            continue;
-        }
-        if (w < 0 && (errno == EAGAIN || errno == EINTR) && stalledMs < kStallLimitMs) {
-            pollfd p{client_, POLLOUT, 0};
-            ::poll(&p, 1, 100);
-            stalledMs += 100;
-            continue;
-        }
-        drop();  // an error, or a PC that reads nothing: the link is lost, as a radio's would be
+  int stalledMs = 0;  // wall time the PC has taken no byte
+  while (client_ >= 0 && n > 0) {
+    const ssize_t w = ::send(client_, d, n, MSG_NOSIGNAL);
+    if (w > 0) {
+      d += w;
+      n -= static_cast<size_t>(w);
+      stalledMs = 0;
+      continue;
     }
+    if (w < 0 && (errno == EAGAIN || errno == EINTR) && stalledMs < kStallLimitMs) {
+      pollfd p{client_, POLLOUT, 0};
+      ::poll(&p, 1, 100);
+      stalledMs += 100;
+      continue;
+    }
+    drop();  // an error, or a PC that reads nothing: the link is lost, as a radio's would be
+  }
 }
 
 void TcpLink::receive(std::deque<uint8_t>& out, size_t maxBytes) {
-    uint8_t buf[512];
-    while (client_ >= 0 && maxBytes > 0) {
-        const ssize_t r = ::recv(client_, buf, std::min(sizeof buf, maxBytes), 0);
-        if (r > 0) {
-            out.insert(out.end(), buf, buf + r);
-            maxBytes -= static_cast<size_t>(r);
-            continue;
-        }
-        if (r == 0 || (errno != EAGAIN && errno != EINTR)) drop();  // the PC hung up
-        break;
+  uint8_t buf[512];
+  while (client_ >= 0 && maxBytes > 0) {
+    const ssize_t r = ::recv(client_, buf, std::min(sizeof buf, maxBytes), 0);
+    if (r > 0) {
+      out.insert(out.end(), buf, buf + r);
+      maxBytes -= static_cast<size_t>(r);
+      continue;
     }
+    if (r == 0 || (errno != EAGAIN && errno != EINTR)) drop();  // the PC hung up
+    break;
+  }
 }
 
 bool TcpLink::waitForActivity(int ms) {
-    pollfd p{client_ >= 0 ? client_ : listen_, POLLIN, 0};
-    return ::poll(&p, 1, ms) > 0;
+  pollfd p{client_ >= 0 ? client_ : listen_, POLLIN, 0};
+  return ::poll(&p, 1, ms) > 0;
 }
 
 PtyLink::PtyLink() {
-    master_ = ::posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
-    if (master_ < 0 || ::grantpt(master_) != 0 || ::unlockpt(master_) != 0)
-        throw std::runtime_error(std::string("cannot open a pseudo-terminal: ") + std::strerror(errno));
-    const char* n = ::ptsname(master_);
-    if (!n) throw std::runtime_error("ptsname failed");
-    name_ = n;
-    slave_ = ::open(n, O_RDWR | O_NOCTTY | O_CLOEXEC);  // held open: the master then never reads EIO
-    if (slave_ >= 0) {
-        termios t{};
-        if (::tcgetattr(slave_, &t) == 0) {
-            ::cfmakeraw(&t);
-            ::tcsetattr(slave_, TCSANOW, &t);
-        }
+  master_ = ::posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (master_ < 0 || ::grantpt(master_) != 0 || ::unlockpt(master_) != 0)
+    throw std::runtime_error(std::string("cannot open a pseudo-terminal: ") + std::strerror(errno));
+  const char* n = ::ptsname(master_);
+  if (!n) throw std::runtime_error("ptsname failed");
+  name_ = n;
+  slave_ = ::open(n, O_RDWR | O_NOCTTY | O_CLOEXEC);  // held open: the master then never reads EIO
+  if (slave_ >= 0) {
+    termios t{};
+    if (::tcgetattr(slave_, &t) == 0) {
+      ::cfmakeraw(&t);
+      ::tcsetattr(slave_, TCSANOW, &t);
     }
+  }
 }
 
 PtyLink::~PtyLink() {
-    if (slave_ >= 0) ::close(slave_);
-    if (master_ >= 0) ::close(master_);
+  if (slave_ >= 0) ::close(slave_);
+  if (master_ >= 0) ::close(master_);
 }
 
 void PtyLink::send(const uint8_t* d, size_t n) {
-    while (n > 0) {
-        const ssize_t w = ::write(master_, d, n);
-        if (w > 0) { d += w; n -= static_cast<size_t>(w); continue; }
-        if (w < 0 && (errno == EAGAIN || errno == EINTR)) {
-            pollfd p{master_, POLLOUT, 0};
-            if (::poll(&p, 1, 100) <= 0) return;  // nobody reads: drop the rest, as a radio would
-            continue;
-        }
-        return;
+  while (n > 0) {
+    const ssize_t w = ::write(master_, d, n);
+    if (w > 0) {
+      d += w;
+      n -= static_cast<size_t>(w);
+      continue;
     }
+    if (w < 0 && (errno == EAGAIN || errno == EINTR)) {
+      pollfd p{master_, POLLOUT, 0};
+      if (::poll(&p, 1, 100) <= 0) return;  // nobody reads: drop the rest, as a radio would
+      continue;
+    }
+    return;
+  }
 }
 
 void PtyLink::receive(std::deque<uint8_t>& out, size_t maxBytes) {
-    uint8_t buf[512];
-    while (maxBytes > 0) {
-        const ssize_t r = ::read(master_, buf, std::min(sizeof buf, maxBytes));
-        if (r <= 0) break;
-        out.insert(out.end(), buf, buf + r);
-        maxBytes -= static_cast<size_t>(r);
-    }
+  uint8_t buf[512];
+  while (maxBytes > 0) {
+    const ssize_t r = ::read(master_, buf, std::min(sizeof buf, maxBytes));
+    if (r <= 0) break;
+    out.insert(out.end(), buf, buf + r);
+    maxBytes -= static_cast<size_t>(r);
+  }
 }
 
 bool PtyLink::waitForActivity(int ms) {
-    pollfd p{master_, POLLIN, 0};
-    return ::poll(&p, 1, ms) > 0;
+  pollfd p{master_, POLLIN, 0};
+  return ::poll(&p, 1, ms) > 0;
 }
 
 std::unique_ptr<LinkEndpoint> openLink(const std::string& spec, std::string& description) {
-    if (spec == "pty") {
-        auto l = std::make_unique<PtyLink>();
-        description = "pty " + l->slaveName();
-        return l;
-    }
-    const std::string prefix = "tcp:127.0.0.1:";
-    if (spec.compare(0, prefix.size(), prefix) != 0)
-        throw std::invalid_argument("--listen must be tcp:127.0.0.1:PORT or pty, not '" + spec + "'");
-    const std::string p = spec.substr(prefix.size());
-    char* end = nullptr;
-    const long port = std::strtol(p.c_str(), &end, 10);
-    if (p.empty() || *end != '\0' || port < 1 || port > 65535)
-        throw std::invalid_argument("--listen: port must be 1..65535, not '" + p + "'");
-    auto l = std::make_unique<TcpLink>(static_cast<int>(port));
-    description = "tcp 127.0.0.1:" + std::to_string(port);
+  if (spec == "pty") {
+    auto l = std::make_unique<PtyLink>();
+    description = "pty " + l->slaveName();
     return l;
+  }
+  const std::string prefix = "tcp:127.0.0.1:";
+  if (spec.compare(0, prefix.size(), prefix) != 0)
+    throw std::invalid_argument("--listen must be tcp:127.0.0.1:PORT or pty, not '" + spec + "'");
+  const std::string p = spec.substr(prefix.size());
+  char* end = nullptr;
+  const long port = std::strtol(p.c_str(), &end, 10);
+  if (p.empty() || *end != '\0' || port < 1 || port > 65535)
+    throw std::invalid_argument("--listen: port must be 1..65535, not '" + p + "'");
+  auto l = std::make_unique<TcpLink>(static_cast<int>(port));
+  description = "tcp 127.0.0.1:" + std::to_string(port);
+  return l;
 }
 
 }  // namespace nxtmap::emu

@@ -13,39 +13,39 @@
 namespace nxtmap::emu {
 
 class TcpLink : public LinkEndpoint {
-public:
-    // Binds and listens; throws std::runtime_error with the reason when it cannot.
-    explicit TcpLink(int port);
-    ~TcpLink() override;
-    bool connected() override;
-    void send(const uint8_t* data, size_t n) override;
-    void receive(std::deque<uint8_t>& out, size_t maxBytes) override;
-    bool waitForActivity(int timeoutMs) override;
-    int port() const { return port_; }
+ public:
+  // Binds and listens; throws std::runtime_error with the reason when it cannot.
+  explicit TcpLink(int port);
+  ~TcpLink() override;
+  bool connected() override;
+  void send(const uint8_t* data, size_t n) override;
+  void receive(std::deque<uint8_t>& out, size_t maxBytes) override;
+  bool waitForActivity(int timeoutMs) override;
+  int port() const { return port_; }
 
-    // A PC that takes no byte for this long (wall time, ms) while the brick sends is dropped, so a client that
-    // never reads cannot stall the emulated brick (a Bluetooth link's supervision timeout does the same).
-    static constexpr int kStallLimitMs = 2000;
+  // A PC that takes no byte for this long (wall time, ms) while the brick sends is dropped, so a client that
+  // never reads cannot stall the emulated brick (a Bluetooth link's supervision timeout does the same).
+  static constexpr int kStallLimitMs = 2000;
 
-private:
-    void drop();
-    int listen_ = -1, client_ = -1, port_ = 0;
-    bool hungUp_ = false;  // a PC left and connected() has not said so yet
+ private:
+  void drop();
+  int listen_ = -1, client_ = -1, port_ = 0;
+  bool hungUp_ = false;  // a PC left and connected() has not said so yet
 };
 
 class PtyLink : public LinkEndpoint {
-public:
-    PtyLink();  // throws std::runtime_error on failure
-    ~PtyLink() override;
-    const std::string& slaveName() const { return name_; }
-    bool connected() override { return true; }
-    void send(const uint8_t* data, size_t n) override;
-    void receive(std::deque<uint8_t>& out, size_t maxBytes) override;
-    bool waitForActivity(int timeoutMs) override;
+ public:
+  PtyLink();  // throws std::runtime_error on failure
+  ~PtyLink() override;
+  const std::string& slaveName() const { return name_; }
+  bool connected() override { return true; }
+  void send(const uint8_t* data, size_t n) override;
+  void receive(std::deque<uint8_t>& out, size_t maxBytes) override;
+  bool waitForActivity(int timeoutMs) override;
 
-private:
-    int master_ = -1, slave_ = -1;
-    std::string name_;
+ private:
+  int master_ = -1, slave_ = -1;
+  std::string name_;
 };
 
 // "tcp:127.0.0.1:PORT" or "pty"; throws std::invalid_argument naming the problem.

@@ -23,421 +23,449 @@ constexpr uint32_t kPaint = 0xA5;
 constexpr uint64_t kMaskedPoll = 256;  // re-check a masked pending IRQ every this many cycles
 
 double cpuNow() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
 }
 
 double wallNow() {
-    using namespace std::chrono;
-    return duration<double>(steady_clock::now().time_since_epoch()).count();
+  using namespace std::chrono;
+  return duration<double>(steady_clock::now().time_since_epoch()).count();
 }
 
 void check(uc_err e, const char* what) {
-    if (e != UC_ERR_OK) throw std::runtime_error(std::string("unicorn: ") + what + ": " + uc_strerror(e));
+  if (e != UC_ERR_OK) throw std::runtime_error(std::string("unicorn: ") + what + ": " + uc_strerror(e));
 }
 
 std::string hex(uint32_t v) {
-    char b[16];
-    std::snprintf(b, sizeof b, "0x%08x", static_cast<unsigned>(v));
-    return b;
+  char b[16];
+  std::snprintf(b, sizeof b, "0x%08x", static_cast<unsigned>(v));
+  return b;
 }
 }  // namespace
 
 struct Machine::Hooks {
-    static void block(uc_engine* uc, uint64_t address, uint32_t size, void* user) {
-        auto* m = static_cast<Machine*>(user);
-        if (m->timedReturn_ != 0 && static_cast<uint32_t>(address) == m->timedReturn_) {
-            m->maxTimed_ = std::max(m->maxTimed_, m->clock_.now - m->timedStart_);
-            ++m->timedCalls_;
-            m->timedReturn_ = 0;
-        }
-        if (m->clock_.now >= m->clock_.stopAt) {
-            uc_emu_stop(uc);  // before the block: PC == address, the block does not run
-            m->stoppedAt_ = static_cast<uint32_t>(address);
-            return;
-        }
-        // ARM or Thumb: learnt once per code address (reading CPSR in every block costs ~5 %).
-        const int slot = m->modeSlot(static_cast<uint32_t>(address));
-        uint32_t cpsr = 0;
-        if (slot < 0 || m->modes_[static_cast<size_t>(slot)] == 0 || m->trace_) {
-            uc_reg_read(uc, UC_ARM_REG_CPSR, &cpsr);
-            if (slot >= 0) m->modes_[static_cast<size_t>(slot)] = (cpsr & kCpsrT) ? 2 : 1;
-        } else if (m->modes_[static_cast<size_t>(slot)] == 2) {
-            cpsr = kCpsrT;
-        }
-        if (m->trace_) std::fprintf(stderr, "block %08x size %u cpsr %08x t=%llu\n", static_cast<unsigned>(address), size,
-                                    cpsr, static_cast<unsigned long long>(m->clock_.now));
-        const uint64_t n = (cpsr & kCpsrT) ? size / 2 : size / 4;
-        m->blockStart_ = m->clock_.now;
-        m->clock_.now += n;
-        m->executed_ += n;
-        m->lastBlock_ = static_cast<uint32_t>(address);
+  static void block(uc_engine* uc, uint64_t address, uint32_t size, void* user) {
+    auto* m = static_cast<Machine*>(user);
+    if (m->timedReturn_ != 0 && static_cast<uint32_t>(address) == m->timedReturn_) {
+      m->maxTimed_ = std::max(m->maxTimed_, m->clock_.now - m->timedStart_);
+      ++m->timedCalls_;
+      m->timedReturn_ = 0;
     }
+    if (m->clock_.now >= m->clock_.stopAt) {
+      uc_emu_stop(uc);  // before the block: PC == address, the block does not run
+      m->stoppedAt_ = static_cast<uint32_t>(address);
+      return;
+    }
+    // ARM or Thumb: learnt once per code address (reading CPSR in every block costs ~5 %).
+    const int slot = m->modeSlot(static_cast<uint32_t>(address));
+    uint32_t cpsr = 0;
+    if (slot < 0 || m->modes_[static_cast<size_t>(slot)] == 0 || m->trace_) {
+      uc_reg_read(uc, UC_ARM_REG_CPSR, &cpsr);
+      if (slot >= 0) m->modes_[static_cast<size_t>(slot)] = (cpsr & kCpsrT) ? 2 : 1;
+    } else if (m->modes_[static_cast<size_t>(slot)] == 2) {
+      cpsr = kCpsrT;
+    }
+    if (m->trace_)
+      std::fprintf(stderr, "block %08x size %u cpsr %08x t=%llu\n", static_cast<unsigned>(address), size, cpsr,
+                   static_cast<unsigned long long>(m->clock_.now));
+    const uint64_t n = (cpsr & kCpsrT) ? size / 2 : size / 4;
+    m->blockStart_ = m->clock_.now;
+    m->clock_.now += n;
+    m->executed_ += n;
+    m->lastBlock_ = static_cast<uint32_t>(address);
+  }
 
-    static void timedEntry(uc_engine* uc, uint64_t, uint32_t, void* user) {
-        auto* m = static_cast<Machine*>(user);
-        if (m->timedReturn_ != 0) return;  // nested or recursive: time the outermost call only
-        uint32_t lr = 0;
-        uc_reg_read(uc, UC_ARM_REG_LR, &lr);
-        m->timedReturn_ = lr & ~1u;
-        m->timedStart_ = m->blockStart_;  // the entry starts its block (it is reached by a branch)
-    }
+  static void timedEntry(uc_engine* uc, uint64_t, uint32_t, void* user) {
+    auto* m = static_cast<Machine*>(user);
+    if (m->timedReturn_ != 0) return;  // nested or recursive: time the outermost call only
+    uint32_t lr = 0;
+    uc_reg_read(uc, UC_ARM_REG_LR, &lr);
+    m->timedReturn_ = lr & ~1u;
+    m->timedStart_ = m->blockStart_;  // the entry starts its block (it is reached by a branch)
+  }
 
-    static void memAccess(uc_engine* uc, uc_mem_type type, uint64_t address, int size, int64_t, void* user) {
-        auto* m = static_cast<Machine*>(user);
-        const auto a = static_cast<uint32_t>(address);
-        if (m->options_.checkAlignment && (a & static_cast<uint32_t>(size - 1)) != 0) {
-            m->setFault(FaultKind::Unaligned, a,
-                        std::string(type == UC_MEM_WRITE ? "write" : "read") + " of " + std::to_string(size) +
-                            " bytes");
-            uc_emu_stop(uc);
-            return;
-        }
-        if (type == UC_MEM_WRITE && a >= m->guardLow_ && a < m->stackLimit_) {
-            m->setFault(FaultKind::StackOverflow, a, "write below the stack limit " + hex(m->stackLimit_));
-            uc_emu_stop(uc);
-        }
+  static void memAccess(uc_engine* uc, uc_mem_type type, uint64_t address, int size, int64_t, void* user) {
+    auto* m = static_cast<Machine*>(user);
+    const auto a = static_cast<uint32_t>(address);
+    if (m->options_.checkAlignment && (a & static_cast<uint32_t>(size - 1)) != 0) {
+      m->setFault(FaultKind::Unaligned, a,
+                  std::string(type == UC_MEM_WRITE ? "write" : "read") + " of " + std::to_string(size) + " bytes");
+      uc_emu_stop(uc);
+      return;
     }
+    if (type == UC_MEM_WRITE && a >= m->guardLow_ && a < m->stackLimit_) {
+      m->setFault(FaultKind::StackOverflow, a, "write below the stack limit " + hex(m->stackLimit_));
+      uc_emu_stop(uc);
+    }
+  }
 
-    static bool badMemory(uc_engine* uc, uc_mem_type type, uint64_t address, int size, int64_t, void* user) {
-        auto* m = static_cast<Machine*>(user);
-        const auto a = static_cast<uint32_t>(address);
-        uint32_t sp = 0;
-        uc_reg_read(uc, UC_ARM_REG_SP, &sp);
-        const char* what = "access";
-        switch (type) {
-            case UC_MEM_READ_UNMAPPED: what = "read of unmapped memory"; break;
-            case UC_MEM_WRITE_UNMAPPED: what = "write to unmapped memory"; break;
-            case UC_MEM_FETCH_UNMAPPED: what = "instruction fetch from unmapped memory"; break;
-            case UC_MEM_WRITE_PROT: what = "write to read-only memory (flash)"; break;
-            case UC_MEM_FETCH_PROT: what = "instruction fetch from non-executable memory"; break;
-            default: break;
-        }
-        const bool stackish = (type == UC_MEM_WRITE_UNMAPPED || type == UC_MEM_WRITE_PROT) &&
-                              a + 64 >= sp && a <= sp + 64 && a < kRamBase + kRamSize;
-        if (stackish)
-            m->setFault(FaultKind::StackOverflow, a, std::string(what) + " at the stack pointer " + hex(sp));
-        else
-            m->setFault(FaultKind::BadMemory, a, std::string(what) + " (" + std::to_string(size) + " bytes)");
-        return false;
+  static bool badMemory(uc_engine* uc, uc_mem_type type, uint64_t address, int size, int64_t, void* user) {
+    auto* m = static_cast<Machine*>(user);
+    const auto a = static_cast<uint32_t>(address);
+    uint32_t sp = 0;
+    uc_reg_read(uc, UC_ARM_REG_SP, &sp);
+    const char* what = "access";
+    switch (type) {
+      case UC_MEM_READ_UNMAPPED: what = "read of unmapped memory"; break;
+      case UC_MEM_WRITE_UNMAPPED: what = "write to unmapped memory"; break;
+      case UC_MEM_FETCH_UNMAPPED: what = "instruction fetch from unmapped memory"; break;
+      case UC_MEM_WRITE_PROT: what = "write to read-only memory (flash)"; break;
+      case UC_MEM_FETCH_PROT: what = "instruction fetch from non-executable memory"; break;
+      default: break;
     }
+    const bool stackish = (type == UC_MEM_WRITE_UNMAPPED || type == UC_MEM_WRITE_PROT) && a + 64 >= sp &&
+                          a <= sp + 64 && a < kRamBase + kRamSize;
+    if (stackish)
+      m->setFault(FaultKind::StackOverflow, a, std::string(what) + " at the stack pointer " + hex(sp));
+    else
+      m->setFault(FaultKind::BadMemory, a, std::string(what) + " (" + std::to_string(size) + " bytes)");
+    return false;
+  }
 
-    static void interrupt(uc_engine* uc, uint32_t intno, void* user) {
-        auto* m = static_cast<Machine*>(user);
-        static const char* names[] = {"reset", "undefined instruction", "SWI", "prefetch abort", "data abort",
-                                      "IRQ", "FIQ", "breakpoint", "exception return", "kernel trap"};
-        const std::string name = intno < 10 ? names[intno] : "exception " + std::to_string(intno);
-        m->setFault(FaultKind::Exception, 0, name + " (no handler is emulated)");
-        uc_emu_stop(uc);
-    }
+  static void interrupt(uc_engine* uc, uint32_t intno, void* user) {
+    auto* m = static_cast<Machine*>(user);
+    static const char* names[] = {
+        "reset",      "undefined instruction", "SWI",        "prefetch abort", "data abort", "IRQ", "FIQ",
+        "breakpoint", "exception return",      "kernel trap"};
+    const std::string name = intno < 10 ? names[intno] : "exception " + std::to_string(intno);
+    m->setFault(FaultKind::Exception, 0, name + " (no handler is emulated)");
+    uc_emu_stop(uc);
+  }
 
-    static bool invalidInsn(uc_engine*, void* user) {
-        auto* m = static_cast<Machine*>(user);
-        m->setFault(FaultKind::Exception, 0, "undefined instruction (or one the ARMv4T ARM7TDMI lacks)");
-        return false;
-    }
+  static bool invalidInsn(uc_engine*, void* user) {
+    auto* m = static_cast<Machine*>(user);
+    m->setFault(FaultKind::Exception, 0, "undefined instruction (or one the ARMv4T ARM7TDMI lacks)");
+    return false;
+  }
 
-    static Slot* slotFor(Machine* m, uint64_t offset) {
-        const uint8_t idx = m->page_[offset >> 4];
-        return idx ? &m->slots_[idx - 1u] : nullptr;
-    }
+  static Slot* slotFor(Machine* m, uint64_t offset) {
+    const uint8_t idx = m->page_[offset >> 4];
+    return idx ? &m->slots_[idx - 1u] : nullptr;
+  }
 
-    static uint64_t mmioRead(uc_engine* uc, uint64_t offset, unsigned size, void* user) {
-        auto* m = static_cast<Machine*>(user);
-        const auto a = static_cast<uint32_t>(kMmioBase + offset);
-        Slot* s = slotFor(m, offset);
-        uint32_t v = 0;
-        if (!s || !s->device->read((a - s->base) & ~3u, v)) {
-            m->setFault(FaultKind::UnmodelledIo, a,
-                        std::string("read of ") + (s ? s->device->name() : "an unmapped peripheral") + " register +" +
-                            hex(s ? a - s->base : offset));
-            uc_emu_stop(uc);
-            return 0;
-        }
-        if (size < 4) v >>= 8 * (a & 3);
-        return v;
+  static uint64_t mmioRead(uc_engine* uc, uint64_t offset, unsigned size, void* user) {
+    auto* m = static_cast<Machine*>(user);
+    const auto a = static_cast<uint32_t>(kMmioBase + offset);
+    Slot* s = slotFor(m, offset);
+    uint32_t v = 0;
+    if (!s || !s->device->read((a - s->base) & ~3u, v)) {
+      m->setFault(FaultKind::UnmodelledIo, a,
+                  std::string("read of ") + (s ? s->device->name() : "an unmapped peripheral") + " register +" +
+                      hex(s ? a - s->base : offset));
+      uc_emu_stop(uc);
+      return 0;
     }
+    if (size < 4) v >>= 8 * (a & 3);
+    return v;
+  }
 
-    static void mmioWrite(uc_engine* uc, uint64_t offset, unsigned size, uint64_t value, void* user) {
-        auto* m = static_cast<Machine*>(user);
-        const auto a = static_cast<uint32_t>(kMmioBase + offset);
-        Slot* s = slotFor(m, offset);
-        auto v = static_cast<uint32_t>(value);
-        if (size < 4) v <<= 8 * (a & 3);
-        if (!s || !s->device->write((a - s->base) & ~3u, v)) {
-            m->setFault(FaultKind::UnmodelledIo, a,
-                        std::string("write of ") + hex(v) + " to " + (s ? s->device->name() : "an unmapped peripheral") +
-                            " register +" + hex(s ? a - s->base : offset));
-            uc_emu_stop(uc);
-            return;
-        }
-        if (s->device->writeReplans((a - s->base) & ~3u)) m->clock_.poke();  // re-plan at the next block
+  static void mmioWrite(uc_engine* uc, uint64_t offset, unsigned size, uint64_t value, void* user) {
+    auto* m = static_cast<Machine*>(user);
+    const auto a = static_cast<uint32_t>(kMmioBase + offset);
+    Slot* s = slotFor(m, offset);
+    auto v = static_cast<uint32_t>(value);
+    if (size < 4) v <<= 8 * (a & 3);
+    if (!s || !s->device->write((a - s->base) & ~3u, v)) {
+      m->setFault(FaultKind::UnmodelledIo, a,
+                  std::string("write of ") + hex(v) + " to " + (s ? s->device->name() : "an unmapped peripheral") +
+                      " register +" + hex(s ? a - s->base : offset));
+      uc_emu_stop(uc);
+      return;
     }
+    if (s->device->writeReplans((a - s->base) & ~3u)) m->clock_.poke();  // re-plan at the next block
+  }
 };
 
 Machine::Machine(const ElfImage& image, const MachineOptions& options)
     : image_(image),
       options_(options),
       pmc_([this] {
-          idle_ = true;
-          maxBusy_ = std::max(maxBusy_, clock_.now - busyStart_);
-          clock_.poke();
+        idle_ = true;
+        maxBusy_ = std::max(maxBusy_, clock_.now - busyStart_);
+        clock_.poke();
       }),
-      mc_([this] { applyRemap(); }) {  // immediate, as on the chip (safe inside the MMIO callback)
-    trace_ = std::getenv("NXTMAP_EMU_TRACE") != nullptr;  // debugging aid: every block on stderr
-    if (std::getenv("NXTMAP_EMU_NOALIGN")) options_.checkAlignment = false;
-    if (std::getenv("NXTMAP_EMU_SLOW_STORES")) setUnicornFastStores(false);
-    flash_ = static_cast<uint8_t*>(std::aligned_alloc(4096, kFlashSize));
-    ram_ = static_cast<uint8_t*>(std::aligned_alloc(4096, kRamSize));
-    if (!flash_ || !ram_) throw std::bad_alloc();
-    std::memcpy(flash_, image.flash().data(), kFlashSize);
-    std::memset(ram_, kPaint, kRamSize);  // stack painting for the high-water mark
-    const bool ramImage = !image.hasFlashCode();
-    if (ramImage) {  // RAM-run image (fwexec style): copy what the ELF loads into RAM
-        for (const auto& [offset, size] : image.ramSegments())
-            std::memcpy(ram_ + offset, image.ram().data() + offset, size);
+      mc_([this] { applyRemap(); }) {                   // immediate, as on the chip (safe inside the MMIO callback)
+  trace_ = std::getenv("NXTMAP_EMU_TRACE") != nullptr;  // debugging aid: every block on stderr
+  if (std::getenv("NXTMAP_EMU_NOALIGN")) options_.checkAlignment = false;
+  if (std::getenv("NXTMAP_EMU_SLOW_STORES")) setUnicornFastStores(false);
+  flash_ = static_cast<uint8_t*>(std::aligned_alloc(4096, kFlashSize));
+  ram_ = static_cast<uint8_t*>(std::aligned_alloc(4096, kRamSize));
+  if (!flash_ || !ram_) throw std::bad_alloc();
+  std::memcpy(flash_, image.flash().data(), kFlashSize);
+  std::memset(ram_, kPaint, kRamSize);  // stack painting for the high-water mark
+  const bool ramImage = !image.hasFlashCode();
+  if (ramImage) {  // RAM-run image (fwexec style): copy what the ELF loads into RAM
+    for (const auto& [offset, size] : image.ramSegments())
+      std::memcpy(ram_ + offset, image.ram().data() + offset, size);
+  }
+
+  check(uc_open(UC_ARCH_ARM, UC_MODE_ARM, &uc_), "open");
+  // Must come before the first mapping, or Unicorn silently uses a Cortex-A15.
+  check(uc_ctl_set_cpu_model(uc_, UC_CPU_ARM_TI925T), "cpu model TI925T");
+  check(uc_mem_map_ptr(uc_, kFlashBase, kFlashSize, UC_PROT_READ | UC_PROT_EXEC, flash_), "map flash");
+  check(uc_mem_map_ptr(uc_, kRamBase, kRamSize, UC_PROT_ALL, ram_), "map RAM");
+  check(uc_mem_map_ptr(uc_, 0, kFlashSize, UC_PROT_READ | UC_PROT_EXEC, flash_), "map flash mirror at 0");
+  check(uc_mmio_map(uc_, kMmioBase, kMmioSize, &Hooks::mmioRead, this, &Hooks::mmioWrite, this), "map MMIO");
+
+  page_.assign(kMmioSize >> 4, 0);
+  aic_.setClock(&clock_);
+  attach(Aic::kBase, Aic::kSize, aic_);
+  attach(Pmc::kBase, Pmc::kSize, pmc_);
+  attach(ResetController::kBase, ResetController::kSize, rstc_);
+  attach(Pit::kBase, 0x10, pit_);
+  attach(Watchdog::kBase, 0x10, wdt_);
+  attach(VoltageRegulator::kBase, 0x10, vreg_);
+  attach(MemoryController::kBase, MemoryController::kSize, mc_);
+  aic_.connect(Aic::kIdSys, [this] { return pit_.irqLine(); });
+
+  uc_hook h{};
+  check(uc_hook_add(uc_, &h, UC_HOOK_BLOCK, reinterpret_cast<void*>(&Hooks::block), this, 1, 0), "block hook");
+  check(uc_hook_add(uc_, &h, UC_HOOK_MEM_UNMAPPED | UC_HOOK_MEM_PROT, reinterpret_cast<void*>(&Hooks::badMemory), this,
+                    1, 0),
+        "memory fault hook");
+  check(uc_hook_add(uc_, &h, UC_HOOK_INTR, reinterpret_cast<void*>(&Hooks::interrupt), this, 1, 0), "intr hook");
+  check(uc_hook_add(uc_, &h, UC_HOOK_INSN_INVALID, reinterpret_cast<void*>(&Hooks::invalidInsn), this, 1, 0),
+        "invalid instruction hook");
+
+  const auto ebss = image.firstSymbol({"_ebss", "__bss_end__", "_end", "end"});
+  const auto limit = image.firstSymbol({"__stack_limit__", "__stacks_start__", "__stack_limit", "_sstack"});
+  guardLow_ = options.guardLow.value_or(ebss.value_or(0));
+  stackLimit_ = options.stackLimit.value_or(limit.value_or(0));
+  const bool guard = stackLimit_ > guardLow_;
+  if (options.checkAlignment || guard)
+    check(uc_hook_add(uc_, &h, UC_HOOK_MEM_READ | UC_HOOK_MEM_WRITE, reinterpret_cast<void*>(&Hooks::memAccess), this,
+                      1, 0),
+          "memory hook");
+
+  if (options.timedFunction) {
+    std::optional<uint32_t> at = image.symbol(*options.timedFunction);
+    if (!at) {
+      char* end = nullptr;
+      const unsigned long v = std::strtoul(options.timedFunction->c_str(), &end, 0);
+      if (end && *end == '\0' && !options.timedFunction->empty()) at = static_cast<uint32_t>(v);
     }
+    if (!at) throw std::runtime_error("timed function '" + *options.timedFunction + "' is not in the firmware");
+    timedEntry_ = *at & ~1u;
+    check(
+        uc_hook_add(uc_, &h, UC_HOOK_CODE, reinterpret_cast<void*>(&Hooks::timedEntry), this, timedEntry_, timedEntry_),
+        "timed function hook");
+  }
 
-    check(uc_open(UC_ARCH_ARM, UC_MODE_ARM, &uc_), "open");
-    // Must come before the first mapping, or Unicorn silently uses a Cortex-A15.
-    check(uc_ctl_set_cpu_model(uc_, UC_CPU_ARM_TI925T), "cpu model TI925T");
-    check(uc_mem_map_ptr(uc_, kFlashBase, kFlashSize, UC_PROT_READ | UC_PROT_EXEC, flash_), "map flash");
-    check(uc_mem_map_ptr(uc_, kRamBase, kRamSize, UC_PROT_ALL, ram_), "map RAM");
-    check(uc_mem_map_ptr(uc_, 0, kFlashSize, UC_PROT_READ | UC_PROT_EXEC, flash_), "map flash mirror at 0");
-    check(uc_mmio_map(uc_, kMmioBase, kMmioSize, &Hooks::mmioRead, this, &Hooks::mmioWrite, this), "map MMIO");
-
-    page_.assign(kMmioSize >> 4, 0);
-    aic_.setClock(&clock_);
-    attach(Aic::kBase, Aic::kSize, aic_);
-    attach(Pmc::kBase, Pmc::kSize, pmc_);
-    attach(ResetController::kBase, ResetController::kSize, rstc_);
-    attach(Pit::kBase, 0x10, pit_);
-    attach(Watchdog::kBase, 0x10, wdt_);
-    attach(VoltageRegulator::kBase, 0x10, vreg_);
-    attach(MemoryController::kBase, MemoryController::kSize, mc_);
-    aic_.connect(Aic::kIdSys, [this] { return pit_.irqLine(); });
-
-    uc_hook h{};
-    check(uc_hook_add(uc_, &h, UC_HOOK_BLOCK, reinterpret_cast<void*>(&Hooks::block), this, 1, 0), "block hook");
-    check(uc_hook_add(uc_, &h, UC_HOOK_MEM_UNMAPPED | UC_HOOK_MEM_PROT, reinterpret_cast<void*>(&Hooks::badMemory),
-                      this, 1, 0),
-          "memory fault hook");
-    check(uc_hook_add(uc_, &h, UC_HOOK_INTR, reinterpret_cast<void*>(&Hooks::interrupt), this, 1, 0), "intr hook");
-    check(uc_hook_add(uc_, &h, UC_HOOK_INSN_INVALID, reinterpret_cast<void*>(&Hooks::invalidInsn), this, 1, 0),
-          "invalid instruction hook");
-
-    const auto ebss = image.firstSymbol({"_ebss", "__bss_end__", "_end", "end"});
-    const auto limit = image.firstSymbol({"__stack_limit__", "__stacks_start__", "__stack_limit", "_sstack"});
-    guardLow_ = options.guardLow.value_or(ebss.value_or(0));
-    stackLimit_ = options.stackLimit.value_or(limit.value_or(0));
-    const bool guard = stackLimit_ > guardLow_;
-    if (options.checkAlignment || guard)
-        check(uc_hook_add(uc_, &h, UC_HOOK_MEM_READ | UC_HOOK_MEM_WRITE, reinterpret_cast<void*>(&Hooks::memAccess),
-                          this, 1, 0),
-              "memory hook");
-
-    if (options.timedFunction) {
-        std::optional<uint32_t> at = image.symbol(*options.timedFunction);
-        if (!at) {
-            char* end = nullptr;
-            const unsigned long v = std::strtoul(options.timedFunction->c_str(), &end, 0);
-            if (end && *end == '\0' && !options.timedFunction->empty()) at = static_cast<uint32_t>(v);
-        }
-        if (!at) throw std::runtime_error("timed function '" + *options.timedFunction + "' is not in the firmware");
-        timedEntry_ = *at & ~1u;
-        check(uc_hook_add(uc_, &h, UC_HOOK_CODE, reinterpret_cast<void*>(&Hooks::timedEntry), this, timedEntry_,
-                          timedEntry_),
-              "timed function hook");
-    }
-
-    // Reset: ARM state, SVC mode, IRQ/FIQ masked, PC at the reset vector (or the entry of a RAM image).
-    uint32_t cpsr = 0xD3;
-    check(uc_reg_write(uc_, UC_ARM_REG_CPSR, &cpsr), "cpsr");
-    uint32_t pc = ramImage ? image.entry() : 0;
-    check(uc_reg_write(uc_, UC_ARM_REG_PC, &pc), "pc");
+  // Reset: ARM state, SVC mode, IRQ/FIQ masked, PC at the reset vector (or the entry of a RAM image).
+  uint32_t cpsr = 0xD3;
+  check(uc_reg_write(uc_, UC_ARM_REG_CPSR, &cpsr), "cpsr");
+  uint32_t pc = ramImage ? image.entry() : 0;
+  check(uc_reg_write(uc_, UC_ARM_REG_PC, &pc), "pc");
 }
 
 Machine::~Machine() {
-    if (uc_) uc_close(uc_);
-    std::free(flash_);
-    std::free(ram_);
+  if (uc_) uc_close(uc_);
+  std::free(flash_);
+  std::free(ram_);
 }
 
 void Machine::attach(uint32_t base, uint32_t size, IoDevice& device) {
-    if (base < kMmioBase || (base & 0xF) != 0 || size == 0 || uint64_t{base} + size > kMmioBase + kMmioSize)
-        throw std::invalid_argument("attach: bad peripheral window");
-    slots_.push_back(Slot{base, &device});
-    const auto idx = static_cast<uint8_t>(slots_.size());
-    for (uint64_t a = base; a < uint64_t{base} + size; a += 16) page_[(a - kMmioBase) >> 4] = idx;
-    if (std::find(devices_.begin(), devices_.end(), &device) == devices_.end()) devices_.push_back(&device);
+  if (base < kMmioBase || (base & 0xF) != 0 || size == 0 || uint64_t{base} + size > kMmioBase + kMmioSize)
+    throw std::invalid_argument("attach: bad peripheral window");
+  slots_.push_back(Slot{base, &device});
+  const auto idx = static_cast<uint8_t>(slots_.size());
+  for (uint64_t a = base; a < uint64_t{base} + size; a += 16) page_[(a - kMmioBase) >> 4] = idx;
+  if (std::find(devices_.begin(), devices_.end(), &device) == devices_.end()) devices_.push_back(&device);
 }
 
 void Machine::setFault(FaultKind kind, uint32_t address, std::string what, std::optional<uint32_t> pc) {
-    if (fault_) return;  // keep the first
-    fault_.kind = kind;
-    fault_.pc = pc.value_or(currentPc());
-    fault_.address = address;
-    fault_.what = std::move(what);
+  if (fault_) return;  // keep the first
+  fault_.kind = kind;
+  fault_.pc = pc.value_or(currentPc());
+  fault_.address = address;
+  fault_.what = std::move(what);
 }
 
 uint32_t Machine::currentPc() const {
-    uint32_t pc = 0;
-    uc_reg_read(uc_, UC_ARM_REG_PC, &pc);
-    return pc ? pc : lastBlock_;
+  uint32_t pc = 0;
+  uc_reg_read(uc_, UC_ARM_REG_PC, &pc);
+  return pc ? pc : lastBlock_;
 }
 
 int Machine::modeSlot(uint32_t a) const {
-    if (a < kFlashSize) return static_cast<int>(a >> 1);
-    if (a - kFlashBase < kFlashSize) return static_cast<int>((kFlashSize + (a - kFlashBase)) >> 1);
-    if (a - kRamBase < kRamSize) return static_cast<int>((2 * kFlashSize + (a - kRamBase)) >> 1);
-    return -1;
+  if (a < kFlashSize) return static_cast<int>(a >> 1);
+  if (a - kFlashBase < kFlashSize) return static_cast<int>((kFlashSize + (a - kFlashBase)) >> 1);
+  if (a - kRamBase < kRamSize) return static_cast<int>((2 * kFlashSize + (a - kRamBase)) >> 1);
+  return -1;
 }
 
 void Machine::applyRemap() {
-    std::fill(modes_.begin(), modes_.begin() + kFlashSize / 2, 0);  // address 0 now shows other code
-    remapped_ = !remapped_;  // RCB toggles (nxt-hardware.md 1.1)
-    uc_mem_unmap(uc_, 0, remapped_ ? kFlashSize : kRamSize);
-    if (remapped_)
-        check(uc_mem_map_ptr(uc_, 0, kRamSize, UC_PROT_ALL, ram_), "remap RAM to 0");
-    else
-        check(uc_mem_map_ptr(uc_, 0, kFlashSize, UC_PROT_READ | UC_PROT_EXEC, flash_), "remap flash to 0");
+  std::fill(modes_.begin(), modes_.begin() + kFlashSize / 2, 0);  // address 0 now shows other code
+  remapped_ = !remapped_;                                         // RCB toggles (nxt-hardware.md 1.1)
+  uc_mem_unmap(uc_, 0, remapped_ ? kFlashSize : kRamSize);
+  if (remapped_)
+    check(uc_mem_map_ptr(uc_, 0, kRamSize, UC_PROT_ALL, ram_), "remap RAM to 0");
+  else
+    check(uc_mem_map_ptr(uc_, 0, kFlashSize, UC_PROT_READ | UC_PROT_EXEC, flash_), "remap flash to 0");
 }
 
 bool Machine::readByte(uint32_t a, uint8_t& v) const {
-    if (a >= kRamBase && a < kRamBase + kRamSize) { v = ram_[a - kRamBase]; return true; }
-    if (a >= kFlashBase && a < kFlashBase + kFlashSize) { v = flash_[a - kFlashBase]; return true; }
-    if (remapped_ && a < kRamSize) { v = ram_[a]; return true; }
-    if (!remapped_ && a < kFlashSize) { v = flash_[a]; return true; }
-    return false;
+  if (a >= kRamBase && a < kRamBase + kRamSize) {
+    v = ram_[a - kRamBase];
+    return true;
+  }
+  if (a >= kFlashBase && a < kFlashBase + kFlashSize) {
+    v = flash_[a - kFlashBase];
+    return true;
+  }
+  if (remapped_ && a < kRamSize) {
+    v = ram_[a];
+    return true;
+  }
+  if (!remapped_ && a < kFlashSize) {
+    v = flash_[a];
+    return true;
+  }
+  return false;
 }
 
 bool Machine::writeByte(uint32_t a, uint8_t v) {
-    if (a >= kRamBase && a < kRamBase + kRamSize) { ram_[a - kRamBase] = v; return true; }
-    if (remapped_ && a < kRamSize) { ram_[a] = v; return true; }
-    return false;
+  if (a >= kRamBase && a < kRamBase + kRamSize) {
+    ram_[a - kRamBase] = v;
+    return true;
+  }
+  if (remapped_ && a < kRamSize) {
+    ram_[a] = v;
+    return true;
+  }
+  return false;
 }
 
 void Machine::advanceModels() {
-    for (IoDevice* d : devices_) d->advanceTo(clock_.now);
-    aic_.sample();
+  for (IoDevice* d : devices_) d->advanceTo(clock_.now);
+  aic_.sample();
 }
 
 uint64_t Machine::nextEvent() const {
-    uint64_t t = kNever;
-    for (const IoDevice* d : devices_) t = std::min(t, d->nextEventAt());
-    return t;
+  uint64_t t = kNever;
+  for (const IoDevice* d : devices_) t = std::min(t, d->nextEventAt());
+  return t;
 }
 
 void Machine::takeIrq() {
-    uint32_t cpsr = 0, pc = 0;
-    uc_reg_read(uc_, UC_ARM_REG_CPSR, &cpsr);
-    uc_reg_read(uc_, UC_ARM_REG_PC, &pc);
-    const uint32_t irqCpsr = (cpsr & ~0x3Fu) | kCpsrI | 0x12;  // IRQ mode, ARM state, IRQs masked
-    uc_reg_write(uc_, UC_ARM_REG_CPSR, &irqCpsr);               // banks SP/LR first
-    uc_reg_write(uc_, UC_ARM_REG_SPSR, &cpsr);
-    const uint32_t lr = pc + 4;
-    uc_reg_write(uc_, UC_ARM_REG_LR, &lr);
-    const uint32_t vec = 0x18;
-    uc_reg_write(uc_, UC_ARM_REG_PC, &vec);
-    ++irqs_;
+  uint32_t cpsr = 0, pc = 0;
+  uc_reg_read(uc_, UC_ARM_REG_CPSR, &cpsr);
+  uc_reg_read(uc_, UC_ARM_REG_PC, &pc);
+  const uint32_t irqCpsr = (cpsr & ~0x3Fu) | kCpsrI | 0x12;  // IRQ mode, ARM state, IRQs masked
+  uc_reg_write(uc_, UC_ARM_REG_CPSR, &irqCpsr);              // banks SP/LR first
+  uc_reg_write(uc_, UC_ARM_REG_SPSR, &cpsr);
+  const uint32_t lr = pc + 4;
+  uc_reg_write(uc_, UC_ARM_REG_LR, &lr);
+  const uint32_t vec = 0x18;
+  uc_reg_write(uc_, UC_ARM_REG_PC, &vec);
+  ++irqs_;
 }
 
 void Machine::paceToWall() {
-    if (!options_.realtime) return;
-    const double target = wallOrigin_ + secondsFromCycles(clock_.now);
-    const double ahead = target - wallNow();
-    if (ahead > 0.0005) std::this_thread::sleep_for(std::chrono::duration<double>(ahead));
+  if (!options_.realtime) return;
+  const double target = wallOrigin_ + secondsFromCycles(clock_.now);
+  const double ahead = target - wallNow();
+  if (ahead > 0.0005) std::this_thread::sleep_for(std::chrono::duration<double>(ahead));
 }
 
 bool Machine::run(uint64_t until, const std::function<bool()>& stop) {
-    const double wallStart = wallNow();
-    const double cpuStart = cpuNow();
-    if (wallOrigin_ < 0.0) wallOrigin_ = wallStart - secondsFromCycles(clock_.now);
-    while (!fault_) {
-        advanceModels();
-        if (wdt_.expired()) { setFault(FaultKind::Reset, 0, "watchdog timeout (WDT not disabled or restarted)"); break; }
-        if (rstc_.resetRequested()) { setFault(FaultKind::Reset, 0, "processor reset requested via RSTC_RCR"); break; }
-        if (stop && stop()) break;
-        if (clock_.now >= until) break;
-
-        if (idle_) {
-            if (aic_.wakeAsserted()) {
-                idle_ = false;
-                busyStart_ = clock_.now;
-            } else {
-                uint64_t t = nextEvent();
-                if (options_.realtime) t = std::min(t, clock_.now + cyclesFromMs(2));
-                if (t == kNever) {
-                    if (externalWait_ && externalWait_()) continue;
-                    setFault(FaultKind::Deadlock, 0, "processor clock stopped and no interrupt source can wake it");
-                    break;
-                }
-                clock_.now = std::max(clock_.now, std::min(t, until));
-                paceToWall();
-                continue;
-            }
-        }
-
-        uint32_t cpsr = 0;
-        uc_reg_read(uc_, UC_ARM_REG_CPSR, &cpsr);
-        const bool irq = aic_.irqAsserted();
-        if (irq && !(cpsr & kCpsrI)) {
-            takeIrq();
-            cpsr = (cpsr & ~0x3Fu) | kCpsrI | 0x12;
-        }
-        uint64_t stopAt = std::min(nextEvent(), until);
-        if (irq && (cpsr & kCpsrI)) stopAt = std::min(stopAt, clock_.now + kMaskedPoll);
-        if (options_.realtime) stopAt = std::min(stopAt, clock_.now + cyclesFromMs(1));
-        clock_.stopAt = std::max(stopAt, clock_.now + 1);
-        uint32_t pc = 0;
-        uc_reg_read(uc_, UC_ARM_REG_PC, &pc);
-        const uint64_t begin = pc | ((cpsr & kCpsrT) ? 1u : 0u);
-        stoppedAt_ = 0;
-        ++slices_;
-        const uc_err e = uc_emu_start(uc_, begin, 0xFFFFFFF0ull, 0, 0);
-        if (stoppedAt_ != 0 && !fault_) {
-            // Stopped by the block hook before that block ran. Unicorn 2.0.1 sometimes leaves PC past the
-            // block's first instructions (seen on a chained Thumb cmp/beq block); the block did not execute,
-            // so resume exactly at it.
-            uint32_t now = 0;
-            uc_reg_read(uc_, UC_ARM_REG_CPSR, &now);
-            const uint32_t pcT = stoppedAt_ | ((now & kCpsrT) ? 1u : 0u);  // writing PC sets the T bit from bit 0
-            uc_reg_write(uc_, UC_ARM_REG_PC, &pcT);
-        }
-        if (e != UC_ERR_OK && !fault_) setFault(FaultKind::BadMemory, 0, std::string("unicorn: ") + uc_strerror(e));
-        paceToWall();
+  const double wallStart = wallNow();
+  const double cpuStart = cpuNow();
+  if (wallOrigin_ < 0.0) wallOrigin_ = wallStart - secondsFromCycles(clock_.now);
+  while (!fault_) {
+    advanceModels();
+    if (wdt_.expired()) {
+      setFault(FaultKind::Reset, 0, "watchdog timeout (WDT not disabled or restarted)");
+      break;
     }
-    wallSeconds_ += wallNow() - wallStart;
-    cpuSeconds_ += cpuNow() - cpuStart;
-    return !fault_;
+    if (rstc_.resetRequested()) {
+      setFault(FaultKind::Reset, 0, "processor reset requested via RSTC_RCR");
+      break;
+    }
+    if (stop && stop()) break;
+    if (clock_.now >= until) break;
+
+    if (idle_) {
+      if (aic_.wakeAsserted()) {
+        idle_ = false;
+        busyStart_ = clock_.now;
+      } else {
+        uint64_t t = nextEvent();
+        if (options_.realtime) t = std::min(t, clock_.now + cyclesFromMs(2));
+        if (t == kNever) {
+          if (externalWait_ && externalWait_()) continue;
+          setFault(FaultKind::Deadlock, 0, "processor clock stopped and no interrupt source can wake it");
+          break;
+        }
+        clock_.now = std::max(clock_.now, std::min(t, until));
+        paceToWall();
+        continue;
+      }
+    }
+
+    uint32_t cpsr = 0;
+    uc_reg_read(uc_, UC_ARM_REG_CPSR, &cpsr);
+    const bool irq = aic_.irqAsserted();
+    if (irq && !(cpsr & kCpsrI)) {
+      takeIrq();
+      cpsr = (cpsr & ~0x3Fu) | kCpsrI | 0x12;
+    }
+    uint64_t stopAt = std::min(nextEvent(), until);
+    if (irq && (cpsr & kCpsrI)) stopAt = std::min(stopAt, clock_.now + kMaskedPoll);
+    if (options_.realtime) stopAt = std::min(stopAt, clock_.now + cyclesFromMs(1));
+    clock_.stopAt = std::max(stopAt, clock_.now + 1);
+    uint32_t pc = 0;
+    uc_reg_read(uc_, UC_ARM_REG_PC, &pc);
+    const uint64_t begin = pc | ((cpsr & kCpsrT) ? 1u : 0u);
+    stoppedAt_ = 0;
+    ++slices_;
+    const uc_err e = uc_emu_start(uc_, begin, 0xFFFFFFF0ull, 0, 0);
+    if (stoppedAt_ != 0 && !fault_) {
+      // Stopped by the block hook before that block ran. Unicorn 2.0.1 sometimes leaves PC past the
+      // block's first instructions (seen on a chained Thumb cmp/beq block); the block did not execute,
+      // so resume exactly at it.
+      uint32_t now = 0;
+      uc_reg_read(uc_, UC_ARM_REG_CPSR, &now);
+      const uint32_t pcT = stoppedAt_ | ((now & kCpsrT) ? 1u : 0u);  // writing PC sets the T bit from bit 0
+      uc_reg_write(uc_, UC_ARM_REG_PC, &pcT);
+    }
+    if (e != UC_ERR_OK && !fault_) setFault(FaultKind::BadMemory, 0, std::string("unicorn: ") + uc_strerror(e));
+    paceToWall();
+  }
+  wallSeconds_ += wallNow() - wallStart;
+  cpuSeconds_ += cpuNow() - cpuStart;
+  return !fault_;
 }
 
 MachineStats Machine::stats() const {
-    MachineStats s;
-    s.cycles = clock_.now;
-    s.executed = executed_;
-    s.irqs = irqs_;
-    s.slices = slices_;
-    s.idles = pmc_.idleRequests();
-    s.maxBusy = std::max(maxBusy_, idle_ ? 0 : clock_.now - busyStart_);
-    s.timedCalls = timedCalls_;
-    s.maxTimed = maxTimed_;
-    s.wallSeconds = wallSeconds_;
-    s.cpuSeconds = cpuSeconds_;
-    return s;
+  MachineStats s;
+  s.cycles = clock_.now;
+  s.executed = executed_;
+  s.irqs = irqs_;
+  s.slices = slices_;
+  s.idles = pmc_.idleRequests();
+  s.maxBusy = std::max(maxBusy_, idle_ ? 0 : clock_.now - busyStart_);
+  s.timedCalls = timedCalls_;
+  s.maxTimed = maxTimed_;
+  s.wallSeconds = wallSeconds_;
+  s.cpuSeconds = cpuSeconds_;
+  return s;
 }
 
 RamUse Machine::ramUse() const {
-    RamUse r;
-    const uint32_t ebss = image_.firstSymbol({"_ebss", "__bss_end__", "_end", "end"}).value_or(kRamBase);
-    const uint32_t lo = std::clamp(ebss, kRamBase, kRamBase + kRamSize);
-    r.staticBytes = lo - kRamBase;
-    uint32_t lowest = kRamBase + kRamSize;
-    for (uint32_t a = lo; a < kRamBase + kRamSize; ++a)
-        if (ram_[a - kRamBase] != kPaint) { lowest = a; break; }
-    r.stackBytes = kRamBase + kRamSize - lowest;
-    return r;
+  RamUse r;
+  const uint32_t ebss = image_.firstSymbol({"_ebss", "__bss_end__", "_end", "end"}).value_or(kRamBase);
+  const uint32_t lo = std::clamp(ebss, kRamBase, kRamBase + kRamSize);
+  r.staticBytes = lo - kRamBase;
+  uint32_t lowest = kRamBase + kRamSize;
+  for (uint32_t a = lo; a < kRamBase + kRamSize; ++a)
+    if (ram_[a - kRamBase] != kPaint) {
+      lowest = a;
+      break;
+    }
+  r.stackBytes = kRamBase + kRamSize - lowest;
+  return r;
 }
 
 }  // namespace nxtmap::emu

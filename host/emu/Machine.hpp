@@ -27,120 +27,123 @@ struct uc_struct;
 namespace nxtmap::emu {
 
 struct MachineOptions {
-    bool checkAlignment = true;  // trap unaligned loads/stores (costs a memory hook on every access)
-    bool realtime = false;       // pace emulated time to the wall clock
-    // Lowest address the stacks may use: writes in [guardLow, stackLimit) are a stack overflow.
-    // Taken from the ELF (_ebss/__bss_end__ .. __stack_limit__/__stacks_start__) when not set.
-    std::optional<uint32_t> guardLow, stackLimit;
-    // Time one function from entry to return (e.g. the sensor update), by symbol name or address.
-    std::optional<std::string> timedFunction;
+  bool checkAlignment = true;  // trap unaligned loads/stores (costs a memory hook on every access)
+  bool realtime = false;       // pace emulated time to the wall clock
+  // Lowest address the stacks may use: writes in [guardLow, stackLimit) are a stack overflow.
+  // Taken from the ELF (_ebss/__bss_end__ .. __stack_limit__/__stacks_start__) when not set.
+  std::optional<uint32_t> guardLow, stackLimit;
+  // Time one function from entry to return (e.g. the sensor update), by symbol name or address.
+  std::optional<std::string> timedFunction;
 };
 
 struct RamUse {
-    uint32_t staticBytes = 0;  // RAM base .. end of .bss (vectors, .data, .bss)
-    uint32_t stackBytes = 0;   // deepest stack use found by painting (RAM top down)
-    uint32_t total() const { return staticBytes + stackBytes; }
+  uint32_t staticBytes = 0;  // RAM base .. end of .bss (vectors, .data, .bss)
+  uint32_t stackBytes = 0;   // deepest stack use found by painting (RAM top down)
+  uint32_t total() const { return staticBytes + stackBytes; }
 };
 
 struct MachineStats {
-    uint64_t cycles = 0;          // emulated cycles (= instructions executed + idle cycles skipped)
-    uint64_t executed = 0;        // instructions executed
-    uint64_t irqs = 0;            // IRQs entered
-    uint64_t slices = 0;          // times the CPU was (re)started: IRQs, events, pokes
-    uint64_t idles = 0;           // times the processor clock was stopped
-    uint64_t maxBusy = 0;         // longest stretch of instructions between two idles
-    uint64_t timedCalls = 0;      // calls of the timed function
-    uint64_t maxTimed = 0;        // most instructions in one call of it (including interrupts taken)
-    double wallSeconds = 0.0;     // host time spent in run()
-    double cpuSeconds = 0.0;      // host CPU time of the running thread spent in run() (load-independent)
+  uint64_t cycles = 0;       // emulated cycles (= instructions executed + idle cycles skipped)
+  uint64_t executed = 0;     // instructions executed
+  uint64_t irqs = 0;         // IRQs entered
+  uint64_t slices = 0;       // times the CPU was (re)started: IRQs, events, pokes
+  uint64_t idles = 0;        // times the processor clock was stopped
+  uint64_t maxBusy = 0;      // longest stretch of instructions between two idles
+  uint64_t timedCalls = 0;   // calls of the timed function
+  uint64_t maxTimed = 0;     // most instructions in one call of it (including interrupts taken)
+  double wallSeconds = 0.0;  // host time spent in run()
+  double cpuSeconds = 0.0;   // host CPU time of the running thread spent in run() (load-independent)
 };
 
 class Machine : public GuestMemory {
-public:
-    Machine(const ElfImage& image, const MachineOptions& options);
-    ~Machine() override;
-    Machine(const Machine&) = delete;
-    Machine& operator=(const Machine&) = delete;
+ public:
+  Machine(const ElfImage& image, const MachineOptions& options);
+  ~Machine() override;
+  Machine(const Machine&) = delete;
+  Machine& operator=(const Machine&) = delete;
 
-    Clock& clock() { return clock_; }
-    Aic& aic() { return aic_; }
-    Pmc& pmc() { return pmc_; }
-    const ElfImage& image() const { return image_; }
+  Clock& clock() { return clock_; }
+  Aic& aic() { return aic_; }
+  Pmc& pmc() { return pmc_; }
+  const ElfImage& image() const { return image_; }
 
-    // Attaches a board peripheral at [base, base+size) (a multiple of 16 bytes, inside the MMIO window).
-    void attach(uint32_t base, uint32_t size, IoDevice& device);
-    // A model with its own time (e.g. the wheels) that has no registers.
-    void addTimeSource(IoDevice& device) { devices_.push_back(&device); }
+  // Attaches a board peripheral at [base, base+size) (a multiple of 16 bytes, inside the MMIO window).
+  void attach(uint32_t base, uint32_t size, IoDevice& device);
+  // A model with its own time (e.g. the wheels) that has no registers.
+  void addTimeSource(IoDevice& device) { devices_.push_back(&device); }
 
-    // Runs until `until` cycles, a fault, or stop() returning true (checked at every event boundary).
-    // Returns false on a fault (see fault()).
-    bool run(uint64_t untilCycles, const std::function<bool()>& stop = {});
-    // Called when the CPU is idle and no model will ever produce an event: return true if something
-    // external (e.g. the PC link) may have changed state; false ends the run with a deadlock fault.
-    void setExternalWait(std::function<bool()> wait) { externalWait_ = std::move(wait); }
+  // Runs until `until` cycles, a fault, or stop() returning true (checked at every event boundary).
+  // Returns false on a fault (see fault()).
+  bool run(uint64_t untilCycles, const std::function<bool()>& stop = {});
+  // Called when the CPU is idle and no model will ever produce an event: return true if something
+  // external (e.g. the PC link) may have changed state; false ends the run with a deadlock fault.
+  void setExternalWait(std::function<bool()> wait) { externalWait_ = std::move(wait); }
 
-    const EmuFault& fault() const { return fault_; }
-    MachineStats stats() const;
-    RamUse ramUse() const;
-    bool idle() const { return idle_; }
+  const EmuFault& fault() const { return fault_; }
+  MachineStats stats() const;
+  RamUse ramUse() const;
+  bool idle() const { return idle_; }
 
-    bool readByte(uint32_t address, uint8_t& value) const override;
-    bool writeByte(uint32_t address, uint8_t value) override;
+  bool readByte(uint32_t address, uint8_t& value) const override;
+  bool writeByte(uint32_t address, uint8_t value) override;
 
-    // Used by the Unicorn callbacks.
-    struct Hooks;
+  // Used by the Unicorn callbacks.
+  struct Hooks;
 
-private:
-    void setFault(FaultKind kind, uint32_t address, std::string what, std::optional<uint32_t> pc = {});
-    uint32_t currentPc() const;
-    void applyRemap();
-    void advanceModels();
-    uint64_t nextEvent() const;
-    void takeIrq();
-    void paceToWall();
+ private:
+  void setFault(FaultKind kind, uint32_t address, std::string what, std::optional<uint32_t> pc = {});
+  uint32_t currentPc() const;
+  void applyRemap();
+  void advanceModels();
+  uint64_t nextEvent() const;
+  void takeIrq();
+  void paceToWall();
 
-    const ElfImage& image_;
-    MachineOptions options_;
-    uc_struct* uc_ = nullptr;
-    uint8_t* flash_ = nullptr;
-    uint8_t* ram_ = nullptr;
-    Clock clock_;
-    Aic aic_;
-    Pit pit_{clock_};
-    Pmc pmc_;
-    Watchdog wdt_{clock_};
-    ResetController rstc_;
-    VoltageRegulator vreg_;
-    MemoryController mc_;
-    std::vector<IoDevice*> devices_;             // all models, for time
-    std::vector<uint8_t> page_;                   // MMIO 16-byte slot -> 1 + index into slots_, 0 = none
-    struct Slot { uint32_t base; IoDevice* device; };
-    std::vector<Slot> slots_;
-    bool remapped_ = false;
-    bool idle_ = false;
-    uint64_t executed_ = 0;
-    uint64_t busyStart_ = 0;
-    uint64_t maxBusy_ = 0;
-    uint64_t irqs_ = 0;
-    uint64_t slices_ = 0;
-    uint32_t lastBlock_ = 0;
-    // Per halfword of code (address 0 window, flash, RAM): 0 unknown, 1 ARM, 2 Thumb. Code at an address keeps
-    // its state; self-modifying code that switches state at an address is not supported.
-    std::vector<uint8_t> modes_ = std::vector<uint8_t>((2 * kFlashSize + kRamSize) / 2, 0);
-    int modeSlot(uint32_t address) const;  // index into modes_, -1 outside
-    uint32_t stoppedAt_ = 0;     // block at which the block hook stopped the CPU (0 = none)
-    uint32_t guardLow_ = 0, stackLimit_ = 0;
-    uint32_t timedEntry_ = 0;
-    uint32_t timedReturn_ = 0;   // 0 = not inside a timed call
-    uint64_t timedStart_ = 0;
-    uint64_t blockStart_ = 0;    // clock at the start of the current block
-    uint64_t timedCalls_ = 0, maxTimed_ = 0;
-    EmuFault fault_;
-    std::function<bool()> externalWait_;
-    bool trace_ = false;
-    double wallSeconds_ = 0.0;
-    double cpuSeconds_ = 0.0;
-    double wallOrigin_ = -1.0;   // realtime pacing: wall second at cycle 0
+  const ElfImage& image_;
+  MachineOptions options_;
+  uc_struct* uc_ = nullptr;
+  uint8_t* flash_ = nullptr;
+  uint8_t* ram_ = nullptr;
+  Clock clock_;
+  Aic aic_;
+  Pit pit_{clock_};
+  Pmc pmc_;
+  Watchdog wdt_{clock_};
+  ResetController rstc_;
+  VoltageRegulator vreg_;
+  MemoryController mc_;
+  std::vector<IoDevice*> devices_;  // all models, for time
+  std::vector<uint8_t> page_;       // MMIO 16-byte slot -> 1 + index into slots_, 0 = none
+  struct Slot {
+    uint32_t base;
+    IoDevice* device;
+  };
+  std::vector<Slot> slots_;
+  bool remapped_ = false;
+  bool idle_ = false;
+  uint64_t executed_ = 0;
+  uint64_t busyStart_ = 0;
+  uint64_t maxBusy_ = 0;
+  uint64_t irqs_ = 0;
+  uint64_t slices_ = 0;
+  uint32_t lastBlock_ = 0;
+  // Per halfword of code (address 0 window, flash, RAM): 0 unknown, 1 ARM, 2 Thumb. Code at an address keeps
+  // its state; self-modifying code that switches state at an address is not supported.
+  std::vector<uint8_t> modes_ = std::vector<uint8_t>((2 * kFlashSize + kRamSize) / 2, 0);
+  int modeSlot(uint32_t address) const;  // index into modes_, -1 outside
+  uint32_t stoppedAt_ = 0;               // block at which the block hook stopped the CPU (0 = none)
+  uint32_t guardLow_ = 0, stackLimit_ = 0;
+  uint32_t timedEntry_ = 0;
+  uint32_t timedReturn_ = 0;  // 0 = not inside a timed call
+  uint64_t timedStart_ = 0;
+  uint64_t blockStart_ = 0;  // clock at the start of the current block
+  uint64_t timedCalls_ = 0, maxTimed_ = 0;
+  EmuFault fault_;
+  std::function<bool()> externalWait_;
+  bool trace_ = false;
+  double wallSeconds_ = 0.0;
+  double cpuSeconds_ = 0.0;
+  double wallOrigin_ = -1.0;  // realtime pacing: wall second at cycle 0
 };
 
 }  // namespace nxtmap::emu

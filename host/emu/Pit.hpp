@@ -7,31 +7,31 @@
 namespace nxtmap::emu {
 
 class Pit : public IoDevice {
-public:
-    static constexpr uint32_t kBase = 0xFFFFFD30;
-    static constexpr uint32_t kSize = 0x10;
-    explicit Pit(Clock& clock) : clock_(clock) {}
+ public:
+  static constexpr uint32_t kBase = 0xFFFFFD30;
+  static constexpr uint32_t kSize = 0x10;
+  explicit Pit(Clock& clock) : clock_(clock) {}
 
-    const char* name() const override { return "PIT"; }
-    bool read(uint32_t offset, uint32_t& value) override;
-    bool write(uint32_t offset, uint32_t value) override;
-    uint64_t nextEventAt() const override;
+  const char* name() const override { return "PIT"; }
+  bool read(uint32_t offset, uint32_t& value) override;
+  bool write(uint32_t offset, uint32_t value) override;
+  uint64_t nextEventAt() const override;
 
-    bool irqLine() const { return (mr_ & kItEn) && periodsUnread() > 0; }
-    uint64_t periodCycles() const { return (uint64_t{mr_ & 0xFFFFF} + 1) * 16; }
+  bool irqLine() const { return (mr_ & kItEn) && periodsUnread() > 0; }
+  uint64_t periodCycles() const { return (uint64_t{mr_ & 0xFFFFF} + 1) * 16; }
 
-private:
-    static constexpr uint32_t kEn = 1u << 24, kItEn = 1u << 25;
-    uint64_t periods() const;        // whole periods since start
-    uint64_t periodsUnread() const { return periods() - periodsRead_; }
-    uint32_t valueRegister() const;  // PICNT | CPIV
+ private:
+  static constexpr uint32_t kEn = 1u << 24, kItEn = 1u << 25;
+  uint64_t periods() const;  // whole periods since start
+  uint64_t periodsUnread() const { return periods() - periodsRead_; }
+  uint32_t valueRegister() const;  // PICNT | CPIV
 
-    Clock& clock_;
-    uint32_t mr_ = 0x000FFFFF;  // reset value: PIV max, disabled
-    uint64_t start_ = 0;
-    uint64_t periodsRead_ = 0;
-    uint64_t frozenAt_ = 0;     // when PITEN was cleared (counting stops)
-    bool running_ = false;
+  Clock& clock_;
+  uint32_t mr_ = 0x000FFFFF;  // reset value: PIV max, disabled
+  uint64_t start_ = 0;
+  uint64_t periodsRead_ = 0;
+  uint64_t frozenAt_ = 0;  // when PITEN was cleared (counting stops)
+  bool running_ = false;
 };
 
 }  // namespace nxtmap::emu

@@ -6,11 +6,11 @@
 namespace nxtmap::emu {
 
 class SerialPeer {
-public:
-    virtual ~SerialPeer() = default;
-    virtual void fromArm(uint8_t byte) = 0;
-    virtual bool hasByteForArm() const = 0;
-    virtual uint8_t takeByteForArm() = 0;
+ public:
+  virtual ~SerialPeer() = default;
+  virtual void fromArm(uint8_t byte) = 0;
+  virtual bool hasByteForArm() const = 0;
+  virtual uint8_t takeByteForArm() = 0;
 };
 
 }  // namespace nxtmap::emu

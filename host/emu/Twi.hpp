@@ -12,40 +12,40 @@
 namespace nxtmap::emu {
 
 class Twi : public IoDevice {
-public:
-    static constexpr uint32_t kBase = 0xFFFB8000;
-    static constexpr uint32_t kSize = 0x100;
-    Twi(Clock& clock, AvrModel& avr) : clock_(clock), avr_(avr) {}
+ public:
+  static constexpr uint32_t kBase = 0xFFFB8000;
+  static constexpr uint32_t kSize = 0x100;
+  Twi(Clock& clock, AvrModel& avr) : clock_(clock), avr_(avr) {}
 
-    const char* name() const override { return "TWI"; }
-    bool read(uint32_t offset, uint32_t& value) override;
-    bool write(uint32_t offset, uint32_t value) override;
-    bool writeReplans(uint32_t off) const override { return off != 0x04 && off != 0x0C && off != 0x10; }
-    uint64_t nextEventAt() const override { return busyUntil_; }
-    void advanceTo(uint64_t now) override;
-    bool irqLine() const { return (sr_ & imr_) != 0; }
-    uint64_t frames() const { return frames_; }
+  const char* name() const override { return "TWI"; }
+  bool read(uint32_t offset, uint32_t& value) override;
+  bool write(uint32_t offset, uint32_t value) override;
+  bool writeReplans(uint32_t off) const override { return off != 0x04 && off != 0x0C && off != 0x10; }
+  uint64_t nextEventAt() const override { return busyUntil_; }
+  void advanceTo(uint64_t now) override;
+  bool irqLine() const { return (sr_ & imr_) != 0; }
+  uint64_t frames() const { return frames_; }
 
-private:
-    static constexpr uint32_t kTxcomp = 1, kRxrdy = 2, kTxrdy = 4, kOvre = 1u << 6, kNack = 1u << 8;
-    uint64_t byteCycles() const;
-    void reset();
-    void startByte();
-    void endFrame();
+ private:
+  static constexpr uint32_t kTxcomp = 1, kRxrdy = 2, kTxrdy = 4, kOvre = 1u << 6, kNack = 1u << 8;
+  uint64_t byteCycles() const;
+  void reset();
+  void startByte();
+  void endFrame();
 
-    Clock& clock_;
-    AvrModel& avr_;
-    uint32_t mmr_ = 0, iadr_ = 0, cwgr_ = 0, imr_ = 0, rhr_ = 0;
-    uint32_t sr_ = kTxcomp | kTxrdy;
-    bool enabled_ = false;
-    bool inFrame_ = false, reading_ = false, stopAsked_ = false;
-    bool thrFull_ = false;
-    uint8_t thr_ = 0;
-    uint64_t busyUntil_ = kNever;  // end of the byte on the wire
-    std::vector<uint8_t> frame_;
-    size_t readIndex_ = 0;
-    std::array<uint8_t, 13> reply_{};
-    uint64_t frames_ = 0;
+  Clock& clock_;
+  AvrModel& avr_;
+  uint32_t mmr_ = 0, iadr_ = 0, cwgr_ = 0, imr_ = 0, rhr_ = 0;
+  uint32_t sr_ = kTxcomp | kTxrdy;
+  bool enabled_ = false;
+  bool inFrame_ = false, reading_ = false, stopAsked_ = false;
+  bool thrFull_ = false;
+  uint8_t thr_ = 0;
+  uint64_t busyUntil_ = kNever;  // end of the byte on the wire
+  std::vector<uint8_t> frame_;
+  size_t readIndex_ = 0;
+  std::array<uint8_t, 13> reply_{};
+  uint64_t frames_ = 0;
 };
 
 }  // namespace nxtmap::emu

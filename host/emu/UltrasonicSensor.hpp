@@ -17,52 +17,52 @@
 namespace nxtmap::emu {
 
 class UltrasonicSensor {
-public:
-    // port 0..3 (NXT ports 1..4); facing 0 front, 1 right, 2 back, 3 left (SimRobot sensor index).
-    // othersFiring(port): whether another sensor pings at the same time (cross-talk model).
-    UltrasonicSensor(Clock& clock, Pioa& pio, const AvrModel& avr, sim::SimRobot& robot, int port, int facing,
-                     std::function<bool(int)> othersFiring);
+ public:
+  // port 0..3 (NXT ports 1..4); facing 0 front, 1 right, 2 back, 3 left (SimRobot sensor index).
+  // othersFiring(port): whether another sensor pings at the same time (cross-talk model).
+  UltrasonicSensor(Clock& clock, Pioa& pio, const AvrModel& avr, sim::SimRobot& robot, int port, int facing,
+                   std::function<bool(int)> othersFiring);
 
-    static constexpr std::array<int, 4> kSclPin{23, 28, 29, 30};
-    static constexpr std::array<int, 4> kSdaPin{18, 19, 20, 2};
+  static constexpr std::array<int, 4> kSclPin{23, 28, 29, 30};
+  static constexpr std::array<int, 4> kSdaPin{18, 19, 20, 2};
 
-    uint64_t pings() const { return pings_; }          // sonar samples taken
-    uint64_t transactions() const { return acked_; }   // address bytes ACKed
-    uint8_t mode() const { return regs_[0x41]; }
-    uint64_t lastPingAt() const { return lastPingAt_; }
+  uint64_t pings() const { return pings_; }         // sonar samples taken
+  uint64_t transactions() const { return acked_; }  // address bytes ACKed
+  uint8_t mode() const { return regs_[0x41]; }
+  uint64_t lastPingAt() const { return lastPingAt_; }
 
-private:
-    enum class State { Idle, Address, AddrAck, Write, WriteAck, Read, ReadAck, Ignore };
-    void onLines(uint32_t levels);
-    void onSclRise(bool sda);
-    void onSclFall();
-    void written(uint8_t value);
-    void ping();
-    uint8_t readRegister(uint8_t reg);
-    void pull(bool low);
+ private:
+  enum class State { Idle, Address, AddrAck, Write, WriteAck, Read, ReadAck, Ignore };
+  void onLines(uint32_t levels);
+  void onSclRise(bool sda);
+  void onSclFall();
+  void written(uint8_t value);
+  void ping();
+  uint8_t readRegister(uint8_t reg);
+  void pull(bool low);
 
-    Clock& clock_;
-    Pioa& pio_;
-    const AvrModel& avr_;
-    sim::SimRobot& robot_;
-    int port_, facing_;
-    std::function<bool(int)> othersFiring_;
-    int client_;
-    uint32_t sclMask_, sdaMask_;
-    bool scl_ = true, sda_ = true;
-    State state_ = State::Idle;
-    uint8_t shift_ = 0;
-    int bits_ = 0;             // bits received (Address/Write) or index of the bit on the line (Read)
-    bool readFrame_ = false;   // address byte had R/W = 1
-    bool firstData_ = false;   // next written byte is the register pointer
-    uint8_t pointer_ = 0;
-    uint8_t out_ = 0;          // byte being sent
-    bool pullSda_ = false;     // slave output: true = pulling SDA low
-    bool masterAck_ = false;
-    std::array<uint8_t, 256> regs_{};
-    uint64_t lastPingAt_ = 0;
-    bool havePing_ = false;
-    uint64_t pings_ = 0, acked_ = 0;
+  Clock& clock_;
+  Pioa& pio_;
+  const AvrModel& avr_;
+  sim::SimRobot& robot_;
+  int port_, facing_;
+  std::function<bool(int)> othersFiring_;
+  int client_;
+  uint32_t sclMask_, sdaMask_;
+  bool scl_ = true, sda_ = true;
+  State state_ = State::Idle;
+  uint8_t shift_ = 0;
+  int bits_ = 0;            // bits received (Address/Write) or index of the bit on the line (Read)
+  bool readFrame_ = false;  // address byte had R/W = 1
+  bool firstData_ = false;  // next written byte is the register pointer
+  uint8_t pointer_ = 0;
+  uint8_t out_ = 0;       // byte being sent
+  bool pullSda_ = false;  // slave output: true = pulling SDA low
+  bool masterAck_ = false;
+  std::array<uint8_t, 256> regs_{};
+  uint64_t lastPingAt_ = 0;
+  bool havePing_ = false;
+  uint64_t pings_ = 0, acked_ = 0;
 };
 
 }  // namespace nxtmap::emu

@@ -9,9 +9,9 @@
 namespace nxtmap::emu {
 namespace {
 bool defaultOn() {
-    unsigned major = 0, minor = 0;
-    uc_version(&major, &minor);
-    return major == 2 && minor == 0;  // later releases carry the upstream fix themselves
+  unsigned major = 0, minor = 0;
+  uc_version(&major, &minor);
+  return major == 2 && minor == 0;  // later releases carry the upstream fix themselves
 }
 std::atomic<bool> g_fast{defaultOn()};
 }  // namespace
@@ -24,15 +24,15 @@ void setUnicornFastStores(bool on) { g_fast.store(on && defaultOn(), std::memory
 // Interposed over libunicorn's own definitions (exported from the executable, see host/CMakeLists.txt).
 extern "C" {
 void* page_collection_lock_arm(void* uc, unsigned long start, unsigned long end) {
-    if (nxtmap::emu::unicornFastStores()) return nullptr;  // the result is only ever handed to _unlock
-    using Fn = void* (*)(void*, unsigned long, unsigned long);
-    static const auto real = reinterpret_cast<Fn>(dlsym(RTLD_NEXT, "page_collection_lock_arm"));
-    return real ? real(uc, start, end) : nullptr;
+  if (nxtmap::emu::unicornFastStores()) return nullptr;  // the result is only ever handed to _unlock
+  using Fn = void* (*)(void*, unsigned long, unsigned long);
+  static const auto real = reinterpret_cast<Fn>(dlsym(RTLD_NEXT, "page_collection_lock_arm"));
+  return real ? real(uc, start, end) : nullptr;
 }
 void page_collection_unlock_arm(void* set) {
-    if (set == nullptr) return;
-    using Fn = void (*)(void*);
-    static const auto real = reinterpret_cast<Fn>(dlsym(RTLD_NEXT, "page_collection_unlock_arm"));
-    if (real) real(set);
+  if (set == nullptr) return;
+  using Fn = void (*)(void*);
+  static const auto real = reinterpret_cast<Fn>(dlsym(RTLD_NEXT, "page_collection_unlock_arm"));
+  if (real) real(set);
 }
 }

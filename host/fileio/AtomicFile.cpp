@@ -15,8 +15,8 @@ namespace nxtmap::fileio {
 namespace {
 namespace fs = std::filesystem;
 
-constexpr int kMaxTempAttempts = 1000;  // unique names tried before giving up
-constexpr const char* kTempInfix = ".tmp-";   // "<target>.tmp-<pid>-<n>"
+constexpr int kMaxTempAttempts = 1000;       // unique names tried before giving up
+constexpr const char* kTempInfix = ".tmp-";  // "<target>.tmp-<pid>-<n>"
 
 std::string folderOf(const std::string& file) {
   const fs::path p(file);

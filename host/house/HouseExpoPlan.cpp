@@ -109,7 +109,8 @@ std::vector<std::string> rasterise(const std::vector<Point>& poly, double x0, do
 }
 
 // The outline as one Hard ring in the raster's plane (cm, y down from the top edge at y0 + h * res).
-std::shared_ptr<const sim::Scene> outlineScene(const std::vector<Point>& poly, double x0, double y0, int h, double res) {
+std::shared_ptr<const sim::Scene> outlineScene(const std::vector<Point>& poly, double x0, double y0, int h,
+                                               double res) {
   const double topM = y0 + h * res;
   sim::Ring ring;
   ring.surface = sim::Surface::Hard;
@@ -150,11 +151,12 @@ std::string readRooms(const nlohmann::json& j, const Extent& outline, double x0,
       if (rooms.size() == kMaxPlanRoomBoxes) {
         return "'room_category' holds more than " + std::to_string(kMaxPlanRoomBoxes) + " boxes";
       }
-      const double bx1 = b[0].get<double>(), by1 = b[1].get<double>(), bx2 = b[2].get<double>(), by2 = b[3].get<double>();
+      const double bx1 = b[0].get<double>(), by1 = b[1].get<double>(), bx2 = b[2].get<double>(),
+                   by2 = b[3].get<double>();
       if (std::max(bx1, bx2) < outline.minX || std::min(bx1, bx2) > outline.maxX || std::max(by1, by2) < outline.minY ||
           std::min(by1, by2) > outline.maxY) {
-        return "room_category '" + category + "' holds a box [" + metres(bx1) + ", " + metres(by1) + ", " + metres(bx2) +
-               ", " + metres(by2) + "] that lies outside the outline";
+        return "room_category '" + category + "' holds a box [" + metres(bx1) + ", " + metres(by1) + ", " +
+               metres(bx2) + ", " + metres(by2) + "] that lies outside the outline";
       }
       PlanRoom r;
       r.category = category;
@@ -218,7 +220,8 @@ HousePlanLoad parseHouseExpo(const std::string& text, const std::string& name, d
   plan.roomNum = static_cast<int>(plan.rooms.size());
   if (j.contains("room_num")) {
     const nlohmann::json& n = j["room_num"];
-    if (!n.is_number_integer() || n.get<long long>() < 0 || n.get<long long>() > static_cast<long long>(kMaxPlanRoomBoxes)) {
+    if (!n.is_number_integer() || n.get<long long>() < 0 ||
+        n.get<long long>() > static_cast<long long>(kMaxPlanRoomBoxes)) {
       return fail(name, "'room_num' must be a whole number in 0.." + std::to_string(kMaxPlanRoomBoxes));
     }
     plan.roomNum = n.get<int>();

@@ -27,8 +27,8 @@ struct PlanRoom {
 
 struct HousePlan {
   std::string id;
-  int roomNum = 0;               // the plan's own room count
-  std::vector<PlanRoom> rooms;   // one per room box
+  int roomNum = 0;              // the plan's own room count
+  std::vector<PlanRoom> rooms;  // one per room box
   sim::World world;
   // The metres of the world's lower-left corner (col 0's left edge, the last row's bottom edge).
   double originXM = 0.0, originYM = 0.0;

@@ -62,8 +62,7 @@ void HouseMapper::mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, 
   const network::RoomTransform toRoom = toHouse.inverse();
   std::vector<Cell> entrance;
   for (const Cell c : entranceHouse) entrance.push_back(toRoom.apply(c));
-  RoomRun run(robot_, explorerConfig_, config_.strategy, config_.doorways, entrance, pilotConfig(),
-              config_.roomLimits);
+  RoomRun run(robot_, explorerConfig_, config_.strategy, config_.doorways, entrance, pilotConfig(), config_.roomLimits);
   run.runToEnd();
   headingVariance_ = run.handOverHeadingVariance();
   if (std::getenv("NXTMAP_HOUSE_DEBUG")) {
@@ -292,8 +291,9 @@ void HouseMapper::mapPendingExits() {
   bool relocalisedHere = false;  // since the robot last moved
   while (!pending_.empty() && static_cast<int>(network_.rooms().size()) < config_.maxRooms) {
     // Exits into rooms already mapped become gateways without a run.
-    pending_.erase(std::remove_if(pending_.begin(), pending_.end(), [&](const Pending& p) { return leadsToMappedRoom(p); }),
-                   pending_.end());
+    pending_.erase(
+        std::remove_if(pending_.begin(), pending_.end(), [&](const Pending& p) { return leadsToMappedRoom(p); }),
+        pending_.end());
     if (pending_.empty()) break;
     const network::RoomMap known = knownForTravel();
     const std::vector<int> dist = travelDistances(known, belief_.cell);
@@ -303,8 +303,8 @@ void HouseMapper::mapPendingExits() {
       const network::RoomNode& owner = network_.rooms()[static_cast<size_t>(pending_[i].room)];
       const Cell in = owner.toHouse.apply(pending_[i].exit.inside);
       if (!known.inside(in)) continue;
-      const int d = dist.empty() ? -1
-                                 : dist[static_cast<size_t>((in.y - known.minY()) * known.width() + (in.x - known.minX()))];
+      const int d =
+          dist.empty() ? -1 : dist[static_cast<size_t>((in.y - known.minY()) * known.width() + (in.x - known.minX()))];
       if (d >= 0 && d < bestDist) {
         bestDist = d;
         best = i;

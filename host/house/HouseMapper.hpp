@@ -35,17 +35,18 @@ struct HouseConfig {
   // The robot (cells, body, sensor mounts, trusted range: replaces rangeM/minRangeM); empty: a point robot of
   // the raster's own cells (the published set-up).
   std::optional<sim::RobotDescription> robot;
-  double rangeM = 1.0, minRangeM = 0.05;    // trusted sensor range (published: 5 cm - 1 m)
+  double rangeM = 1.0, minRangeM = 0.05;  // trusted sensor range (published: 5 cm - 1 m)
   double sensorReachCm = 255.0;
   sim::NoiseProfile noise;
   uint64_t seed = 1;
-  mapping::Strategy strategy = mapping::Strategy::Frontier;  // fewer turns than the published staircase: the pose holds better
-  DoorwayLimits doorways{4, 15, 3, 2};     // cells: 0.4 .. 1.5 m doorways at 10 cm cells, walls of 2+ cells
-  RoomLimits roomLimits{3, 80};             // an open area over 8 m (at 10 cm cells) is several rooms
-  int maxRooms = 40;                        // safety stop
-  bool poseCorrection = true;               // the pilot keeps the robot on the grid (off: dead reckoning)
-  int registerCells = 2;                    // a new room's frame may shift this far to fit the rooms mapped (0: off)
-  int maxOpenings = 6;                      // openings onto unknown space the exits missed, explored at the end (0: none)
+  mapping::Strategy strategy =
+      mapping::Strategy::Frontier;      // fewer turns than the published staircase: the pose holds better
+  DoorwayLimits doorways{4, 15, 3, 2};  // cells: 0.4 .. 1.5 m doorways at 10 cm cells, walls of 2+ cells
+  RoomLimits roomLimits{3, 80};         // an open area over 8 m (at 10 cm cells) is several rooms
+  int maxRooms = 40;                    // safety stop
+  bool poseCorrection = true;           // the pilot keeps the robot on the grid (off: dead reckoning)
+  int registerCells = 2;                // a new room's frame may shift this far to fit the rooms mapped (0: off)
+  int maxOpenings = 6;                  // openings onto unknown space the exits missed, explored at the end (0: none)
   // A robot that drives into a wall the map does not have on the way to an exit, or finds no exit
   // reachable from where it believes it stands, reads all four sides and moves its belief by the
   // whole cells (up to this many each way) that fit the map best, then tries once more (0: off).
@@ -57,9 +58,9 @@ struct HouseConfig {
 };
 
 struct HouseCounters {
-  Counters explore;                 // summed over the room runs
-  Counters travel;                  // driving between rooms (to exits, through doorways)
-  uint32_t travelBlocked = 0;       // travels that did not arrive
+  Counters explore;            // summed over the room runs
+  Counters travel;             // driving between rooms (to exits, through doorways)
+  uint32_t travelBlocked = 0;  // travels that did not arrive
   double timeUnits() const { return (explore.timeHalfUnits() + travel.timeHalfUnits()) / 2.0; }
   uint32_t sensorRequests() const { return explore.sensorRequests + travel.sensorRequests; }
 };
@@ -77,9 +78,11 @@ class HouseMapper {
   network::HouseNetwork& network() { return network_; }
   const HouseCounters& counters() const { return counters_; }
   int exitsFound() const { return exitsFound_; }
-  int exitsUnreached() const { return exitsUnreached_; }   // exits the robot could not get through
+  int exitsUnreached() const { return exitsUnreached_; }    // exits the robot could not get through
   int relocalisations() const { return relocalisations_; }  // beliefs moved by a standing scan (see HouseConfig)
-  Cell startShift() const { return startShift_; }  // the start room's frame moved by this (see HouseConfig::anchorStart)
+  Cell startShift() const {
+    return startShift_;
+  }  // the start room's frame moved by this (see HouseConfig::anchorStart)
   int openingsTried() const { return static_cast<int>(openingsTried_.size()); }  // see HouseConfig::maxOpenings
   const sim::SimRobot& robot() const { return robot_; }
   const sim::World& world() const { return world_; }
@@ -125,7 +128,7 @@ class HouseMapper {
   std::vector<network::RoomNode> seen_;  // each room run's uncut map and frame
   network::HouseNetwork network_;
   HouseCounters counters_;
-  Pose belief_;  // in the house frame
+  Pose belief_;                  // in the house frame
   int64_t headingVariance_ = 0;  // mrad^2: how well the robot's heading is known between pilots
   std::vector<Pending> pending_;
   std::vector<Cell> openingsTried_;  // inside cells (house frame) of the openings taken as exits

@@ -24,9 +24,9 @@ HouseScore scoreHouse(const HouseMapper& mapper);
 // Plan rooms (room boxes) whose reachable free cells the merged map holds as free to at least
 // `minPct` percent; rooms with no reachable cell are not counted in `reachable`.
 struct PlanCoverage {
-  int planRooms = 0;   // boxes in the plan
-  int reachable = 0;   // boxes holding reachable free cells
-  int covered = 0;     // ... mapped to at least minPct
+  int planRooms = 0;  // boxes in the plan
+  int reachable = 0;  // boxes holding reachable free cells
+  int covered = 0;    // ... mapped to at least minPct
 };
 PlanCoverage planCoverage(const HouseMapper& mapper, const HousePlan& plan, double minPct = 90.0);
 

@@ -42,13 +42,15 @@ std::optional<Opening> findOpening(const network::HouseNetwork& network, const n
           const Cell inside = advance(start, along, static_cast<int16_t>(width / 2));
           const Cell insideHouse = room.toHouse.apply(inside);
           bool done = false;
-          for (const Cell t : tried) done = done || (std::abs(t.x - insideHouse.x) + std::abs(t.y - insideHouse.y) <= 2);
+          for (const Cell t : tried)
+            done = done || (std::abs(t.x - insideHouse.x) + std::abs(t.y - insideHouse.y) <= 2);
           if (done) continue;
           Opening o;
           o.room = static_cast<int>(r);
           o.inside = inside;
           o.outward = roomDir;
-          for (int i = 0; i < width; ++i) o.cells.push_back(advance(advance(start, along, static_cast<int16_t>(i)), roomDir));
+          for (int i = 0; i < width; ++i)
+            o.cells.push_back(advance(advance(start, along, static_cast<int16_t>(i)), roomDir));
           best = o;
         }
       }

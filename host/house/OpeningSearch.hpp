@@ -15,10 +15,10 @@
 namespace nxtmap::house {
 
 struct Opening {
-  int room = -1;            // the room whose free cells face the unknown
-  std::vector<Cell> cells;  // the first unknown cells beyond, in the room's frame (to cross)
-  Cell inside{};            // the room's free cell in front of the middle, room frame
-  Dir outward = Dir::North; // towards the unknown, room frame
+  int room = -1;             // the room whose free cells face the unknown
+  std::vector<Cell> cells;   // the first unknown cells beyond, in the room's frame (to cross)
+  Cell inside{};             // the room's free cell in front of the middle, room frame
+  Dir outward = Dir::North;  // towards the unknown, room frame
 };
 
 struct OpeningLimits {

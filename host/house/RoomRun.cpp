@@ -214,7 +214,8 @@ void RoomRun::evaluateCandidates() {
 void RoomRun::runToEnd() {
   while (!pilot_->finished()) {
     // A move decided just before a doorway was closed meets the closed doorway like a wall.
-    const DriveEvent e = drivesIntoClosed(last_) ? DriveEvent::driven(true) : mapping::carryOutOnRobot(robot_, last_, config_.geometry);
+    const DriveEvent e =
+        drivesIntoClosed(last_) ? DriveEvent::driven(true) : mapping::carryOutOnRobot(robot_, last_, config_.geometry);
     moved_ = moved_ || last_.kind == DriveAction::Kind::Drive || last_.kind == DriveAction::Kind::Rotate;
     if (!moved_ && e.kind == DriveEvent::Kind::Range)
       startReadings_.push_back(StartReading{sensorDir(explorer_->pose().heading, e.sensor), e.reading});

@@ -44,8 +44,8 @@ class RoomRun {
   // `entrance`: the doorway's cells behind the start, in the new room's frame (empty for the first room).
   // `pilot`: how the run's pilot keeps the robot on the grid (PilotConfig::correct false: dead
   // reckoning), including the heading uncertainty the robot is handed over with.
-  RoomRun(sim::SimRobot& robot, const ExplorerConfig& config, mapping::Strategy strategy,
-          const DoorwayLimits& doorways, std::vector<Cell> entrance, const PilotConfig& pilot = PilotConfig{},
+  RoomRun(sim::SimRobot& robot, const ExplorerConfig& config, mapping::Strategy strategy, const DoorwayLimits& doorways,
+          std::vector<Cell> entrance, const PilotConfig& pilot = PilotConfig{},
           const RoomLimits& roomLimits = RoomLimits{});
   ~RoomRun();
 
@@ -74,8 +74,8 @@ class RoomRun {
   const std::vector<StartReading>& startReadings() const { return startReadings_; }
 
  private:
-  void closeDoors();   // marks shut_ blocked in the map (after every step)
-  void updateShut();   // shut_ from closed_ and guards_, after either changed
+  void closeDoors();  // marks shut_ blocked in the map (after every step)
+  void updateShut();  // shut_ from closed_ and guards_, after either changed
   // Closes the entrance's cells and guards the ends of its line (see guards_).
   void closeEntrance();
   bool drivesIntoClosed(const DriveAction& a) const;
@@ -100,9 +100,9 @@ class RoomRun {
   DriveAction last_;
   bool moved_ = false;  // the robot drove or turned since the run started
   std::vector<StartReading> startReadings_;
-  std::vector<Cell> closed_;         // virtual door cells (entrance and exits)
-  std::vector<Cell> shut_;           // closed_ and guards_ (held blocked each step), lent to the pilot
-  std::vector<Cell> guards_;         // the cells beside the entrance along its line (its jambs), closed too
+  std::vector<Cell> closed_;  // virtual door cells (entrance and exits)
+  std::vector<Cell> shut_;    // closed_ and guards_ (held blocked each step), lent to the pilot
+  std::vector<Cell> guards_;  // the cells beside the entrance along its line (its jambs), closed too
   std::vector<Cell> entrance_;
   std::vector<RoomExit> exits_;
   std::vector<Doorway> candidates_;  // doorways seen that are not (yet) exits

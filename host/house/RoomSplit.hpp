@@ -14,8 +14,8 @@ namespace nxtmap::house {
 struct RoomParts {
   std::vector<network::RoomMap> maps;  // row-major over (partX, partY); one map when no split
   struct Cut {
-    int partA = 0, partB = 0;          // indices into maps
-    std::vector<Cell> cells;           // a run of free cells on the cut line (room frame)
+    int partA = 0, partB = 0;  // indices into maps
+    std::vector<Cell> cells;   // a run of free cells on the cut line (room frame)
   };
   std::vector<Cut> cuts;
   // The part holding a room-frame cell (the first one whose box contains it), -1 for none.

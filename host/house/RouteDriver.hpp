@@ -11,10 +11,10 @@
 namespace nxtmap::house {
 
 struct DriveResult {
-  bool arrived = false;     // every step was carried out
+  bool arrived = false;  // every step was carried out
   int cellsMoved = 0;
   int turnEighths = 0;
-  Pose belief;              // where the robot believes it is at the end (house frame)
+  Pose belief;  // where the robot believes it is at the end (house frame)
 };
 
 // `belief`: the robot's pose in the house frame at the route's first cell.

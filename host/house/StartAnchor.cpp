@@ -31,8 +31,8 @@ int axisShift(const network::RoomMap& map, Cell start, const std::vector<AnchorR
   int found = 0, count = 0;
   for (int s = -g.maxShift; s <= g.maxShift; ++s) {
     if (s == 0) continue;
-    const Cell at = vertical ? Cell{start.x, static_cast<int16_t>(start.y + s)}
-                             : Cell{static_cast<int16_t>(start.x + s), start.y};
+    const Cell at =
+        vertical ? Cell{start.x, static_cast<int16_t>(start.y + s)} : Cell{static_cast<int16_t>(start.x + s), start.y};
     if (map.isFree(at) && fits(map, at, readings, vertical, g)) {
       found = s;
       ++count;

@@ -20,11 +20,11 @@ struct AnchorReading {
 };
 
 struct AnchorGeometry {
-  int cellMm = 100;       // cell edge
-  int reachCells = 25;    // how far along a beam a wall is looked for
-  int wideFromMm = 570;   // an echo farther than this may come from the lanes beside the axis (the cone)
-  int toleranceMm = 30;   // a reading fits a wall face this close to it
-  int maxShift = 2;       // cells, each axis
+  int cellMm = 100;      // cell edge
+  int reachCells = 25;   // how far along a beam a wall is looked for
+  int wideFromMm = 570;  // an echo farther than this may come from the lanes beside the axis (the cone)
+  int toleranceMm = 30;  // a reading fits a wall face this close to it
+  int maxShift = 2;      // cells, each axis
 };
 
 // The shift (each axis within +-maxShift cells) of `start` onto a cell `map` holds free under which

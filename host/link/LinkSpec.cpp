@@ -9,11 +9,13 @@ namespace {
 const char* kForms = "use bt:00:16:53:XX:XX:XX, serial:/dev/rfcomm0, tcp:HOST:PORT or sim:WORLD[@COL,ROW]";
 
 int parseInt(const std::string& s, int lo, int hi, const std::string& what) {
-  if (s.empty() || s.size() > 6 || !std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+  if (s.empty() || s.size() > 6 ||
+      !std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
     throw LinkError(what + " '" + s + "' is not a number");
   }
   const int v = std::stoi(s);
-  if (v < lo || v > hi) throw LinkError(what + " " + s + " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
+  if (v < lo || v > hi)
+    throw LinkError(what + " " + s + " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
   return v;
 }
 }  // namespace
@@ -26,12 +28,14 @@ LinkSpec parseLinkSpec(const std::string& text) {
   const std::string kind = text.substr(0, colon), rest = text.substr(colon + 1);
   if (kind == "bt") {
     static const std::regex mac("^[0-9A-Fa-f]{2}(:[0-9A-Fa-f]{2}){5}$");
-    if (!std::regex_match(rest, mac)) throw LinkError("Bluetooth address '" + rest + "' is not six hex pairs like 00:16:53:0A:1B:2C");
+    if (!std::regex_match(rest, mac))
+      throw LinkError("Bluetooth address '" + rest + "' is not six hex pairs like 00:16:53:0A:1B:2C");
     spec.kind = LinkSpec::Kind::Bluetooth;
     spec.address = rest;
     spec.port = 1;
   } else if (kind == "serial") {
-    if (rest.empty() || rest[0] != '/') throw LinkError("serial device '" + rest + "' must be an absolute path like /dev/rfcomm0");
+    if (rest.empty() || rest[0] != '/')
+      throw LinkError("serial device '" + rest + "' must be an absolute path like /dev/rfcomm0");
     spec.kind = LinkSpec::Kind::Serial;
     spec.address = rest;
   } else if (kind == "tcp") {

@@ -12,10 +12,10 @@ namespace nxtmap::link {
 struct LinkSpec {
   enum class Kind { Bluetooth, Serial, Tcp, Sim };
   Kind kind = Kind::Tcp;
-  std::string address;  // bt: "00:16:53:AA:BB:CC"; serial: device path; tcp: host; sim: world file
-  int port = 0;         // tcp: 1..65535; bt: RFCOMM channel (1)
+  std::string address;     // bt: "00:16:53:AA:BB:CC"; serial: device path; tcp: host; sim: world file
+  int port = 0;            // tcp: 1..65535; bt: RFCOMM channel (1)
   int col = -1, row = -1;  // sim: start cell (-1: the world's default)
-  std::string text;     // as given
+  std::string text;        // as given
 };
 
 // Bad LINK text: the message says what was wrong and what is accepted.

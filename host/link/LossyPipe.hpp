@@ -9,7 +9,7 @@
 namespace nxtmap::link {
 
 struct LossConfig {
-  double drop = 0.0;       // probability per byte, 0..1
+  double drop = 0.0;  // probability per byte, 0..1
   double corrupt = 0.0;
   double duplicate = 0.0;
   uint64_t seed = 1;

@@ -34,8 +34,10 @@ CellState MirrorMap::at(Cell c) const {
 }
 
 void MirrorMap::set(Cell c, CellState s) {
-  if (s == CellState::Unknown) cells_.erase(key(c));
-  else cells_[key(c)] = s;
+  if (s == CellState::Unknown)
+    cells_.erase(key(c));
+  else
+    cells_[key(c)] = s;
 }
 
 Bounds MirrorMap::bounds() const {

@@ -120,8 +120,10 @@ void Session::noteRoom(uint16_t id) {
   // The brick reports the new room's start pose (0,0 facing +y) before the room itself: a pose
   // not confirmed in the old room by a Status that equals that start is the new room's.
   const bool startPose = pose_ && pose_->cell == Cell{0, 0} && pose_->heading == Dir::North;
-  if (poseRoom_ == *roomId_ || !startPose) c.lastPose = pose_;
-  else c.lastPose = posePrevious_;
+  if (poseRoom_ == *roomId_ || !startPose)
+    c.lastPose = pose_;
+  else
+    c.lastPose = posePrevious_;
   roomChanges_.push_back(std::move(c));
   roomId_ = id;
   if (leftIsCopy) map_.clear();  // the new room's map comes as a new epoch
@@ -171,9 +173,9 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
     }
     if (reply.session != config_.session || connected_) return;
     if (reply.freshSession) {
-      map_.clear();      // the brick does not know us: whatever we hold may be stale
+      map_.clear();  // the brick does not know us: whatever we hold may be stale
       received_.reset();
-      roomId_.reset();   // nor its room counter (it may have restarted)
+      roomId_.reset();  // nor its room counter (it may have restarted)
       roomEpoch_.reset();
       forgetTransmittedCommands();
     }
@@ -184,7 +186,8 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
   }
   if (!connected_ || v.header.version != kProtocolVersion) return;
   // Acknowledgements of our commands (stop-and-wait: only the front can be in flight).
-  while (!outbox_.empty() && outbox_.front().sent && acknowledges(v.header.ack, v.header.ackMask, outbox_.front().seq)) {
+  while (!outbox_.empty() && outbox_.front().sent &&
+         acknowledges(v.header.ack, v.header.ackMask, outbox_.front().seq)) {
     acknowledgedSeqs_.push_back(outbox_.front().seq);
     outbox_.pop_front();
     ++counters_.commandsAcknowledged;
@@ -255,8 +258,7 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
       if (decodeBattery(v.payload, v.payloadSize, m)) battery_ = m.millivolts;
       break;
     }
-    default:
-      break;
+    default: break;
   }
 }
 
@@ -297,8 +299,10 @@ std::vector<uint8_t> Session::transmit(uint32_t nowMs) {
     if (!outbox_.empty()) {
       Outgoing& o = outbox_.front();
       if (!o.sent || nowMs - o.sentMs >= config_.commandRetryMs) {
-        if (o.sent) ++counters_.commandRetries;
-        else ++counters_.commandsSent;
+        if (o.sent)
+          ++counters_.commandRetries;
+        else
+          ++counters_.commandsSent;
         o.sent = true;
         o.transmitted = true;
         o.sentMs = nowMs;

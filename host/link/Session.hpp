@@ -36,11 +36,11 @@ struct SessionCounters {
   uint64_t bytesIn = 0, bytesOut = 0;
   uint64_t packetsIn = 0;
   uint64_t deltasApplied = 0;
-  uint64_t deltaBytes = 0;         // wire bytes of the map deltas received (frames whole)
-  uint64_t commandsSent = 0;       // first transmissions
-  uint64_t commandRetries = 0;     // repeated transmissions
+  uint64_t deltaBytes = 0;      // wire bytes of the map deltas received (frames whole)
+  uint64_t commandsSent = 0;    // first transmissions
+  uint64_t commandRetries = 0;  // repeated transmissions
   uint64_t commandsAcknowledged = 0;
-  uint64_t connects = 0;           // HelloReplies that opened the session
+  uint64_t connects = 0;             // HelloReplies that opened the session
   uint64_t commandsUnconfirmed = 0;  // sent, never acknowledged, and the brick forgot the session
 };
 
@@ -145,10 +145,10 @@ class Session {
   std::optional<protocol::StatusMsg> status_;
   std::optional<protocol::CountersMsg> brickCounters_;
   std::optional<Pose> pose_;
-  std::optional<Pose> posePrevious_;      // the pose before the last change
-  std::optional<uint16_t> poseRoom_;      // the room a Status confirmed pose_ in (none: unconfirmed)
+  std::optional<Pose> posePrevious_;  // the pose before the last change
+  std::optional<uint16_t> poseRoom_;  // the room a Status confirmed pose_ in (none: unconfirmed)
   std::optional<uint16_t> roomId_;
-  std::optional<uint16_t> roomEpoch_;     // the map epoch the last Status of roomId_ named
+  std::optional<uint16_t> roomEpoch_;  // the map epoch the last Status of roomId_ named
   std::vector<RoomChange> roomChanges_;
   // The map as it was before the last epoch restart, and the room the brick was in then: a
   // new-room delta may overtake the (unreliable) NewRoom message.

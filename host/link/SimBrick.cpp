@@ -12,9 +12,9 @@ namespace {
 
 ExplorerConfig explorerConfigFor(const sim::World& world, const mapping::RunConfig& c, int mountCm) {
   ExplorerConfig e;
-  e.geometry = mapping::sonarGeometryFor(world, c.minRangeM, c.rangeM,
-                                         c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.sonar.coneHalfAngleDeg,
-                                         mountCm);
+  e.geometry = mapping::sonarGeometryFor(
+      world, c.minRangeM, c.rangeM, c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.sonar.coneHalfAngleDeg,
+      mountCm);
   e.searchSliceStates = c.searchSliceStates;
   return e;
 }
@@ -52,9 +52,11 @@ SimBrickConfig placedConfig(const sim::RobotPlacement& placed, SimBrickConfig c)
 
 }  // namespace
 
-SimBrick::SimBrick(const sim::World& world, const SimBrickConfig& config) : SimBrick(sim::siteFromRaster(world), config) {}
+SimBrick::SimBrick(const sim::World& world, const SimBrickConfig& config)
+    : SimBrick(sim::siteFromRaster(world), config) {}
 
-SimBrick::SimBrick(const sim::Site& site, const SimBrickConfig& config) : SimBrick(placementFor(site, config.run), config) {}
+SimBrick::SimBrick(const sim::Site& site, const SimBrickConfig& config)
+    : SimBrick(placementFor(site, config.run), config) {}
 
 SimBrick::SimBrick(sim::RobotPlacement placed, const SimBrickConfig& config)
     : world_(std::move(placed.truth)),
@@ -100,7 +102,8 @@ BrickReport SimBrick::report() const {
 std::vector<uint8_t> SimBrick::transmit(uint32_t nowMs, size_t maxBytes) {
   const BrickReport r = report();
   Frame f;
-  while (txQueue_.size() < maxBytes && link_.transmit(nowMs, r, f)) txQueue_.insert(txQueue_.end(), f.bytes, f.bytes + f.size);
+  while (txQueue_.size() < maxBytes && link_.transmit(nowMs, r, f))
+    txQueue_.insert(txQueue_.end(), f.bytes, f.bytes + f.size);
   const size_t n = std::min(maxBytes, txQueue_.size());
   std::vector<uint8_t> out(txQueue_.begin(), txQueue_.begin() + static_cast<long>(n));
   txQueue_.erase(txQueue_.begin(), txQueue_.begin() + static_cast<long>(n));
@@ -167,8 +170,10 @@ void SimBrick::takeMapChunk(const MapChunkMsg& chunk) {
   }
   for (uint16_t i = 0; i < chunk.count; ++i) {
     const CellState st = chunk.state(i);
-    if (st == CellState::Free) (void)map_->markVisited(chunk.cellOf(i));
-    else if (st == CellState::Occupied) (void)map_->markBlocked(chunk.cellOf(i));
+    if (st == CellState::Free)
+      (void)map_->markVisited(chunk.cellOf(i));
+    else if (st == CellState::Occupied)
+      (void)map_->markBlocked(chunk.cellOf(i));
   }
   if (chunk.chunkIndex + 1 >= chunk.chunkCount) link_.mapRestarted();
 }
@@ -191,12 +196,8 @@ void SimBrick::newRoom() {
 void SimBrick::carryOut(const Command& c) {
   executed_.push_back(c.seq);
   switch (c.kind) {
-    case CommandKind::Explore:
-      startExploring();
-      break;
-    case CommandKind::Stop:
-      stopMoving();
-      break;
+    case CommandKind::Explore: startExploring(); break;
+    case CommandKind::Stop: stopMoving(); break;
     case CommandKind::FollowPath: {
       if (mode_ == BrickMode::Exploring) stopMoving();
       pathMsg_ = c.path;
@@ -218,12 +219,8 @@ void SimBrick::carryOut(const Command& c) {
       }
       break;
     }
-    case CommandKind::MapChunk:
-      takeMapChunk(c.chunk);
-      break;
-    case CommandKind::SetPose:
-      setPose(c.pose);
-      break;
+    case CommandKind::MapChunk: takeMapChunk(c.chunk); break;
+    case CommandKind::SetPose: setPose(c.pose); break;
   }
 }
 
@@ -245,10 +242,14 @@ void SimBrick::followOne() {
     return;
   }
   restPose_.cell = to;
-  if (to.y > from.y) restPose_.heading = Dir::North;
-  else if (to.y < from.y) restPose_.heading = Dir::South;
-  else if (to.x > from.x) restPose_.heading = Dir::East;
-  else restPose_.heading = Dir::West;
+  if (to.y > from.y)
+    restPose_.heading = Dir::North;
+  else if (to.y < from.y)
+    restPose_.heading = Dir::South;
+  else if (to.x > from.x)
+    restPose_.heading = Dir::East;
+  else
+    restPose_.heading = Dir::West;
   // The simulated robot goes along, onto the cell's centre.
   int col = 0, row = 0;
   frame_.toWorld(to, col, row);

@@ -32,9 +32,9 @@
 namespace nxtmap::link {
 
 struct SimBrickConfig {
-  mapping::RunConfig run;       // start cell and heading in the world, noise, strategy, ...
-  uint32_t actionMs = 20;       // one explorer action (read / move / turn) every this many ms
-  uint32_t cellMs = 100;        // path following: one cell every this many ms
+  mapping::RunConfig run;  // start cell and heading in the world, noise, strategy, ...
+  uint32_t actionMs = 20;  // one explorer action (read / move / turn) every this many ms
+  uint32_t cellMs = 100;   // path following: one cell every this many ms
   uint16_t batteryMillivolts = 7800;
   protocol::BrickLinkConfig link;
 };
@@ -89,7 +89,7 @@ class SimBrick {
 
   SimBrick(sim::RobotPlacement placed, const SimBrickConfig& config);
 
-  sim::World world_;               // the truth on the robot's grid
+  sim::World world_;  // the truth on the robot's grid
   SimBrickConfig config_;
   ExplorerConfig explorerConfig_;
   mapping::FrameTransform frame_;  // the brick map's frame -> world cells (changes with SetPose / new room)
@@ -99,10 +99,10 @@ class SimBrick {
   std::unique_ptr<TravelPlanner> planner_;
   std::unique_ptr<PropagationExplorer> propagation_;
   std::unique_ptr<FrontierExplorer> frontier_;
-  Explorer* explorer_ = nullptr;   // the current run's, or none (a new run starts at restPose_)
+  Explorer* explorer_ = nullptr;  // the current run's, or none (a new run starts at restPose_)
   std::unique_ptr<Pilot> pilot_;
-  DriveAction pending_{};          // the action the pilot asked for last
-  Pose restPose_{};                // where the robot stands when no run holds its pose
+  DriveAction pending_{};  // the action the pilot asked for last
+  Pose restPose_{};        // where the robot stands when no run holds its pose
   std::vector<uint8_t> shadow_;
   protocol::BrickLink link_;
   protocol::BrickMode mode_ = protocol::BrickMode::Idle;

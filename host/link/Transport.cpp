@@ -58,14 +58,9 @@ bool connectWithin(int fd, const sockaddr* address, socklen_t size, const WaitLi
     return false;
   }
   switch (waitReady(fd, POLLOUT, limit, deadline)) {
-    case Wait::TimedOut:
-      why = "no answer within " + durationText(limit.timeoutMs);
-      return false;
-    case Wait::Stopped:
-      why = "stopped";
-      return false;
-    case Wait::Ready:
-      break;
+    case Wait::TimedOut: why = "no answer within " + durationText(limit.timeoutMs); return false;
+    case Wait::Stopped: why = "stopped"; return false;
+    case Wait::Ready: break;
   }
   int error = 0;
   socklen_t length = sizeof(error);
@@ -188,26 +183,21 @@ void FdTransport::write(const uint8_t* data, size_t size) {
     if (n == 0) throw TransportClosed(description_ + ": the device took no bytes");
     if (errno != EAGAIN && errno != EWOULDBLOCK) throw TransportClosed(description_ + ": " + errnoText());
     switch (waitReady(fd_, POLLOUT, writeLimit_, deadline)) {
-      case Wait::Ready:
-        break;
+      case Wait::Ready: break;
       case Wait::TimedOut:
-        throw TransportClosed(description_ + ": the other end took no bytes within " + durationText(writeLimit_.timeoutMs));
-      case Wait::Stopped:
-        throw TransportClosed(description_ + ": stopped");
+        throw TransportClosed(description_ + ": the other end took no bytes within " +
+                              durationText(writeLimit_.timeoutMs));
+      case Wait::Stopped: throw TransportClosed(description_ + ": stopped");
     }
   }
 }
 
 std::unique_ptr<Transport> openTransport(const LinkSpec& spec, const WaitLimit& limit) {
   switch (spec.kind) {
-    case LinkSpec::Kind::Tcp:
-      return openTcp(spec, limit);
-    case LinkSpec::Kind::Serial:
-      return openSerial(spec, limit);
-    case LinkSpec::Kind::Bluetooth:
-      return openBluetooth(spec, limit);
-    case LinkSpec::Kind::Sim:
-      break;
+    case LinkSpec::Kind::Tcp: return openTcp(spec, limit);
+    case LinkSpec::Kind::Serial: return openSerial(spec, limit);
+    case LinkSpec::Kind::Bluetooth: return openBluetooth(spec, limit);
+    case LinkSpec::Kind::Sim: break;
   }
   throw LinkError("link " + spec.text + " is not a byte transport");
 }

@@ -22,8 +22,8 @@ class TransportClosed : public std::runtime_error {
 // while *keepGoing stays true (looked at every 20 ms; e.g. the runner's "running" flag, not owned).
 struct WaitLimit {
   static constexpr int kMaxTimeoutMs = 3600 * 1000;  // an hour
-  int timeoutMs = 5000;                               // 1 .. kMaxTimeoutMs
-  const std::atomic<bool>* keepGoing = nullptr;       // none: only the timeout
+  int timeoutMs = 5000;                              // 1 .. kMaxTimeoutMs
+  const std::atomic<bool>* keepGoing = nullptr;      // none: only the timeout
 };
 
 class Transport {

@@ -25,7 +25,8 @@ MapLoad fail(std::string message) { return MapLoad{std::nullopt, std::move(messa
 
 std::string lowerExtension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
 }
 
@@ -61,8 +62,8 @@ Occupancy occupancyOf(sim::RosCell cell) {
 
 std::string pgmBytes(const OccupancyMap& map) {
   char header[128];
-  std::snprintf(header, sizeof header, "P5\n# CREATOR: nxtmap %.3f m/pix\n%d %d\n255\n", map.resolutionM(),
-                map.width(), map.height());
+  std::snprintf(header, sizeof header, "P5\n# CREATOR: nxtmap %.3f m/pix\n%d %d\n255\n", map.resolutionM(), map.width(),
+                map.height());
   std::string out(header);
   out.reserve(out.size() + static_cast<size_t>(map.width()) * static_cast<size_t>(map.height()));
   for (int r = 0; r < map.height(); ++r) {

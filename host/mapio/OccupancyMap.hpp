@@ -59,9 +59,7 @@ class OccupancyMap {
   // The cell's state; precondition inside(col, row).
   Occupancy at(int col, int row) const { return cells_[index(col, row)]; }
   // The cell's state, or `outside` for a cell outside the map.
-  Occupancy stateOr(int col, int row, Occupancy outside) const {
-    return inside(col, row) ? at(col, row) : outside;
-  }
+  Occupancy stateOr(int col, int row, Occupancy outside) const { return inside(col, row) ? at(col, row) : outside; }
   bool isFree(int col, int row) const { return stateOr(col, row, Occupancy::Occupied) == Occupancy::Free; }
   // Precondition inside(col, row).
   void set(int col, int row, Occupancy state) { cells_[index(col, row)] = state; }

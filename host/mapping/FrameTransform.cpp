@@ -23,8 +23,7 @@ void FrameTransform::toWorld(Cell c, int& col, int& row) const {
 
 Cell FrameTransform::toExplorer(int col, int row) const {
   const int dc = col - startCol_, dr = row - startRow_;
-  return Cell{static_cast<int16_t>(dc * rightCol_ + dr * rightRow_),
-              static_cast<int16_t>(dc * fwdCol_ + dr * fwdRow_)};
+  return Cell{static_cast<int16_t>(dc * rightCol_ + dr * rightRow_), static_cast<int16_t>(dc * fwdCol_ + dr * fwdRow_)};
 }
 
 sim::Heading FrameTransform::toWorld(Dir d) const {

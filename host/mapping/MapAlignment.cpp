@@ -74,7 +74,8 @@ class ObstacleField {
   void addSegment(const sim::Vec2& a, const sim::Vec2& b) {
     const double cap = capCm();
     for (long j = clampJ(std::min(a.y(), b.y()) - cap); j <= clampJ(std::max(a.y(), b.y()) + cap) + 1 && j < ny_; ++j) {
-      for (long i = clampI(std::min(a.x(), b.x()) - cap); i <= clampI(std::max(a.x(), b.x()) + cap) + 1 && i < nx_; ++i) {
+      for (long i = clampI(std::min(a.x(), b.x()) - cap); i <= clampI(std::max(a.x(), b.x()) + cap) + 1 && i < nx_;
+           ++i) {
         float& d = cell(i, j);
         d = std::min(d, static_cast<float>(pointSegmentDistance(sim::Vec2(sx(i), sy(j)), a, b)));
       }
@@ -129,8 +130,15 @@ class Search {
  public:
   Search(const sim::Scene& scene, const sim::GridFrame& frame, int startCol, int startRow, int width, int height,
          const std::vector<KnownCell>& known, const AlignmentSearch& s)
-      : scene_(scene), field_(scene, frame.cellCm), frame_(frame), startCol_(startCol), startRow_(startRow),
-        width_(width), height_(height), known_(known), s_(s) {
+      : scene_(scene),
+        field_(scene, frame.cellCm),
+        frame_(frame),
+        startCol_(startCol),
+        startRow_(startRow),
+        width_(width),
+        height_(height),
+        known_(known),
+        s_(s) {
     for (const KnownCell& c : known) {
       cols_.push_back(c.col);
       rows_.push_back(c.row);
@@ -222,8 +230,8 @@ bool better(int agree, const Candidate& c, int bestAgree, const Candidate& bestC
 
 }  // namespace
 
-sim::GridFrame movedFrame(const sim::GridFrame& frame, int startCol, int startRow, double rotationDeg,
-                          double shiftCol, double shiftRow) {
+sim::GridFrame movedFrame(const sim::GridFrame& frame, int startCol, int startRow, double rotationDeg, double shiftCol,
+                          double shiftRow) {
   const sim::Vec2 start = frame.toPlane(sim::Vec2(startCol, startRow));
   const sim::Vec2 shift = frame.toPlane(sim::Vec2(shiftCol, shiftRow)) - frame.toPlane(sim::Vec2(0.0, 0.0));
   const double rad = rotationDeg * kPi / 180.0, c = std::cos(rad), s = std::sin(rad);

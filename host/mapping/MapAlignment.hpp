@@ -29,15 +29,15 @@ struct AlignmentSearch {
 };
 
 struct Alignment {
-  double rotationDeg = 0.0;           // + clockwise, about the start cell's centre
+  double rotationDeg = 0.0;               // + clockwise, about the start cell's centre
   double shiftCol = 0.0, shiftRow = 0.0;  // cells along the original grid's col and row axes
-  sim::GridFrame frame;               // the moved grid: map cell (c, r) lies at frame.toPlane(c, r)
-  int agreeing = 0;                   // known cells that agree with the truth on `frame`
+  sim::GridFrame frame;                   // the moved grid: map cell (c, r) lies at frame.toPlane(c, r)
+  int agreeing = 0;                       // known cells that agree with the truth on `frame`
 };
 
 // The grid `frame` turned by rotationDeg about the centre of (startCol, startRow), then shifted.
-sim::GridFrame movedFrame(const sim::GridFrame& frame, int startCol, int startRow, double rotationDeg,
-                          double shiftCol, double shiftRow);
+sim::GridFrame movedFrame(const sim::GridFrame& frame, int startCol, int startRow, double rotationDeg, double shiftCol,
+                          double shiftRow);
 
 // Known cells that agree with the scene rasterised on `frame` (cells 0..width-1 x 0..height-1; outside them
 // the truth is blocked).

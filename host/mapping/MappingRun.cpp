@@ -17,9 +17,9 @@ namespace {
 
 ExplorerConfig explorerConfigFor(const sim::World& truth, const RunConfig& c, int mountCm) {
   ExplorerConfig e;
-  e.geometry = sonarGeometryFor(truth, c.minRangeM, c.rangeM,
-                                c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.sonar.coneHalfAngleDeg,
-                                mountCm);
+  e.geometry =
+      sonarGeometryFor(truth, c.minRangeM, c.rangeM,
+                       c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.sonar.coneHalfAngleDeg, mountCm);
   e.searchSliceStates = c.searchSliceStates;
   return e;
 }
@@ -29,9 +29,9 @@ ExplorerConfig explorerConfigFor(const sim::World& truth, const RunConfig& c, in
 MappingRun::MappingRun(const sim::Site& site, const RunConfig& config)
     : MappingRun(
           [&] {
-            Setup s{sim::placeRobot(site, sim::PlacementRequest{config.robot, config.startPose, config.startCol,
-                                                                config.startRow, config.heading,
-                                                                config.startJitterDeg, config.seed, 0.0}),
+            Setup s{sim::placeRobot(
+                        site, sim::PlacementRequest{config.robot, config.startPose, config.startCol, config.startRow,
+                                                    config.heading, config.startJitterDeg, config.seed, 0.0}),
                     config};
             if (config.robot) {
               s.config.minRangeM = config.robot->minRangeM;
@@ -90,9 +90,7 @@ uint64_t MappingRun::runToEnd() {
   return n;
 }
 
-CellState MappingRun::belief(int col, int row) const {
-  return map_->at(frame_.toExplorer(col, row));
-}
+CellState MappingRun::belief(int col, int row) const { return map_->at(frame_.toExplorer(col, row)); }
 
 void MappingRun::believedCell(int& col, int& row) const { frame_.toWorld(explorer_->pose().cell, col, row); }
 

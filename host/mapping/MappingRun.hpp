@@ -21,23 +21,23 @@
 namespace nxtmap::mapping {
 
 struct RunConfig {
-  int startCol = 0, startRow = 0;         // start cell in the site's raster (when startPose is empty);
-                                          // after construction (MappingRun::config): in the truth raster
-  sim::Heading heading = sim::Heading::N; // initial heading in the world (when startPose is empty)
+  int startCol = 0, startRow = 0;           // start cell in the site's raster (when startPose is empty);
+                                            // after construction (MappingRun::config): in the truth raster
+  sim::Heading heading = sim::Heading::N;   // initial heading in the world (when startPose is empty)
   std::optional<sim::StartPose> startPose;  // a start in the plane instead of a raster cell
-  double startJitterDeg = 0.0;            // > 0: set down off the cell centre and up to this many degrees off square
+  double startJitterDeg = 0.0;              // > 0: set down off the cell centre and up to this many degrees off square
   // The robot: its cell, body and sensor mounts, and the range it trusts (its minRangeM/rangeM replace the
   // two below). Empty: a point robot of the raster's own cells with the ranges below (the published set-up).
   std::optional<sim::RobotDescription> robot;
-  double rangeM = 1.0;                    // trusted maximum range (published: 1 m)
-  double minRangeM = 0.05;                // trusted minimum range (published: 5 cm)
-  double sensorReachCm = 255.0;           // the sonar's own reach (NXT: 255 = no echo)
-  sim::NoiseProfile noise;                // see sim::noiseProfileByName
+  double rangeM = 1.0;           // trusted maximum range (published: 1 m)
+  double minRangeM = 0.05;       // trusted minimum range (published: 5 cm)
+  double sensorReachCm = 255.0;  // the sonar's own reach (NXT: 255 = no echo)
+  sim::NoiseProfile noise;       // see sim::noiseProfileByName
   uint64_t seed = 1;
   Strategy strategy = Strategy::Propagation;
-  double beamHalfAngleDeg = -1.0;         // the robot's sonar beam, known to it (< 0: the noise profile's cone)
-  bool poseCorrection = true;             // the pilot keeps the robot on the grid (off: dead reckoning)
-  uint16_t searchSliceStates = 8;        // travel-search states per explorer step (brick CPU budget)
+  double beamHalfAngleDeg = -1.0;  // the robot's sonar beam, known to it (< 0: the noise profile's cone)
+  bool poseCorrection = true;      // the pilot keeps the robot on the grid (off: dead reckoning)
+  uint16_t searchSliceStates = 8;  // travel-search states per explorer step (brick CPU budget)
   // The firmware pings one sensor at a time (single shot, SonarSequencer); true fires every read as if the
   // other sensors pinged at the same moment (continuous mode), so their cross-talk shows.
   bool sensorsTogether = false;

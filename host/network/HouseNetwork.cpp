@@ -104,7 +104,8 @@ bool validLabels(const std::vector<RoomNode>& rooms, std::string& error) {
     const CellBox b = roomBox(r.map);
     for (const auto& [name, c] : r.labels) {
       if (!mapio::OccupancyMap::validLabelName(name)) {
-        error = "room '" + r.name + "': label name '" + name + "' is not 1-64 of A-Z a-z 0-9 _ - starting with a letter";
+        error =
+            "room '" + r.name + "': label name '" + name + "' is not 1-64 of A-Z a-z 0-9 _ - starting with a letter";
         return false;
       }
       if (!b.contains(c)) {
@@ -134,8 +135,8 @@ bool validGateways(const std::vector<RoomNode>& rooms, const std::vector<Gateway
       error = which + " needs the same, non-zero number of cells on both sides";
       return false;
     }
-    for (const auto& [room, cells, side] : {std::make_tuple(g.roomA, &g.cellsA, "cells_a"),
-                                            std::make_tuple(g.roomB, &g.cellsB, "cells_b")}) {
+    for (const auto& [room, cells, side] :
+         {std::make_tuple(g.roomA, &g.cellsA, "cells_a"), std::make_tuple(g.roomB, &g.cellsB, "cells_b")}) {
       const RoomNode& r = rooms[static_cast<size_t>(room)];
       const CellBox near = roomBox(r.map).grown(kGatewayReachCells);
       for (const Cell c : *cells) {

@@ -15,16 +15,16 @@
 namespace nxtmap::network {
 
 struct RoomNode {
-  std::string name;         // unique, e.g. "room0"
-  RoomMap map;              // in the room's frame
-  RoomTransform toHouse;    // room frame -> house frame
+  std::string name;                    // unique, e.g. "room0"
+  RoomMap map;                         // in the room's frame
+  RoomTransform toHouse;               // room frame -> house frame
   std::map<std::string, Cell> labels;  // NAME -> cell in the room's frame
 };
 
 struct Gateway {
-  int roomA = 0, roomB = 0;     // indices into rooms()
-  std::vector<Cell> cellsA;     // the exit's cells in room A's frame
-  std::vector<Cell> cellsB;     // the same cells in room B's frame
+  int roomA = 0, roomB = 0;  // indices into rooms()
+  std::vector<Cell> cellsA;  // the exit's cells in room A's frame
+  std::vector<Cell> cellsB;  // the same cells in room B's frame
 };
 
 class HouseNetwork {

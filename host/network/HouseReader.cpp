@@ -130,8 +130,8 @@ bool HouseReader::readResolution(const YAML::Node& n) {
     res = 0.0;
   }
   if (!(res >= kMinResolutionM && res <= kMaxResolutionM)) {
-    return fail("resolution must be a number of metres in " + number(kMinResolutionM) + ".." +
-                number(kMaxResolutionM) + shown(n));
+    return fail("resolution must be a number of metres in " + number(kMinResolutionM) + ".." + number(kMaxResolutionM) +
+                shown(n));
   }
   res_ = res;
   return true;
@@ -234,7 +234,8 @@ bool HouseReader::readGateway(const YAML::Node& g, size_t index, HouseNetwork& n
   gw.roomA = net.roomIndex(g["rooms"][0].as<std::string>());
   gw.roomB = net.roomIndex(g["rooms"][1].as<std::string>());
   if (gw.roomA < 0 || gw.roomB < 0) return fail(which + " names a room that is not in the house");
-  if (!readCells(g["cells_a"], which + ": cells_a", gw.cellsA) || !readCells(g["cells_b"], which + ": cells_b", gw.cellsB)) {
+  if (!readCells(g["cells_a"], which + ": cells_a", gw.cellsA) ||
+      !readCells(g["cells_b"], which + ": cells_b", gw.cellsB)) {
     return false;
   }
   net.addGateway(std::move(gw));

@@ -86,14 +86,14 @@ HouseRoute planHouseRoute(const HouseNetwork& house, RoomPoint from, RoomPoint t
         break;
       }
       if (!chosen) {
-        r.error = "no passable gateway from " + node.name + " to " +
-                  house.rooms()[static_cast<size_t>(r.rooms[i + 1])].name;
+        r.error =
+            "no passable gateway from " + node.name + " to " + house.rooms()[static_cast<size_t>(r.rooms[i + 1])].name;
         return r;
       }
     } else if (!nearLabel.empty()) {
-      const std::optional<plan::MapCell> near =
-          plan::nearestCellNextTo(grid, toMap(node.map, at), mapio::CellBlock{toMap(node.map, labelAt.cell).col,
-                                                                              toMap(node.map, labelAt.cell).row, 1, 1});
+      const std::optional<plan::MapCell> near = plan::nearestCellNextTo(
+          grid, toMap(node.map, at),
+          mapio::CellBlock{toMap(node.map, labelAt.cell).col, toMap(node.map, labelAt.cell).row, 1, 1});
       if (!near) {
         r.error = "no free cell next to '" + nearLabel + "' can be reached in " + node.name;
         return r;

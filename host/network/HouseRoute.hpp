@@ -26,11 +26,11 @@ struct HouseLeg {
 
 struct HouseRoute {
   bool found = false;
-  std::string error;            // why not, when not found
-  std::vector<int> rooms;       // rooms passed, start room first
-  std::vector<HouseLeg> legs;   // one per room
-  double length = 0.0;          // cells (straight 1, diagonal sqrt(2))
-  uint64_t nodesExpanded = 0;   // summed over the legs
+  std::string error;           // why not, when not found
+  std::vector<int> rooms;      // rooms passed, start room first
+  std::vector<HouseLeg> legs;  // one per room
+  double length = 0.0;         // cells (straight 1, diagonal sqrt(2))
+  uint64_t nodesExpanded = 0;  // summed over the legs
   // The route as house-frame cells (consecutive legs share the gateway cell once).
   std::vector<Cell> houseCells(const HouseNetwork& house) const;
 };

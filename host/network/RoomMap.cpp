@@ -5,8 +5,7 @@
 
 namespace nxtmap::network {
 
-RoomMap::RoomMap(int minX, int minY, int width, int height)
-    : minX_(minX), minY_(minY), width_(width), height_(height) {
+RoomMap::RoomMap(int minX, int minY, int width, int height) : minX_(minX), minY_(minY), width_(width), height_(height) {
   if (width < 0 || height < 0) throw std::invalid_argument("RoomMap: negative size");
   cells_.assign(static_cast<size_t>(width) * static_cast<size_t>(height), CellState::Unknown);
 }
@@ -20,9 +19,7 @@ RoomMap RoomMap::fromGrid(const RoomGrid& grid) {
   return m;
 }
 
-int RoomMap::count(CellState s) const {
-  return static_cast<int>(std::count(cells_.begin(), cells_.end(), s));
-}
+int RoomMap::count(CellState s) const { return static_cast<int>(std::count(cells_.begin(), cells_.end(), s)); }
 
 int RoomMap::firstOccupied(Cell from, Dir d, int maxCells) const {
   for (int k = 1; k <= maxCells; ++k) {

@@ -26,9 +26,7 @@ class RoomTransform {
   int y() const { return y_; }
   int quarterTurns() const { return quarterTurns_; }  // clockwise, 0..3
   const Eigen::Isometry2d& isometry() const { return iso_; }
-  bool operator==(const RoomTransform& o) const {
-    return x_ == o.x_ && y_ == o.y_ && quarterTurns_ == o.quarterTurns_;
-  }
+  bool operator==(const RoomTransform& o) const { return x_ == o.x_ && y_ == o.y_ && quarterTurns_ == o.quarterTurns_; }
 
  private:
   Eigen::Isometry2d iso_;

@@ -9,9 +9,12 @@ BitGrid::BitGrid(int paddedWidth, int paddedHeight, const std::vector<uint8_t>& 
       cols_(static_cast<std::size_t>(paddedWidth) * static_cast<std::size_t>(colWords_), 0) {
   for (int y = 0; y < paddedHeight; ++y) {
     for (int x = 0; x < paddedWidth; ++x) {
-      if (cells[static_cast<std::size_t>(y) * static_cast<std::size_t>(paddedWidth) + static_cast<std::size_t>(x)] == 0) continue;
-      rows_[static_cast<std::size_t>(y) * static_cast<std::size_t>(rowWords_) + static_cast<std::size_t>(x >> 6)] |= uint64_t{1} << (x & 63);
-      cols_[static_cast<std::size_t>(x) * static_cast<std::size_t>(colWords_) + static_cast<std::size_t>(y >> 6)] |= uint64_t{1} << (y & 63);
+      if (cells[static_cast<std::size_t>(y) * static_cast<std::size_t>(paddedWidth) + static_cast<std::size_t>(x)] == 0)
+        continue;
+      rows_[static_cast<std::size_t>(y) * static_cast<std::size_t>(rowWords_) + static_cast<std::size_t>(x >> 6)] |=
+          uint64_t{1} << (x & 63);
+      cols_[static_cast<std::size_t>(x) * static_cast<std::size_t>(colWords_) + static_cast<std::size_t>(y >> 6)] |=
+          uint64_t{1} << (y & 63);
     }
   }
 }

@@ -23,7 +23,9 @@ class BitGrid {
   int rowWords() const { return rowWords_; }     // words per row
   int columnWords() const { return colWords_; }  // words per column
   const uint64_t* row(int y) const { return &rows_[static_cast<std::size_t>(y) * static_cast<std::size_t>(rowWords_)]; }
-  const uint64_t* column(int x) const { return &cols_[static_cast<std::size_t>(x) * static_cast<std::size_t>(colWords_)]; }
+  const uint64_t* column(int x) const {
+    return &cols_[static_cast<std::size_t>(x) * static_cast<std::size_t>(colWords_)];
+  }
   // Cell (x, y) passable; x, y must be padded coordinates.
   bool open(int x, int y) const { return test(row(y), x); }
 

@@ -14,8 +14,7 @@ uint8_t moveTag(int dc, int dr) { return static_cast<uint8_t>((dr + 1) * 3 + (dc
 // Every jump returns the number of steps to the jump point, or 0 when there is none.
 class ScanJumper {
  public:
-  ScanJumper(const Traversability& grid, MapCell goal)
-      : b_(grid.bits()), gx_(goal.col + 1), gy_(goal.row + 1) {}
+  ScanJumper(const Traversability& grid, MapCell goal) : b_(grid.bits()), gx_(goal.col + 1), gy_(goal.row + 1) {}
 
   // From (x, y), the first jump point moving straight by (dc, dr) (one of them 0).
   int straight(int x, int y, int dc, int dr) const {

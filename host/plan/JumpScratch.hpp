@@ -19,9 +19,9 @@ namespace nxtmap::plan {
 class JumpScratch {
  public:
   struct Entry {
-    double f;     // g + h
-    float g;      // cost so far, only to break ties (deeper first)
-    uint32_t i;   // padded index
+    double f;    // g + h
+    float g;     // cost so far, only to break ties (deeper first)
+    uint32_t i;  // padded index
   };
   static constexpr uint8_t kMaxTag = 15;
 

@@ -16,8 +16,12 @@ JumpTable::JumpTable(const Traversability& grid) : gridId_(grid.id()), table_(gr
   const int h = grid.height();
   auto idx = [&](int c, int r) { return grid.index(MapCell{c, r}); };
   auto open = [&](int c, int r) { return grid.open(idx(c, r)); };  // c in -1..w, r in -1..h
-  auto set = [&](int c, int r, int d, int v) { table_[static_cast<size_t>(idx(c, r)) * 8 + static_cast<size_t>(d)] = static_cast<int16_t>(v); };
-  auto get = [&](int c, int r, int d) { return static_cast<int>(table_[static_cast<size_t>(idx(c, r)) * 8 + static_cast<size_t>(d)]); };
+  auto set = [&](int c, int r, int d, int v) {
+    table_[static_cast<size_t>(idx(c, r)) * 8 + static_cast<size_t>(d)] = static_cast<int16_t>(v);
+  };
+  auto get = [&](int c, int r, int d) {
+    return static_cast<int>(table_[static_cast<size_t>(idx(c, r)) * 8 + static_cast<size_t>(d)]);
+  };
   // Extends the value of the next cell by one step.
   auto extend = [](int next) { return next > 0 ? next + 1 : next - 1; };
 

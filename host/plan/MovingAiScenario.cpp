@@ -49,12 +49,13 @@ ScenarioLoad loadScenario(const std::string& path) {
       continue;
     }
     if (w.empty()) continue;
-    if (w.size() != 9) return fail("expected 9 fields (bucket map width height sx sy gx gy optimal), found " + std::to_string(w.size()));
+    if (w.size() != 9)
+      return fail("expected 9 fields (bucket map width height sx sy gx gy optimal), found " + std::to_string(w.size()));
     ScenarioProblem p;
     p.map = w[1];
-    if (!toInt(w[0], p.bucket) || !toInt(w[2], p.mapWidth) || !toInt(w[3], p.mapHeight) ||
-        !toInt(w[4], p.start.col) || !toInt(w[5], p.start.row) || !toInt(w[6], p.goal.col) ||
-        !toInt(w[7], p.goal.row) || !toDouble(w[8], p.optimal) || p.optimal < 0.0) {
+    if (!toInt(w[0], p.bucket) || !toInt(w[2], p.mapWidth) || !toInt(w[3], p.mapHeight) || !toInt(w[4], p.start.col) ||
+        !toInt(w[5], p.start.row) || !toInt(w[6], p.goal.col) || !toInt(w[7], p.goal.row) ||
+        !toDouble(w[8], p.optimal) || p.optimal < 0.0) {
       return fail("bad number in '" + line + "'");
     }
     problems.push_back(p);

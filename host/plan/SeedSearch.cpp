@@ -99,7 +99,8 @@ SeedSearch::PassEnd SeedSearch::pass(const Traversability& grid, MapCell from, M
       for (size_t k = 0; k < stack_.size(); ++k) {
         result.path.push_back(stack_[k].cell);
         if (k > 0) {
-          const bool diagonal = stack_[k].cell.col != stack_[k - 1].cell.col && stack_[k].cell.row != stack_[k - 1].cell.row;
+          const bool diagonal =
+              stack_[k].cell.col != stack_[k - 1].cell.col && stack_[k].cell.row != stack_[k - 1].cell.row;
           result.length += diagonal ? kSqrt2 : 1.0;
         }
       }

@@ -42,8 +42,8 @@ class SeedSearch : public Planner {
   };
   enum class PassEnd { Found, Exhausted, CutOff, NodeLimit };
 
-  PassEnd pass(const Traversability& grid, MapCell from, MapCell to, int limit, int branch,
-               const PlanOptions& options, PlanResult& result);
+  PassEnd pass(const Traversability& grid, MapCell from, MapCell to, int limit, int branch, const PlanOptions& options,
+               PlanResult& result);
 
   std::vector<uint32_t> visited_;  // generation stamp per padded index
   uint32_t gen_ = 0;

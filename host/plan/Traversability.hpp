@@ -53,12 +53,11 @@ class Traversability {
   bool passable(MapCell c) const { return inside(c) && cells_[index(c)] != 0; }
   // Passable by padded index (the padding is never passable).
   bool open(uint32_t i) const { return cells_[i] != 0; }
-  uint32_t index(MapCell c) const {
-    return static_cast<uint32_t>((c.row + 1) * stride() + c.col + 1);
-  }
+  uint32_t index(MapCell c) const { return static_cast<uint32_t>((c.row + 1) * stride() + c.col + 1); }
   MapCell cellOf(uint32_t i) const {
     const int s = stride();
-    return MapCell{static_cast<int>(i % static_cast<uint32_t>(s)) - 1, static_cast<int>(i / static_cast<uint32_t>(s)) - 1};
+    return MapCell{static_cast<int>(i % static_cast<uint32_t>(s)) - 1,
+                   static_cast<int>(i / static_cast<uint32_t>(s)) - 1};
   }
   // Passability as row and column bitsets, in padded coordinates.
   const BitGrid& bits() const { return bits_; }
@@ -68,7 +67,8 @@ class Traversability {
     const int s = stride();
     if (!open(static_cast<uint32_t>(static_cast<int>(i) + dr * s + dc))) return false;
     return dc == 0 || dr == 0 ||
-           (open(static_cast<uint32_t>(static_cast<int>(i) + dc)) && open(static_cast<uint32_t>(static_cast<int>(i) + dr * s)));
+           (open(static_cast<uint32_t>(static_cast<int>(i) + dc)) &&
+            open(static_cast<uint32_t>(static_cast<int>(i) + dr * s)));
   }
   // True when consecutive cells of `path` are legal moves and every cell is passable; sets lengthOut.
   bool validPath(const std::vector<MapCell>& path, double& lengthOut) const;

@@ -13,9 +13,17 @@
 namespace nxtmap::report {
 namespace {
 constexpr int kColumns = 11;
-const char* const kColumnNames[kColumns] = {"id",           "map",           "start_col",      "start_row",
-                                            "seed_x_m",     "seed_z_m",      "occupied_cells", "seed_unknowns",
-                                            "seed_time_units", "seed_sensor_count", "seed_detected_pct"};
+const char* const kColumnNames[kColumns] = {"id",
+                                            "map",
+                                            "start_col",
+                                            "start_row",
+                                            "seed_x_m",
+                                            "seed_z_m",
+                                            "occupied_cells",
+                                            "seed_unknowns",
+                                            "seed_time_units",
+                                            "seed_sensor_count",
+                                            "seed_detected_pct"};
 
 std::vector<std::string> splitTabs(const std::string& line) {
   std::vector<std::string> out;
@@ -80,8 +88,7 @@ ScenarioLoad loadScenarios(const std::string& tsvPath) {
     if (line.find_first_not_of(" \t") == std::string::npos || line[0] == '#') continue;
     const std::vector<std::string> f = splitTabs(line);
     if (f.size() != kColumns) {
-      return fail("expected " + std::to_string(kColumns) + " tab-separated columns, found " +
-                  std::to_string(f.size()));
+      return fail("expected " + std::to_string(kColumns) + " tab-separated columns, found " + std::to_string(f.size()));
     }
     Scenario s;
     s.line = lineNo;
@@ -110,7 +117,8 @@ ScenarioLoad loadScenarios(const std::string& tsvPath) {
                     f[static_cast<size_t>(d.index)] + "'");
     }
     for (const Scenario& other : load.scenarios) {
-      if (other.id == s.id) return fail("duplicate id '" + s.id + "' (first on line " + std::to_string(other.line) + ")");
+      if (other.id == s.id)
+        return fail("duplicate id '" + s.id + "' (first on line " + std::to_string(other.line) + ")");
     }
     const std::filesystem::path mp(s.map);
     s.mapPath = (mp.is_absolute() || dir.empty()) ? mp.string() : (dir / mp).string();
@@ -211,8 +219,9 @@ std::string safetyFields(const RunResult& m) {
 
 const char* ExperimentTable::csvHeader() {
   static const std::string header =
-      std::string("id,actual_free,found_free,actual_occupied,found_occupied,unknown,wrong_cells,detected_pct,"
-                  "time_units,sensor_reads,seed_time_units,seed_sensor_count,seed_detected_pct,") +
+      std::string(
+          "id,actual_free,found_free,actual_occupied,found_occupied,unknown,wrong_cells,detected_pct,"
+          "time_units,sensor_reads,seed_time_units,seed_sensor_count,seed_detected_pct,") +
       kSafetyColumns;
   return header.c_str();
 }
@@ -224,9 +233,9 @@ void ExperimentTable::writeCsv(std::ostream& out) const {
     const Scenario& s = r.scenario;
     out << s.id << ',' << formatNumber(m.actualFree) << ',' << formatNumber(m.foundFree) << ','
         << formatNumber(m.actualOccupied) << ',' << formatNumber(m.foundOccupied) << ',' << formatNumber(m.unknown)
-        << ',' << formatNumber(m.wrongCells) << ',' << formatNumber(m.detectedPct) << ','
-        << formatNumber(m.timeUnits) << ',' << formatNumber(m.sensorReads) << ',' << formatNumber(s.seedTimeUnits)
-        << ',' << s.seedSensorCount << ',' << formatNumber(s.seedDetectedPct) << safetyFields(m) << '\n';
+        << ',' << formatNumber(m.wrongCells) << ',' << formatNumber(m.detectedPct) << ',' << formatNumber(m.timeUnits)
+        << ',' << formatNumber(m.sensorReads) << ',' << formatNumber(s.seedTimeUnits) << ',' << s.seedSensorCount << ','
+        << formatNumber(s.seedDetectedPct) << safetyFields(m) << '\n';
   }
 }
 
@@ -241,11 +250,10 @@ void ExperimentTable::writeSeedCsv(std::ostream& out, bool header) const {
       const RunResult& m = r.perSeed[i];
       out << r.scenario.id << ',' << strategy << ',' << noise << ',' << (i + 1) << ',' << formatNumber(m.actualFree)
           << ',' << formatNumber(m.foundFree) << ',' << formatNumber(m.actualOccupied) << ','
-          << formatNumber(m.foundOccupied) << ',' << formatNumber(m.unknown) << ','
-          << formatNumber(m.unknownObservable) << ',' << formatNumber(m.wrongCells) << ','
-          << formatNumber(m.detectedPct) << ',' << formatNumber(m.performancePct) << ','
-          << formatNumber(m.timeUnits) << ',' << formatNumber(m.sensorReads) << ',' << (m.complete ? 1 : 0)
-          << safetyFields(m) << '\n';
+          << formatNumber(m.foundOccupied) << ',' << formatNumber(m.unknown) << ',' << formatNumber(m.unknownObservable)
+          << ',' << formatNumber(m.wrongCells) << ',' << formatNumber(m.detectedPct) << ','
+          << formatNumber(m.performancePct) << ',' << formatNumber(m.timeUnits) << ',' << formatNumber(m.sensorReads)
+          << ',' << (m.complete ? 1 : 0) << safetyFields(m) << '\n';
     }
   }
 }
@@ -261,25 +269,25 @@ void ExperimentTable::writeMarkdown(std::ostream& out) const {
     const RunResult& m = r.mean;
     const Scenario& s = r.scenario;
     out << "| " << s.id << " | " << s.occupiedCells << " | " << formatNumber(m.timeUnits) << " | "
-        << formatNumber(s.seedTimeUnits) << " | " << formatNumber(m.sensorReads) << " | " << s.seedSensorCount
-        << " | " << formatNumber(m.unknown) << " | " << s.seedUnknowns << " | " << formatNumber(m.detectedPct, 1)
-        << " | " << formatNumber(s.seedDetectedPct, 1) << " | " << formatNumber(m.wrongCells) << " |\n";
+        << formatNumber(s.seedTimeUnits) << " | " << formatNumber(m.sensorReads) << " | " << s.seedSensorCount << " | "
+        << formatNumber(m.unknown) << " | " << s.seedUnknowns << " | " << formatNumber(m.detectedPct, 1) << " | "
+        << formatNumber(s.seedDetectedPct, 1) << " | " << formatNumber(m.wrongCells) << " |\n";
   }
   out << "| **median** | | **" << formatNumber(medianTimeUnits()) << "** | **"
       << formatNumber(publishedMedianTimeUnits()) << "** | **" << formatNumber(medianSensorReads()) << "** | **"
       << formatNumber(publishedMedianSensorReads()) << "** | **" << formatNumber(medianUnknown()) << "** | **"
       << formatNumber(publishedMedianUnknowns()) << "** | | | |\n\n";
-  out << "Ours / published medians: time " << ratio(medianTimeUnits(), publishedMedianTimeUnits())
-      << ", sensor reads " << ratio(medianSensorReads(), publishedMedianSensorReads()) << ".\n";
+  out << "Ours / published medians: time " << ratio(medianTimeUnits(), publishedMedianTimeUnits()) << ", sensor reads "
+      << ratio(medianSensorReads(), publishedMedianSensorReads()) << ".\n";
 }
 
 void ExperimentTable::writeConsole(std::ostream& out) const {
   out << "strategy " << strategy << ", noise " << noise;
   if (seeds > 1) out << ", mean of " << seeds << " seeds";
   out << "   (ours | published)\n";
-  const std::vector<std::pair<std::string, size_t>> cols = {
-      {"run", 16}, {"occ", 4}, {"time", 7}, {"pub", 6}, {"sensors", 8}, {"pub", 6},
-      {"unknown", 8}, {"pub", 4}, {"detect%", 8}, {"pub", 4}, {"wrong", 6}};
+  const std::vector<std::pair<std::string, size_t>> cols = {{"run", 16},    {"occ", 4}, {"time", 7},    {"pub", 6},
+                                                            {"sensors", 8}, {"pub", 6}, {"unknown", 8}, {"pub", 4},
+                                                            {"detect%", 8}, {"pub", 4}, {"wrong", 6}};
   auto emit = [&](const std::vector<std::string>& cells) {
     std::string line;
     for (size_t i = 0; i < cols.size(); ++i) {

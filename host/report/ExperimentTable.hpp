@@ -46,8 +46,8 @@ struct RunResult {
   double detectedPct = 0;     // detected / observable occupied cells
   double performancePct = 0;  // the thesis's found occupied / actual occupied
   double timeUnits = 0, sensorReads = 0;
-  double roomCells = 0;       // world width * height
-  bool complete = true;       // the explorer finished normally
+  double roomCells = 0;  // world width * height
+  bool complete = true;  // the explorer finished normally
   // Safety (mapping::MapScore): a mean over seeds is a mean count; `lost` is 0/1, its mean the share lost.
   double unsafeFree = 0, phantomOccupied = 0, lost = 0;
   double detectedPctAligned = 0, wrongCellsAligned = 0;  // after the best rigid alignment to the world

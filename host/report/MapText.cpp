@@ -24,26 +24,19 @@ int digits(int n) {
 
 char cellGlyph(CellState s) {
   switch (s) {
-    case CellState::Free:
-      return ' ';
-    case CellState::Occupied:
-      return 'X';
-    case CellState::Unknown:
-      break;
+    case CellState::Free: return ' ';
+    case CellState::Occupied: return 'X';
+    case CellState::Unknown: break;
   }
   return '~';
 }
 
 char headingGlyph(sim::Heading h) {
   switch (h) {
-    case sim::Heading::N:
-      return '^';
-    case sim::Heading::E:
-      return '>';
-    case sim::Heading::S:
-      return 'v';
-    case sim::Heading::W:
-      break;
+    case sim::Heading::N: return '^';
+    case sim::Heading::E: return '>';
+    case sim::Heading::S: return 'v';
+    case sim::Heading::W: break;
   }
   return '<';
 }

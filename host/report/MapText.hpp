@@ -15,8 +15,8 @@ class MappingRun;
 namespace nxtmap::report {
 
 struct MapTextOptions {
-  bool color = false;   // ANSI colours (only when writing to a terminal)
-  bool rulers = true;   // column numbers above, row numbers on the left
+  bool color = false;  // ANSI colours (only when writing to a terminal)
+  bool rulers = true;  // column numbers above, row numbers on the left
 };
 
 struct RobotMark {

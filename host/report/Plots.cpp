@@ -47,8 +47,7 @@ std::string startLabel(const Scenario& s) {
   return o.str();
 }
 
-bool writeFigure(const fs::path& dir, const Figure& f, const std::vector<ExperimentTable>& tables,
-                 std::string& error) {
+bool writeFigure(const fs::path& dir, const Figure& f, const std::vector<ExperimentTable>& tables, std::string& error) {
   const ExperimentTable& first = tables.front();
   // Data: one line per scenario; columns x, label, published, then each (table, measure).
   const std::string occFile = f.name + "-occ.dat", startFile = f.name + "-start.dat";
@@ -160,8 +159,8 @@ std::string findGnuplot() {
   return "";
 }
 
-bool writePlots(const std::string& dir, const std::vector<ExperimentTable>& tables,
-                std::vector<std::string>& written, std::string& error) {
+bool writePlots(const std::string& dir, const std::vector<ExperimentTable>& tables, std::vector<std::string>& written,
+                std::string& error) {
   if (tables.empty()) {
     error = "nothing to plot";
     return false;
@@ -177,14 +176,20 @@ bool writePlots(const std::string& dir, const std::vector<ExperimentTable>& tabl
     return false;
   }
   const std::vector<Figure> figures = {
-      {"fig5_3", "Learning time (Fig. 5.3)", "time units",
+      {"fig5_3",
+       "Learning time (Fig. 5.3)",
+       "time units",
        {{"time", [](const ExperimentRow& r) { return r.mean.timeUnits; }}},
        [](const Scenario& s) { return s.seedTimeUnits; }},
-      {"fig5_4", "Grid occupancy detection (Fig. 5.4)", "occupied cells detected %",
+      {"fig5_4",
+       "Grid occupancy detection (Fig. 5.4)",
+       "occupied cells detected %",
        {{"detected", [](const ExperimentRow& r) { return r.mean.detectedPct; }},
         {"found/actual", [](const ExperimentRow& r) { return r.mean.performancePct; }}},
        [](const Scenario& s) { return s.seedDetectedPct; }},
-      {"fig5_6", "Sensor usage (Fig. 5.6)", "sensor reads",
+      {"fig5_6",
+       "Sensor usage (Fig. 5.6)",
+       "sensor reads",
        {{"reads", [](const ExperimentRow& r) { return r.mean.sensorReads; }}},
        [](const Scenario& s) { return static_cast<double>(s.seedSensorCount); }},
   };

@@ -17,7 +17,7 @@ std::string findGnuplot();
 
 // Writes the three figures into `dir` (created when missing) for one or more strategies' tables
 // over the same scenarios. False with `error` set when gnuplot is missing or fails.
-bool writePlots(const std::string& dir, const std::vector<ExperimentTable>& tables,
-                std::vector<std::string>& written, std::string& error);
+bool writePlots(const std::string& dir, const std::vector<ExperimentTable>& tables, std::vector<std::string>& written,
+                std::string& error);
 
 }  // namespace nxtmap::report

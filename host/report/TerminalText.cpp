@@ -20,15 +20,24 @@ size_t utf8SequenceLength(const std::string& text, size_t i) {
   const uint8_t lead = at(i);
   size_t n = 0;
   uint8_t lo = 0x80, hi = 0xbf;  // the allowed range of the second byte
-  if (lead >= 0xc2 && lead <= 0xdf) n = 2;
-  else if (lead == 0xe0) n = 3, lo = 0xa0;
-  else if (lead >= 0xe1 && lead <= 0xec) n = 3;
-  else if (lead == 0xed) n = 3, hi = 0x9f;
-  else if (lead >= 0xee && lead <= 0xef) n = 3;
-  else if (lead == 0xf0) n = 4, lo = 0x90;
-  else if (lead >= 0xf1 && lead <= 0xf3) n = 4;
-  else if (lead == 0xf4) n = 4, hi = 0x8f;
-  else return 0;
+  if (lead >= 0xc2 && lead <= 0xdf)
+    n = 2;
+  else if (lead == 0xe0)
+    n = 3, lo = 0xa0;
+  else if (lead >= 0xe1 && lead <= 0xec)
+    n = 3;
+  else if (lead == 0xed)
+    n = 3, hi = 0x9f;
+  else if (lead >= 0xee && lead <= 0xef)
+    n = 3;
+  else if (lead == 0xf0)
+    n = 4, lo = 0x90;
+  else if (lead >= 0xf1 && lead <= 0xf3)
+    n = 4;
+  else if (lead == 0xf4)
+    n = 4, hi = 0x8f;
+  else
+    return 0;
   if (i + n > text.size()) return 0;
   if (at(i + 1) < lo || at(i + 1) > hi) return 0;
   for (size_t k = 2; k < n; ++k) {

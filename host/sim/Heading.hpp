@@ -10,13 +10,17 @@ enum class Heading { N, E, S, W };
 
 // 'N'/'E'/'S'/'W' (either case) -> Heading; anything else -> nullopt.
 inline std::optional<Heading> headingFromChar(char c) {
-    switch (c) {
-    case 'N': case 'n': return Heading::N;
-    case 'E': case 'e': return Heading::E;
-    case 'S': case 's': return Heading::S;
-    case 'W': case 'w': return Heading::W;
+  switch (c) {
+    case 'N':
+    case 'n': return Heading::N;
+    case 'E':
+    case 'e': return Heading::E;
+    case 'S':
+    case 's': return Heading::S;
+    case 'W':
+    case 'w': return Heading::W;
     default: return std::nullopt;
-    }
+  }
 }
 
 // Heading -> degrees clockwise from N: 0, 90, 180, 270.

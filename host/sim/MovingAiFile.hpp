@@ -20,9 +20,9 @@ constexpr double kMovingAiResolutionM = 0.10;  // metres per cell side (the publ
 constexpr size_t kMaxMovingAiBytes = size_t{18} << 20;
 
 struct MovingAiGrid {
-    int width = 0;                // cells, 1..World::kMaxSide
-    int height = 0;               // cells, 1..World::kMaxSide
-    std::vector<uint8_t> blocked; // row-major, row 0 = the file's first map row; 1 = blocked, 0 = free
+  int width = 0;                 // cells, 1..World::kMaxSide
+  int height = 0;                // cells, 1..World::kMaxSide
+  std::vector<uint8_t> blocked;  // row-major, row 0 = the file's first map row; 1 = blocked, 0 = free
 };
 
 // Reads and checks the file; nullopt with `error` naming the file, the line and the problem.

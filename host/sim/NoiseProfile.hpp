@@ -11,9 +11,9 @@
 namespace nxtmap::sim {
 
 struct NoiseProfile {
-    std::string name;
-    SonarNoise sonar;
-    WheelNoise wheels;
+  std::string name;
+  SonarNoise sonar;
+  WheelNoise wheels;
 };
 
 // Presets, mildest first:

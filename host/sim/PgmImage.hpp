@@ -15,10 +15,10 @@ constexpr int kMaxPgmSide = 4096;  // pixels, the largest width or height read (
 constexpr size_t kMaxPgmBytes = size_t{100} << 20;
 
 struct PgmImage {
-    int width = 0;                 // pixels, >= 1
-    int height = 0;                // pixels, >= 1
-    int maxval = 255;              // 1..65535
-    std::vector<uint16_t> pixels;  // row-major, row 0 = top of the image, each 0..maxval
+  int width = 0;                 // pixels, >= 1
+  int height = 0;                // pixels, >= 1
+  int maxval = 255;              // 1..65535
+  std::vector<uint16_t> pixels;  // row-major, row 0 = top of the image, each 0..maxval
 };
 
 // Reads the file (a regular file of at most kMaxPgmBytes); on failure returns nullopt and sets error (naming

@@ -8,9 +8,9 @@
 namespace nxtmap::sim {
 
 struct RayHit {
-    bool hit = false;           // false: nothing blocked within the range
-    double distanceCm = 0.0;    // from the ray's origin to the first blocked-cell face, cm (0 if inside one)
-    double incidenceDeg = 0.0;  // 0..90, angle between the ray and the hit face's normal
+  bool hit = false;           // false: nothing blocked within the range
+  double distanceCm = 0.0;    // from the ray's origin to the first blocked-cell face, cm (0 if inside one)
+  double incidenceDeg = 0.0;  // 0..90, angle between the ray and the hit face's normal
 };
 
 // Unit vector of a compass direction; exact (0 / +-1) for multiples of 90 degrees.

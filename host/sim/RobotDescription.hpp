@@ -12,26 +12,26 @@ namespace nxtmap::sim {
 // One ultrasonic sensor on the robot: its face `forwardCm` ahead of and `rightCm` to the right of the
 // robot's centre, pointing `facingDeg` clockwise from the robot's heading (0 front, 90 right, ...).
 struct SensorMount {
-    double forwardCm = 0.0;
-    double rightCm = 0.0;
-    double facingDeg = 0.0;
+  double forwardCm = 0.0;
+  double rightCm = 0.0;
+  double facingDeg = 0.0;
 };
 
 struct RobotDescription {
-    std::string name;                 // "published", "brick"
-    int cellCm = 10;                  // the robot's grid cell, whole cm (the explorer's RangeGeometry::cellCm)
-    double bodyLengthCm = 0.0;        // footprint along the heading, centred on the robot's centre; 0 = a point
-    double bodyWidthCm = 0.0;         // footprint across the heading; 0 = a point
-    std::array<SensorMount, 4> sensors{};  // front, right, back, left (SimRobot's sensor index)
-    int mountCm = 0;                  // the explorer's RangeGeometry::mountCm (sensor face ahead of the centre)
-    double minRangeM = 0.05;          // readings the robot trusts, metres (RangeGeometry::minCm)
-    double rangeM = 1.0;              // (RangeGeometry::maxCm)
-    // The drive (the emulator's DriveModel and the wheel model): NXT 56 mm tyres, 112 mm track.
-    double wheelDiameterCm = 5.6;
-    double trackCm = 11.2;
+  std::string name;                      // "published", "brick"
+  int cellCm = 10;                       // the robot's grid cell, whole cm (the explorer's RangeGeometry::cellCm)
+  double bodyLengthCm = 0.0;             // footprint along the heading, centred on the robot's centre; 0 = a point
+  double bodyWidthCm = 0.0;              // footprint across the heading; 0 = a point
+  std::array<SensorMount, 4> sensors{};  // front, right, back, left (SimRobot's sensor index)
+  int mountCm = 0;                       // the explorer's RangeGeometry::mountCm (sensor face ahead of the centre)
+  double minRangeM = 0.05;               // readings the robot trusts, metres (RangeGeometry::minCm)
+  double rangeM = 1.0;                   // (RangeGeometry::maxCm)
+  // The drive (the emulator's DriveModel and the wheel model): NXT 56 mm tyres, 112 mm track.
+  double wheelDiameterCm = 5.6;
+  double trackCm = 11.2;
 
-    // The body's corners in the plane for a robot at (xCm, yCm) facing headingDeg; empty for a point.
-    std::vector<std::array<double, 2>> footprint(double xCm, double yCm, double headingDeg) const;
+  // The body's corners in the plane for a robot at (xCm, yCm) facing headingDeg; empty for a point.
+  std::vector<std::array<double, 2>> footprint(double xCm, double yCm, double headingDeg) const;
 };
 
 // "published": the seed method's experiments: 10 cm cells, four sensors at the centre, 5 cm - 1 m trusted,

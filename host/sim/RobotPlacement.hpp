@@ -16,12 +16,12 @@
 namespace nxtmap::sim {
 
 struct RobotPlacement {
-    std::shared_ptr<const Scene> scene;
-    RobotDescription robot;
-    StartPose start;        // the true start pose
-    Placement grid;         // the robot's grid over the whole scene; grid.startCol/startRow hold the start
-    World truth;            // the truth on that grid
-    Heading heading;        // the start heading against the grid (N, E, S, W)
+  std::shared_ptr<const Scene> scene;
+  RobotDescription robot;
+  StartPose start;  // the true start pose
+  Placement grid;   // the robot's grid over the whole scene; grid.startCol/startRow hold the start
+  World truth;      // the truth on that grid
+  Heading heading;  // the start heading against the grid (N, E, S, W)
 };
 
 // The robot's grid is the raster's own (and the raster itself the truth, cell numbers kept) when the site's
@@ -34,13 +34,13 @@ RobotPlacement placeRobot(const Site& site, const RobotDescription& robot, const
 // set-up; 10 cm without a raster) with its sensors mountOffsetCm out. No pose: the centre of raster cell
 // (startCol, startRow) facing heading.
 struct PlacementRequest {
-    std::optional<RobotDescription> robot;
-    std::optional<StartPose> pose;
-    int startCol = 0, startRow = 0;
-    Heading heading = Heading::N;
-    double startJitterDeg = 0.0;
-    uint64_t seed = 1;
-    double mountOffsetCm = 0.0;
+  std::optional<RobotDescription> robot;
+  std::optional<StartPose> pose;
+  int startCol = 0, startRow = 0;
+  Heading heading = Heading::N;
+  double startJitterDeg = 0.0;
+  uint64_t seed = 1;
+  double mountOffsetCm = 0.0;
 };
 RobotPlacement placeRobot(const Site& site, const PlacementRequest& request);
 

@@ -28,29 +28,29 @@ namespace nxtmap::sim {
 // origin's bound it keeps the origin within +-1e7 cells of the map, far inside an int.
 constexpr double kMinResolutionM = 0.01;
 constexpr double kMaxResolutionM = 10.0;
-constexpr double kMaxOriginM = 100000.0;    // |origin x|, |origin y|, metres (100 km)
-constexpr double kMaxOriginYawRad = 6.3;    // |origin yaw|, radians (a whole turn either way)
+constexpr double kMaxOriginM = 100000.0;              // |origin x|, |origin y|, metres (100 km)
+constexpr double kMaxOriginYawRad = 6.3;              // |origin yaw|, radians (a whole turn either way)
 constexpr size_t kMaxRosYamlBytes = size_t{1} << 20;  // the YAML file, bytes (labels included)
 
 enum class RosCell : uint8_t { Free = 0, Occupied = 1, Unknown = 2 };
 
 struct RosMapLabel {
-    std::string name;
-    int col = 0;
-    int row = 0;
-    int width = 1;   // cells, as written (checked by the map)
-    int height = 1;  // cells, as written (checked by the map)
+  std::string name;
+  int col = 0;
+  int row = 0;
+  int width = 1;   // cells, as written (checked by the map)
+  int height = 1;  // cells, as written (checked by the map)
 };
 
 struct RosMapFile {
-    int width = 0;              // cells, 1..4096 (the image's size)
-    int height = 0;             // cells, 1..4096
-    double resolutionM = 0.10;  // metres per cell side
-    double originX = 0.0;       // metres: the map's lower-left corner
-    double originY = 0.0;       // metres
-    double originYaw = 0.0;     // radians
-    std::vector<RosCell> cells; // row-major, row 0 = top
-    std::vector<RosMapLabel> labels;  // in file order
+  int width = 0;                    // cells, 1..4096 (the image's size)
+  int height = 0;                   // cells, 1..4096
+  double resolutionM = 0.10;        // metres per cell side
+  double originX = 0.0;             // metres: the map's lower-left corner
+  double originY = 0.0;             // metres
+  double originYaw = 0.0;           // radians
+  std::vector<RosCell> cells;       // row-major, row 0 = top
+  std::vector<RosMapLabel> labels;  // in file order
 };
 
 // Reads the YAML and its image; nullopt with `error` ("YAMLPATH: <problem>", naming the key or the image).

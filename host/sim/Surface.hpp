@@ -13,19 +13,19 @@ enum class Surface { Hard, Soft, Thin };
 
 // "hard", "soft", "thin" -> Surface; anything else -> nullopt.
 inline std::optional<Surface> surfaceFromName(const std::string& name) {
-    if (name == "hard") return Surface::Hard;
-    if (name == "soft") return Surface::Soft;
-    if (name == "thin") return Surface::Thin;
-    return std::nullopt;
+  if (name == "hard") return Surface::Hard;
+  if (name == "soft") return Surface::Soft;
+  if (name == "thin") return Surface::Thin;
+  return std::nullopt;
 }
 
 inline const char* surfaceName(Surface s) {
-    switch (s) {
+  switch (s) {
     case Surface::Hard: return "hard";
     case Surface::Soft: return "soft";
     case Surface::Thin: return "thin";
-    }
-    return "hard";
+  }
+  return "hard";
 }
 
 }  // namespace nxtmap::sim

@@ -19,9 +19,9 @@ World rasterizeScene(const Scene& scene, const GridFrame& frame, int width, int 
 
 // A grid laid over a whole scene for a robot starting at a plane point.
 struct Placement {
-    GridFrame frame;               // cell (0, 0) at frame.originCm
-    int startCol = 0, startRow = 0;  // the cell whose centre is the start point
-    int width = 0, height = 0;     // cells covering the scene's bounds (and the start) plus one cell margin
+  GridFrame frame;                 // cell (0, 0) at frame.originCm
+  int startCol = 0, startRow = 0;  // the cell whose centre is the start point
+  int width = 0, height = 0;       // cells covering the scene's bounds (and the start) plus one cell margin
 };
 
 // The grid of cellCm cells turned to compass frameHeadingDeg with a cell centred on startCm. For a raster

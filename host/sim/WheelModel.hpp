@@ -21,52 +21,52 @@ namespace nxtmap::sim {
 // changes linearly by headingChangeDeg = headingWheelsDeg + headingNoiseDeg. The two parts are given so a
 // caller can add them in the order the published model did: (heading + wheels) + noise.
 struct WheelStep {
-    double distanceCm = 0.0;
-    double headingChangeDeg = 0.0;
-    double headingWheelsDeg = 0.0;  // what the wheels' arcs give (commanded turn, Eb, Ed, backlash, counts)
-    double headingNoiseDeg = 0.0;   // the random turn error (turnSigmaDeg)
+  double distanceCm = 0.0;
+  double headingChangeDeg = 0.0;
+  double headingWheelsDeg = 0.0;  // what the wheels' arcs give (commanded turn, Eb, Ed, backlash, counts)
+  double headingNoiseDeg = 0.0;   // the random turn error (turnSigmaDeg)
 };
 
 class WheelModel {
-public:
-    WheelModel(const WheelNoise& noise, double wheelDiameterCm, double trackCm, uint64_t seed);
+ public:
+  WheelModel(const WheelNoise& noise, double wheelDiameterCm, double trackCm, uint64_t seed);
 
-    // Commanded straight drive of cm (+ forward): both motors turn cm / (pi D) turns.
-    WheelStep straight(double cm, std::mt19937_64& rng);
-    // Commanded spin on the spot by deg, + clockwise: the left motor forward, the right one back.
-    WheelStep spin(double deg, std::mt19937_64& rng);
-    // The discrete turn of 45 degrees * eighths (its turn error is turnSigmaDeg whatever the angle).
-    WheelStep turnEighths(int eighths, std::mt19937_64& rng);
+  // Commanded straight drive of cm (+ forward): both motors turn cm / (pi D) turns.
+  WheelStep straight(double cm, std::mt19937_64& rng);
+  // Commanded spin on the spot by deg, + clockwise: the left motor forward, the right one back.
+  WheelStep spin(double deg, std::mt19937_64& rng);
+  // The discrete turn of 45 degrees * eighths (its turn error is turnSigmaDeg whatever the angle).
+  WheelStep turnEighths(int eighths, std::mt19937_64& rng);
 
-    // The emulator: the motors turned the left/right encoders by these degrees in one integration step;
-    // the actual ground arcs of each wheel in cm (backlash, diameters, the stretch's slip).
-    void arcs(double leftEncDeg, double rightEncDeg, double& leftCm, double& rightCm);
-    // A new stretch of constant motor power: a new slip factor N(1, slipSigma) for arcs().
-    void newStretch(std::mt19937_64& rng);
+  // The emulator: the motors turned the left/right encoders by these degrees in one integration step;
+  // the actual ground arcs of each wheel in cm (backlash, diameters, the stretch's slip).
+  void arcs(double leftEncDeg, double rightEncDeg, double& leftCm, double& rightCm);
+  // A new stretch of constant motor power: a new slip factor N(1, slipSigma) for arcs().
+  void newStretch(std::mt19937_64& rng);
 
-    double trackCm() const { return trackCm_ * trackRatio_; }  // the actual track (Eb applied)
-    double nominalTrackCm() const { return trackCm_; }
-    double cmPerMotorDeg() const { return cmPerDeg_; }          // nominal wheel arc per motor degree
-    double diameterRatio() const;                               // this robot's Ed (right / left)
-    double trackRatio() const { return trackRatio_; }           // this robot's Eb (actual / nominal)
-    const WheelNoise& noise() const { return noise_; }
+  double trackCm() const { return trackCm_ * trackRatio_; }  // the actual track (Eb applied)
+  double nominalTrackCm() const { return trackCm_; }
+  double cmPerMotorDeg() const { return cmPerDeg_; }  // nominal wheel arc per motor degree
+  double diameterRatio() const;                       // this robot's Ed (right / left)
+  double trackRatio() const { return trackRatio_; }   // this robot's Eb (actual / nominal)
+  const WheelNoise& noise() const { return noise_; }
 
-private:
-    // The wheel's share of a commanded motor rotation of motorDeg: the count it stops on, less the gear
-    // play taken up; 1 exactly when neither applies.
-    double achieved(int wheel, double motorDeg);
-    // Wheel rotation for a motor rotation of motorDeg through wheel's gear play (updates the play).
-    double throughPlay(int wheel, double motorDeg);
-    double turnError(double sigma, std::mt19937_64& rng) const;
-    WheelStep turnBy(double deg, double noiseSigma, std::mt19937_64& rng);
+ private:
+  // The wheel's share of a commanded motor rotation of motorDeg: the count it stops on, less the gear
+  // play taken up; 1 exactly when neither applies.
+  double achieved(int wheel, double motorDeg);
+  // Wheel rotation for a motor rotation of motorDeg through wheel's gear play (updates the play).
+  double throughPlay(int wheel, double motorDeg);
+  double turnError(double sigma, std::mt19937_64& rng) const;
+  WheelStep turnBy(double deg, double noiseSigma, std::mt19937_64& rng);
 
-    WheelNoise noise_;
-    double cmPerDeg_;                     // pi D / 360
-    double trackCm_;                      // nominal
-    double trackRatio_ = 1.0;             // Eb
-    std::array<double, 2> diameter_{};    // each wheel's diameter / nominal (1 -+ e/2)
-    std::array<double, 2> play_{};        // motor minus wheel, motor degrees, within +-backlash/2
-    double slip_ = 1.0;                   // the current stretch's factor (arcs())
+  WheelNoise noise_;
+  double cmPerDeg_;                   // pi D / 360
+  double trackCm_;                    // nominal
+  double trackRatio_ = 1.0;           // Eb
+  std::array<double, 2> diameter_{};  // each wheel's diameter / nominal (1 -+ e/2)
+  std::array<double, 2> play_{};      // motor minus wheel, motor degrees, within +-backlash/2
+  double slip_ = 1.0;                 // the current stretch's factor (arcs())
 };
 
 }  // namespace nxtmap::sim

@@ -20,14 +20,14 @@
 namespace nxtmap::sim {
 
 struct WheelNoise {
-    double slipSigma = 0.0;           // relative distance error per straight move, 1 sigma (0.02 = 2 %)
-    double turnSigmaDeg = 0.0;        // gaussian turn error per 90 degree turn, degrees (1 sigma)
-    double encoderDeg = 0.0;          // encoder count, degrees of motor rotation (0 = continuous); a
-                                      // simulated pilot stops each wheel on a whole count
-    double backlashDeg = 0.0;         // gear play per wheel, degrees of motor rotation: after a wheel's
-                                      // direction reverses, this much motor rotation does not move the wheel
-    double diameterRatioError = 0.0;  // |D_right - D_left| / D (>= 0), about |Ed - 1|
-    double trackError = 0.0;          // |Eb - 1| (>= 0), effective track-width error
+  double slipSigma = 0.0;           // relative distance error per straight move, 1 sigma (0.02 = 2 %)
+  double turnSigmaDeg = 0.0;        // gaussian turn error per 90 degree turn, degrees (1 sigma)
+  double encoderDeg = 0.0;          // encoder count, degrees of motor rotation (0 = continuous); a
+                                    // simulated pilot stops each wheel on a whole count
+  double backlashDeg = 0.0;         // gear play per wheel, degrees of motor rotation: after a wheel's
+                                    // direction reverses, this much motor rotation does not move the wheel
+  double diameterRatioError = 0.0;  // |D_right - D_left| / D (>= 0), about |Ed - 1|
+  double trackError = 0.0;          // |Eb - 1| (>= 0), effective track-width error
 };
 
 // The NXT drive as built (RobotDescription, firmware MotionGeometry): 56 mm tyres, 112 mm track.

@@ -48,26 +48,26 @@
 namespace nxtmap::sim {
 
 constexpr size_t kMaxWorldFileBytes = size_t{1} << 20;  // the YAML file, bytes
-constexpr double kMaxCoordM = 1000.0;      // |x|, |y| of any point and |dx|, |dy| of the offset, metres
-constexpr double kMaxExtentM = 200.0;      // the outline's width and height, metres (a house, not a town)
-constexpr double kMaxRadiusM = 5.0;        // a circle's radius, metres
-constexpr size_t kMaxObstacles = 2000;     // entries under obstacles
-constexpr size_t kMaxPolygonPoints = 1000; // points of one polygon or wall
+constexpr double kMaxCoordM = 1000.0;                   // |x|, |y| of any point and |dx|, |dy| of the offset, metres
+constexpr double kMaxExtentM = 200.0;                   // the outline's width and height, metres (a house, not a town)
+constexpr double kMaxRadiusM = 5.0;                     // a circle's radius, metres
+constexpr size_t kMaxObstacles = 2000;                  // entries under obstacles
+constexpr size_t kMaxPolygonPoints = 1000;              // points of one polygon or wall
 constexpr size_t kMaxWorldPoints = 10000;  // polygon and wall points in all (keeps the checks, which compare
                                            // sides pairwise, well under a second; a furnished room has ~100)
 constexpr size_t kMaxNameChars = 100;      // the world's and an obstacle's name
 
 struct WorldSpec {
-    std::string name;
-    std::shared_ptr<const Scene> scene;  // finished (Scene::finish called)
-    bool hasStart = false;
-    Vec2 startCm{0.0, 0.0};              // plane point, cm (valid when hasStart)
-    double startHeadingDeg = 0.0;        // compass, clockwise from north, 0 .. 360 (valid when hasStart)
+  std::string name;
+  std::shared_ptr<const Scene> scene;  // finished (Scene::finish called)
+  bool hasStart = false;
+  Vec2 startCm{0.0, 0.0};        // plane point, cm (valid when hasStart)
+  double startHeadingDeg = 0.0;  // compass, clockwise from north, 0 .. 360 (valid when hasStart)
 };
 
 struct WorldFileLoad {
-    std::optional<WorldSpec> world;  // set on success
-    std::string error;               // otherwise: one line naming the file, the element and the problem
+  std::optional<WorldSpec> world;  // set on success
+  std::string error;               // otherwise: one line naming the file, the element and the problem
 };
 
 // Reads the file (a regular file of at most kMaxWorldFileBytes: readInputFile) and parses it.

@@ -9,11 +9,11 @@
 namespace nxtmap::sim {
 
 struct Observability {
-    std::vector<uint8_t> reachable;   // per cell, row-major width*height: 1 = free and 4-connected to the start
-    std::vector<uint8_t> observable;  // per cell, row-major width*height: 1 = seen along an axis from a reachable cell
-    int reachableCount = 0;           // cells with reachable = 1
-    int observableFree = 0;           // observable free cells
-    int observableOccupied = 0;       // observable blocked cells
+  std::vector<uint8_t> reachable;   // per cell, row-major width*height: 1 = free and 4-connected to the start
+  std::vector<uint8_t> observable;  // per cell, row-major width*height: 1 = seen along an axis from a reachable cell
+  int reachableCount = 0;           // cells with reachable = 1
+  int observableFree = 0;           // observable free cells
+  int observableOccupied = 0;       // observable blocked cells
 };
 
 // Cell X is observable iff, for some reachable cell R and one of the 4 axis directions, X lies k cells from R

@@ -10,8 +10,8 @@
 namespace nxtmap::worlds {
 
 struct SiteLoad {
-    std::optional<sim::Site> site;
-    std::string error;  // one line naming the file and the problem when site is empty
+  std::optional<sim::Site> site;
+  std::string error;  // one line naming the file and the problem when site is empty
 };
 
 // By extension and content: .map Moving AI (the format has no resolution: its cells are taken as cellCm, the

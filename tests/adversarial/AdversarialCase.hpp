@@ -22,13 +22,13 @@ struct CaseDirs {
 };
 
 struct AdversarialCase {
-  std::string name;                        // a GoogleTest-safe identifier: [A-Za-z0-9_]
-  std::vector<std::string> args;           // after `nxtmap`; "{dir}" and "{src}" are replaced by the paths
-  std::function<void(const CaseDirs&)> setup = nullptr;  // fixture files, before the snapshot
-  std::string stdinText;                   // a console script, or "" for /dev/null
-  double timeoutS = 30;                    // the run is a hang past this (under ASan, with margin)
-  bool works = false;                      // legitimate input: exit 0 expected
-  std::vector<std::string> creates;        // works: files it must have created (relative to dir)
+  std::string name;               // a GoogleTest-safe identifier: [A-Za-z0-9_]
+  std::vector<std::string> args;  // after `nxtmap`; "{dir}" and "{src}" are replaced by the paths
+  std::function<void(const CaseDirs&)> setup = nullptr;         // fixture files, before the snapshot
+  std::string stdinText;                                        // a console script, or "" for /dev/null
+  double timeoutS = 30;                                         // the run is a hang past this (under ASan, with margin)
+  bool works = false;                                           // legitimate input: exit 0 expected
+  std::vector<std::string> creates;                             // works: files it must have created (relative to dir)
   std::function<std::string(const CaseDirs&)> check = nullptr;  // an extra check; "" when it holds
 };
 

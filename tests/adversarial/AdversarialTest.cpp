@@ -86,8 +86,8 @@ TEST_P(Adversarial, RefusedCleanlyOrWorks) {
 
   std::vector<std::string> args;
   for (const std::string& a : c.args) args.push_back(substitute(a, dirs));
-  const ChildResult r = runChild(cliUnderTest(), args, dirs.path("cwd"), substitute(c.stdinText, dirs),
-                                 tmp.path("scratch"), c.timeoutS);
+  const ChildResult r =
+      runChild(cliUnderTest(), args, dirs.path("cwd"), substitute(c.stdinText, dirs), tmp.path("scratch"), c.timeoutS);
 
   ASSERT_FALSE(r.timedOut) << "hung: still running after " << c.timeoutS << " s; stderr: " << r.err;
   ASSERT_FALSE(r.signalled) << "killed by signal " << r.signal << "; stderr: " << r.err;

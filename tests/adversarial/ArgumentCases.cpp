@@ -39,8 +39,12 @@ std::vector<AdversarialCase> argumentCases() {
   eachValue(out, "sim_rangeM", sim, "--range-m", kNotFinite);
   eachValue(out, "sim_delayMs", sim, "--delay-ms", {{"Negative", "-5"}, {"Text", "soon"}});
   eachValue(out, "sim_start", {"sim", kGoodMap, "--show", "none"}, "--start",
-            {{"Outside", "999,999"}, {"Negative", "-1,-1"}, {"Wall", "0,0"}, {"Overflow", "99999999999,1"},
-             {"Text", "here"}, {"OneNumber", "5"}});
+            {{"Outside", "999,999"},
+             {"Negative", "-1,-1"},
+             {"Wall", "0,0"},
+             {"Overflow", "99999999999,1"},
+             {"Text", "here"},
+             {"OneNumber", "5"}});
   eachValue(out, "sim_heading", sim, "--heading", {{"Bad", "NE"}});
   eachValue(out, "sim_noise", sim, "--noise", {{"Bad", "loud"}});
   eachValue(out, "sim_strategy", sim, "--strategy", {{"Bad", "random"}});
@@ -52,7 +56,9 @@ std::vector<AdversarialCase> argumentCases() {
   eachValue(out, "path_algo", path, "--algo", {{"Bad", "bfs"}});
   eachValue(out, "path_draw", path, "--draw", {{"Bad", "sometimes"}});
   eachValue(out, "path_label", path, "--label",
-            {{"NoCell", "chair"}, {"Outside", "chair=999,999"}, {"Negative", "chair=1,1,-2,3"},
+            {{"NoCell", "chair"},
+             {"Outside", "chair=999,999"},
+             {"Negative", "chair=1,1,-2,3"},
              {"Escape", "\x1b[2Jchair=1,1"}});
   eachValue(out, "path_to", {"path", kGoodMap, "--from", "1,20"}, "--to",
             {{"Outside", "99,99"}, {"UnknownLabel", "near:nothing"}, {"Text", "there"}});

@@ -36,8 +36,9 @@ inline void writeRosMap(const CaseDirs& d, const std::string& name, const std::s
 // A ROS world whose YAML has `line` in place of the line starting with the same key.
 inline std::function<void(const CaseDirs&)> rosWith(const std::string& line) {
   return [line](const CaseDirs& d) {
-    std::string yaml = "image: {image}\nresolution: 0.1\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
-                       "occupied_thresh: 0.65\nfree_thresh: 0.196\n";
+    std::string yaml =
+        "image: {image}\nresolution: 0.1\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
+        "occupied_thresh: 0.65\nfree_thresh: 0.196\n";
     const std::string key = line.substr(0, line.find(':') + 1);
     const size_t at = yaml.find(key);
     yaml.replace(at, yaml.find('\n', at) - at, line);

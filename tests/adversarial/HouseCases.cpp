@@ -70,9 +70,7 @@ std::string manyPoints(int n) {
 }
 
 std::vector<BadHouse> badPlans() {
-  const auto planFile = [](std::string text) {
-    return [text](const CaseDirs& d) { d.write("plan.json", text); };
-  };
+  const auto planFile = [](std::string text) { return [text](const CaseDirs& d) { d.write("plan.json", text); }; };
   return {
       {"planTwentyThousandPoints", planFile(plan(manyPoints(20000)))},
       {"planNumbersNear1e308", planFile(plan("[[0, 0], [1.7e308, 0], [1.7e308, 1.7e308], [0, 1.7e308]]"))},

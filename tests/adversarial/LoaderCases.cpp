@@ -24,7 +24,12 @@ std::vector<BadWorld> badWorlds() {
       {"devZeroMap", "{dir}/zero.map", [](const CaseDirs& d) { symlinkTo(d, "/dev/zero", "zero.map"); }},
       {"devZeroYaml", "{dir}/zero.yaml", [](const CaseDirs& d) { symlinkTo(d, "/dev/zero", "zero.yaml"); }},
       {"emptyMap", "{dir}/empty.map", [](const CaseDirs& d) { d.write("empty.map", ""); }},
-      {"binaryMap", "{dir}/bin.map", [](const CaseDirs& d) { d.write("bin.map", std::string("\x7f" "ELF\0\1\2", 7)); }},
+      {"binaryMap", "{dir}/bin.map",
+       [](const CaseDirs& d) {
+         d.write("bin.map", std::string("\x7f"
+                                        "ELF\0\1\2",
+                                        7));
+       }},
       {"hugeMapHeader", "{dir}/huge.map",
        [](const CaseDirs& d) { d.write("huge.map", "type octile\nheight 1000000000\nwidth 1000000000\nmap\n@@\n"); }},
       {"shortMapRows", "{dir}/short.map",
@@ -43,16 +48,18 @@ std::vector<BadWorld> badWorlds() {
       {"thresholdsSwapped", "{dir}/w.yaml", rosWith("free_thresh: 0.9")},
       {"imageDevZero", "{dir}/w.yaml",
        [](const CaseDirs& d) {
-         writeRosMap(d, "w", "image: zero.pgm\nresolution: 0.1\norigin: [0, 0, 0]\nnegate: 0\n"
-                             "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+         writeRosMap(d, "w",
+                     "image: zero.pgm\nresolution: 0.1\norigin: [0, 0, 0]\nnegate: 0\n"
+                     "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
          symlinkTo(d, "/dev/zero", "zero.pgm");
        }},
       {"imageFolder", "{dir}/w.yaml", rosWith("image: .")},
       {"imageMissing", "{dir}/w.yaml", rosWith("image: nothing-here.pgm")},
       {"imageHugeHeader", "{dir}/w.yaml",
        [](const CaseDirs& d) {
-         writeRosMap(d, "w", "image: big.pgm\nresolution: 0.1\norigin: [0, 0, 0]\nnegate: 0\n"
-                             "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+         writeRosMap(d, "w",
+                     "image: big.pgm\nresolution: 0.1\norigin: [0, 0, 0]\nnegate: 0\n"
+                     "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
          d.write("big.pgm", "P5\n100000 100000\n255\n\x01\x02");
        }},
       {"yamlNotAMap", "{dir}/list.yaml", [](const CaseDirs& d) { d.write("list.yaml", "- 1\n- 2\n"); }},
@@ -91,7 +98,12 @@ std::vector<AdversarialCase> loaderCases() {
       {"Folder", [](const CaseDirs& d) { d.write("fw.elf/x", "x"); }},
       {"Empty", [](const CaseDirs& d) { d.write("fw.elf", ""); }},
       {"NotElf", [](const CaseDirs& d) { d.write("fw.elf", std::string(4096, 'A')); }},
-      {"TruncatedElf", [](const CaseDirs& d) { d.write("fw.elf", std::string("\x7f" "ELF\1\1\1", 7)); }},
+      {"TruncatedElf",
+       [](const CaseDirs& d) {
+         d.write("fw.elf", std::string("\x7f"
+                                       "ELF\1\1\1",
+                                       7));
+       }},
       {"Missing", [](const CaseDirs&) {}},
   };
   for (const auto& [name, setup] : badFirmware) {

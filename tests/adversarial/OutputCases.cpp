@@ -49,8 +49,8 @@ std::vector<AdversarialCase> outputCases() {
     };
     out.push_back(refused("sim_png" + tag, with(sim, "--png", ".png"), makeFolder));
     out.push_back(refused("sim_save" + tag, with(sim, "--save", ".yaml"), makeFolder));
-    out.push_back(refused("experiments_csv" + tag, with({"experiments", "{src}/worlds/seed-appendix-a"}, "--csv", ".csv"),
-                          makeFolder));
+    out.push_back(refused("experiments_csv" + tag,
+                          with({"experiments", "{src}/worlds/seed-appendix-a"}, "--csv", ".csv"), makeFolder));
     out.back().timeoutS = 120;
     out.push_back(refused("export_png" + tag, with({"export", "{dir}/house"}, "--png", ".png"), [](const CaseDirs& d) {
       houseWith()(d);
@@ -63,19 +63,19 @@ std::vector<AdversarialCase> outputCases() {
                           makeFolder));
   }
   // A trailing slash names the same house folder.
-  out.push_back(works("simHouse_saveTrailingSlash",
-                      {"sim-house", "{src}/worlds/houses/three-rooms.map", "--start", "8,8", "--save", "{dir}/out/house/"},
-                      {"out/house/house.yaml"}, [](const CaseDirs& d) { d.write("out/keep", ""); }));
-  out.push_back(refused("simHouse_saveMissingParent",
-                        {"sim-house", "{src}/worlds/houses/three-rooms.map", "--start", "8,8", "--save",
-                         "{dir}/no/such/house"}));
+  out.push_back(
+      works("simHouse_saveTrailingSlash",
+            {"sim-house", "{src}/worlds/houses/three-rooms.map", "--start", "8,8", "--save", "{dir}/out/house/"},
+            {"out/house/house.yaml"}, [](const CaseDirs& d) { d.write("out/keep", ""); }));
+  out.push_back(refused("simHouse_saveMissingParent", {"sim-house", "{src}/worlds/houses/three-rooms.map", "--start",
+                                                       "8,8", "--save", "{dir}/no/such/house"}));
   // A staging folder of a save that was killed is removed by the next save of the same house.
-  AdversarialCase stale = works("simHouse_saveCleansStaleStaging",
-                                {"sim-house", "{src}/worlds/houses/three-rooms.map", "--start", "8,8", "--save",
-                                 "{dir}/out/house"},
-                                {"out/house/house.yaml"}, [](const CaseDirs& d) {
-                                  d.write("out/house.saving-" + std::to_string(test::endedPid()) + "/house.yaml", "torn");
-                                });
+  AdversarialCase stale =
+      works("simHouse_saveCleansStaleStaging",
+            {"sim-house", "{src}/worlds/houses/three-rooms.map", "--start", "8,8", "--save", "{dir}/out/house"},
+            {"out/house/house.yaml"}, [](const CaseDirs& d) {
+              d.write("out/house.saving-" + std::to_string(test::endedPid()) + "/house.yaml", "torn");
+            });
   stale.check = [](const CaseDirs& d) -> std::string {
     for (const auto& e : std::filesystem::directory_iterator(d.path("out"))) {
       if (e.path().filename().string().find(".saving-") != std::string::npos) return "left: " + e.path().string();

@@ -19,12 +19,13 @@ const std::string kRoom = "worlds/seed-appendix-a/occupancy-089.map";  // 22 x 2
 constexpr int kKillAfterS = 20;
 
 // A 4 x 3 room: walls around two free cells (1,1) and (2,1).
-const std::string kPgm = std::string("P5\n4 3\n255\n") + std::string(4, '\0') + '\0' + '\xfe' + '\xfe' + '\0' +
-                         std::string(4, '\0');
+const std::string kPgm =
+    std::string("P5\n4 3\n255\n") + std::string(4, '\0') + '\0' + '\xfe' + '\xfe' + '\0' + std::string(4, '\0');
 
 std::string rosYaml(const std::string& replace) {
-  std::string y = "image: room.pgm\nresolution: 0.1\norigin: [0.0, 0.0, 0.0]\nnegate: 0\noccupied_thresh: 0.65\n"
-                  "free_thresh: 0.196\n";
+  std::string y =
+      "image: room.pgm\nresolution: 0.1\norigin: [0.0, 0.0, 0.0]\nnegate: 0\noccupied_thresh: 0.65\n"
+      "free_thresh: 0.196\n";
   const std::string key = replace.substr(0, replace.find(':') + 1);
   const size_t at = y.find(key);
   if (at == std::string::npos) return y + replace + "\n";
@@ -107,7 +108,9 @@ std::vector<BadCall> otherCases() {
       {"sim_rangeShorterThanACellAndAHalf", "sim {dir}/w.yaml --start 1,1 --show none --robot brick --range-m 0.2",
        ros("resolution: 0.5"), "--range-m 0.2 reaches less than 1.5 of the robot's 20 cm cells"},
       {"simHouse_rangeShorterThanACellAndAHalf", "sim-house {dir}/w.yaml --start 1,1 --robot brick --range-m 0.2",
-       ros("resolution: 0.5"), "--range-m 0.2 reaches less than 1.5 of the robot's 20 cm cells, so no reading could prove a neighbouring cell free: use --range-m 0.30 or more"},
+       ros("resolution: 0.5"),
+       "--range-m 0.2 reaches less than 1.5 of the robot's 20 cm cells, so no reading could prove a neighbouring cell "
+       "free: use --range-m 0.30 or more"},
       {"emulate_firmwareDevZero", "emulate " + kRoom + " --start 1,20 --seconds 1 --firmware {dir}/fw.elf",
        link("/dev/zero", "fw.elf"), "fw.elf: is a device, not a regular file"},
       {"emulate_firmwareFolder", "emulate " + kRoom + " --start 1,20 --seconds 1 --firmware {dir}/fw.elf",

@@ -79,21 +79,26 @@ TEST(CliBadInput, Worlds) {
 TEST(CliBadInput, ScenarioTables) {
   TempDir tmp("tables");
   const std::string maps = sourcePath(kDir) + "/";
-  const std::string head = "# id\tmap\tstart_col\tstart_row\tseed_x_m\tseed_z_m\toccupied_cells\tseed_unknowns\t"
-                           "seed_time_units\tseed_sensor_count\tseed_detected_pct\n";
+  const std::string head =
+      "# id\tmap\tstart_col\tstart_row\tseed_x_m\tseed_z_m\toccupied_cells\tseed_unknowns\t"
+      "seed_time_units\tseed_sensor_count\tseed_detected_pct\n";
   const std::string good = "occ089\t" + maps + "occupancy-089.map\t1\t20\t-0.95\t0.95\t89\t14\t294\t1189\t100\n";
   expectUsageError("experiments " + tmp.path("nowhere"), "nowhere");
   tmp.write("empty/readme", "");
   expectUsageError("experiments " + tmp.path("empty"), "scenarios.tsv");
   expectUsageError("experiments " + scenarioDir(tmp, "short", head + good + "occ095\tx.map\t1\n"), "line 3");
-  expectUsageError("experiments " + scenarioDir(tmp, "nan", head + "occ089\t" + maps +
-                                                                  "occupancy-089.map\tone\t20\t-0.95\t0.95\t89\t14\t294\t1189\t100\n"),
-                   "line 2");
-  expectUsageError("experiments " + scenarioDir(tmp, "nomap", head + good + "occ1\tmissing.map\t1\t20\t0\t0\t1\t1\t1\t1\t1\n"),
-                   "line 3");
-  expectUsageError("experiments " + scenarioDir(tmp, "wall", head + "occ1\t" + maps +
-                                                                   "occupancy-089.map\t0\t0\t0\t0\t1\t1\t1\t1\t1\n"),
-                   "line 2");
+  expectUsageError(
+      "experiments " +
+          scenarioDir(tmp, "nan",
+                      head + "occ089\t" + maps + "occupancy-089.map\tone\t20\t-0.95\t0.95\t89\t14\t294\t1189\t100\n"),
+      "line 2");
+  expectUsageError(
+      "experiments " + scenarioDir(tmp, "nomap", head + good + "occ1\tmissing.map\t1\t20\t0\t0\t1\t1\t1\t1\t1\n"),
+      "line 3");
+  expectUsageError(
+      "experiments " +
+          scenarioDir(tmp, "wall", head + "occ1\t" + maps + "occupancy-089.map\t0\t0\t0\t0\t1\t1\t1\t1\t1\n"),
+      "line 2");
   expectUsageError("experiments " + scenarioDir(tmp, "none", head), "no scenarios");
   expectUsageError("experiments " + kDir + " --seeds 0", "--seeds");
   expectUsageError("experiments " + kDir + " --strategy wander", "--strategy");

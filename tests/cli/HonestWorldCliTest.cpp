@@ -74,7 +74,8 @@ TEST_P(HonestWorldBad, IsOneLineAndExitTwo) {
   tmp.write("cross.yaml", "nxtmap_world: 1\noutline: {polygon: [[0, 0], [3, 3], [3, 0], [0, 3]]}\n");
   tmp.write("surface.yaml", "nxtmap_world: 1\noutline: {polygon: [[0, 0], [3, 0], [3, 3], [0, 3]], surface: velvet}\n");
   std::string args = GetParam().args;
-  for (size_t at = args.find("{dir}"); at != std::string::npos; at = args.find("{dir}")) args.replace(at, 5, tmp.path());
+  for (size_t at = args.find("{dir}"); at != std::string::npos; at = args.find("{dir}"))
+    args.replace(at, 5, tmp.path());
   expectUsageError(runCli(args), GetParam().expected);
 }
 

@@ -98,7 +98,8 @@ TEST(OutputFiles, APngToStdoutStillWorks) {
 TEST(OutputFiles, AHouseSavedAsDirWithATrailingSlash) {
   TempDir t("out_slash");
   for (int i = 0; i < 2; ++i) {  // a new house, then one replaced
-    const RunOutput r = runCli("sim-house worlds/houses/three-rooms.map --start 8,8 --save " + shellQuote(t.path("h") + "/"));
+    const RunOutput r =
+        runCli("sim-house worlds/houses/three-rooms.map --start 8,8 --save " + shellQuote(t.path("h") + "/"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(fs::exists(t.path("h/house.yaml")));
     EXPECT_EQ(entries(t.path()), std::vector<std::string>{"h"}) << "no staging directory left";

@@ -197,11 +197,12 @@ TEST(ExperimentTable, CsvColumnsAndMeans) {
   EXPECT_EQ(rows[0], ExperimentTable::csvHeader());
   EXPECT_EQ(rows[1], "occ1,0,0,0,0,0,1.5,95,100.5,0,294,1189,100,1,0.5,0.5,98.5,0.5");
   // The older columns keep their places; the safety columns follow them.
-  EXPECT_EQ(std::string(ExperimentTable::csvHeader()).rfind(
-                "id,actual_free,found_free,actual_occupied,found_occupied,unknown,wrong_cells,detected_pct,time_units,"
-                "sensor_reads,seed_time_units,seed_sensor_count,seed_detected_pct,",
-                0),
-            0u);
+  EXPECT_EQ(
+      std::string(ExperimentTable::csvHeader())
+          .rfind("id,actual_free,found_free,actual_occupied,found_occupied,unknown,wrong_cells,detected_pct,time_units,"
+                 "sensor_reads,seed_time_units,seed_sensor_count,seed_detected_pct,",
+                 0),
+      0u);
   EXPECT_EQ(rows[0].substr(rows[0].size() - std::string(kSafetyColumns).size()), kSafetyColumns);
 
   t.strategy = "propagation";
@@ -224,8 +225,8 @@ TEST(ExperimentTable, MalformedLinesAreNamed) {
   const ScenarioLoad load = loadScenarios(path);
   EXPECT_TRUE(load.scenarios.empty());
   EXPECT_NE(load.error.find("line 4"), std::string::npos) << load.error;
-  const ScenarioLoad dup = loadScenarios(
-      tmp.write("d.tsv", "a\tm.map\t1\t2\t0\t0\t1\t1\t1\t1\t1\na\tm.map\t1\t2\t0\t0\t1\t1\t1\t1\t1\n"));
+  const ScenarioLoad dup =
+      loadScenarios(tmp.write("d.tsv", "a\tm.map\t1\t2\t0\t0\t1\t1\t1\t1\t1\na\tm.map\t1\t2\t0\t0\t1\t1\t1\t1\t1\n"));
   EXPECT_NE(dup.error.find("duplicate"), std::string::npos) << dup.error;
   const ScenarioLoad ok = loadScenarios(tmp.write("ok.tsv", "a\tm.map\t1\t2\t0\t0\t1\t1\t1.5\t1\t1\r\n"));
   ASSERT_TRUE(ok.error.empty()) << ok.error;
@@ -240,8 +241,8 @@ TEST(MapImage, PictureOfALargeWorldKeepsWithinItsBound) {
   struct Row {
     int side, asked, px;
   };
-  const Row rows[] = {{22, 8, 8},      {1024, 8, 8},  {1025, 8, 7},  {4096, 8, 2},
-                      {8192, 8, 1},    {16384, 8, 1}, {10, 100, 64}, {10, 0, 1}};
+  const Row rows[] = {{22, 8, 8},   {1024, 8, 8},  {1025, 8, 7},  {4096, 8, 2},
+                      {8192, 8, 1}, {16384, 8, 1}, {10, 100, 64}, {10, 0, 1}};
   for (const Row& r : rows) {
     EXPECT_EQ(nxtmap::report::pictureCellPx(r.side, r.asked), r.px) << r.side << " cells at " << r.asked;
     if (r.side <= nxtmap::report::kMaxPictureSide) {

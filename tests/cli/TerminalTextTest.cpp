@@ -21,9 +21,11 @@ TEST(TerminalText, ControlBytesAndBrokenUtf8AreShownAsHex) {
       {"tab\there", "tab\\x09here"},
       {"del\x7f", "del\\x7f"},
       {"caf\xc3\xa9 \xe2\x86\x92 \xf0\x9f\x8f\xa0", "caf\xc3\xa9 \xe2\x86\x92 \xf0\x9f\x8f\xa0"},  // UTF-8 kept
-      {"c1 \xc2\x9b" "31m", "c1 \\xc2\\x9b31m"},                                                     // U+009B CSI
-      {"latin1 \xe9t\xe9", "latin1 \\xe9t\\xe9"},                                                    // not UTF-8
-      {"cut \xe2\x86", "cut \\xe2\\x86"},                                                            // truncated
+      {"c1 \xc2\x9b"
+       "31m",
+       "c1 \\xc2\\x9b31m"},                        // U+009B CSI
+      {"latin1 \xe9t\xe9", "latin1 \\xe9t\\xe9"},  // not UTF-8
+      {"cut \xe2\x86", "cut \\xe2\\x86"},          // truncated
       {"overlong \xc0\xaf", "overlong \\xc0\\xaf"},
       {"surrogate \xed\xa0\x80", "surrogate \\xed\\xa0\\x80"},
       {"back\\slash", "back\\slash"},

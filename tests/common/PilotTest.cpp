@@ -63,12 +63,9 @@ TEST(Pilot, LevelsAKnownHeadingErrorBeforeEachExplorerReading) {
         e = DriveEvent::rotatedBy(achieved);
         break;
       }
-      case DriveAction::Kind::Drive:
-        e = DriveEvent::drivenBy(a.value > 0 ? a.value - 6 : a.value + 6);
-        break;
+      case DriveAction::Kind::Drive: e = DriveEvent::drivenBy(a.value > 0 ? a.value - 6 : a.value + 6); break;
       case DriveAction::Kind::Think:
-      case DriveAction::Kind::Done:
-        break;
+      case DriveAction::Kind::Done: break;
     }
     a = rig.pilot.step(e);
   }
@@ -94,8 +91,8 @@ double rangeToWalls(double west, double east, double south, double north, double
 // the explorer's readings.
 double meanHeadingErrorInACorridor(const PilotConfig& config, int& readings, double startErrorRad = 0) {
   Rig rig(config);
-  double x = 0, y = 0;         // mm
-  double h = startErrorRad;    // rad, clockwise from North
+  double x = 0, y = 0;       // mm
+  double h = startErrorRad;  // rad, clockwise from North
   // Walls on cell faces (cells are 100 mm, centred on multiples of 100).
   const double west = -250, east = 450, south = -250, north = 4950;
   const auto rangeMm = [&](double a) { return rangeToWalls(west, east, south, north, x, y, a); };
@@ -134,8 +131,7 @@ double meanHeadingErrorInACorridor(const PilotConfig& config, int& readings, dou
         e = DriveEvent::drivenBy(a.value);
         break;
       case DriveAction::Kind::Think:
-      case DriveAction::Kind::Done:
-        break;
+      case DriveAction::Kind::Done: break;
     }
     a = rig.pilot.step(e);
   }
@@ -157,7 +153,6 @@ TEST(Pilot, StraightWallsBesideTheRunMeasureTheHeadingError) {
   ASSERT_GT(nOff, 20);
   EXPECT_LT(withSides, without / 2) << "with side walls " << withSides << " mrad, without " << without << " mrad";
 }
-
 
 // How the scripted wheels err. Unseen by the encoders: each drive goes a random fraction within
 // +-slipPerMille more or less than reported, each quarter turn ends a random angle within
@@ -193,7 +188,8 @@ Wheels noisyWheels(int slipPerMille, int turnMrad, uint32_t run) {
 // good readings, farther ones up to 2.55 m come back as too far with their distance. Runs the
 // pilot's explorer to the end.
 struct RoomRun {
-  double meanEstimateErrorMm = 0;  // |true position - believed cell centre - tracker offset|, at the explorer's readings
+  double meanEstimateErrorMm =
+      0;  // |true position - believed cell centre - tracker offset|, at the explorer's readings
   double meanHeadingErrorMrad = 0;  // |true heading - believed axis - tracker heading|, at the same readings
   int smallRotations = 0;           // rotations other than the explorer's quarter turns
   int readings = 0;
@@ -223,7 +219,8 @@ RoomRun runInRoom(const PilotConfig& config, double west, double east, double so
         const double axis = static_cast<int>(rig.explorer.pose().heading) * 1.5707963;
         headingSum += std::fabs(std::remainder(h - axis, 6.2831853) * 1000.0 - rig.pilot.tracker().thetaMrad());
         ++out.readings;
-        const double mm = rangeMm(h + static_cast<int>(a.sensor) * 1.5707963) + (wheels.rangeMm > 0 ? uniform(wheels.rangeMm) : 0);
+        const double mm =
+            rangeMm(h + static_cast<int>(a.sensor) * 1.5707963) + (wheels.rangeMm > 0 ? uniform(wheels.rangeMm) : 0);
         RangeReading r;
         r.samples = 3;
         r.cm = static_cast<int16_t>(std::lround(mm / 10.0));
@@ -251,8 +248,7 @@ RoomRun runInRoom(const PilotConfig& config, double west, double east, double so
         break;
       }
       case DriveAction::Kind::Think:
-      case DriveAction::Kind::Done:
-        break;
+      case DriveAction::Kind::Done: break;
     }
     a = rig.pilot.step(e);
   }
@@ -283,8 +279,8 @@ TEST(Pilot, AHeadingHandedOverWithItsUncertaintyIsCorrectedByTheSideWalls) {
   const double without = meanHeadingErrorInACorridor(exact, nExact, 0.070);
   ASSERT_GT(nHanded, 20);
   ASSERT_GT(nExact, 20);
-  EXPECT_LT(withUncertainty, without / 2) << "handed over with its uncertainty " << withUncertainty
-                                          << " mrad, as exact " << without << " mrad";
+  EXPECT_LT(withUncertainty, without / 2)
+      << "handed over with its uncertainty " << withUncertainty << " mrad, as exact " << without << " mrad";
 }
 
 TEST(Pilot, FarEchoesOfKnownWallsHoldThePositionInTheMiddleOfALargeRoom) {
@@ -339,8 +335,9 @@ TEST(Pilot, SmallOffsetsFromTheCentreLineAreNotSteeredOut) {
     EXPECT_LT(rotations[0] * 2, rotations[1]) << "slip " << row.slipPerMille;
     EXPECT_LT(positionMm[0], positionMm[1]) << "slip " << row.slipPerMille;
     EXPECT_LT(wrong[0], wrong[1]) << "slip " << row.slipPerMille;
-    std::printf("slip %d: small rotations %d against %d, position error %.1f against %.1f mm, wrong cells %d against %d\n",
-                row.slipPerMille, rotations[0], rotations[1], positionMm[0], positionMm[1], wrong[0], wrong[1]);
+    std::printf(
+        "slip %d: small rotations %d against %d, position error %.1f against %.1f mm, wrong cells %d against %d\n",
+        row.slipPerMille, rotations[0], rotations[1], positionMm[0], positionMm[1], wrong[0], wrong[1]);
   }
 }
 
@@ -371,7 +368,10 @@ TEST(Pilot, ASecondStraightFaceConfirmsAnOffsetTheFilterWasTooSureToTake) {
   // beyond 2 sigma. Refused for good, the rest of the room is mapped from the wrong offset; a second
   // straight face agreeing with the first refusal is taken (PoseNoise::confirmWide). The shoves come
   // once the side walls are mapped: a shove before that is mapped into them and cannot be seen.
-  const struct { int after; int32_t kick; } table[] = {{6, 90}, {6, -80}, {10, -70}, {15, 80}, {20, -90}};
+  const struct {
+    int after;
+    int32_t kick;
+  } table[] = {{6, 90}, {6, -80}, {10, -70}, {15, 80}, {20, -90}};
   PilotConfig once;
   once.noise.confirmWide = false;
   for (const auto& row : table) {
@@ -380,7 +380,8 @@ TEST(Pilot, ASecondStraightFaceConfirmsAnOffsetTheFilterWasTooSureToTake) {
     w.kickEastMm = row.kick;
     const RoomRun confirmed = runInRoom(PilotConfig{}, -750, 850, -650, 950, w);
     const RoomRun refused = runInRoom(once, -750, 850, -650, 950, w);
-    EXPECT_LT(confirmed.meanEstimateErrorMm, refused.meanEstimateErrorMm / 2) << "kick " << row.kick << " after " << row.after;
+    EXPECT_LT(confirmed.meanEstimateErrorMm, refused.meanEstimateErrorMm / 2)
+        << "kick " << row.kick << " after " << row.after;
     EXPECT_LT(confirmed.wrongCells, refused.wrongCells) << "kick " << row.kick << " after " << row.after;
     std::printf("kick %d mm after drive %d: position error %.1f mm, %d wrong cells; refused for good %.1f mm, %d\n",
                 row.kick, row.after, confirmed.meanEstimateErrorMm, confirmed.wrongCells, refused.meanEstimateErrorMm,

@@ -21,11 +21,11 @@ TEST(PoseTracker, StartsExactlyAtTheCentre) {
 }
 
 struct Motion {
-  int32_t rotateMrad;  // rotation carried out
-  int quarters;        // believed quarter turns
-  int32_t driveMm;     // then driven
-  Dir heading;         // believed heading while driving
-  int32_t x, y, theta; // expected estimate afterwards (mm, mm, mrad)
+  int32_t rotateMrad;   // rotation carried out
+  int quarters;         // believed quarter turns
+  int32_t driveMm;      // then driven
+  Dir heading;          // believed heading while driving
+  int32_t x, y, theta;  // expected estimate afterwards (mm, mm, mrad)
 };
 
 class PoseTrackerMotion : public ::testing::TestWithParam<Motion> {};
@@ -40,15 +40,15 @@ TEST_P(PoseTrackerMotion, DeadReckonsSmallAngles) {
   EXPECT_EQ(t.thetaMrad(), m.theta);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Table, PoseTrackerMotion,
-    ::testing::Values(Motion{0, 0, 100, Dir::North, 0, 100, 0},          // straight ahead
-                      Motion{0, 0, -100, Dir::North, 0, -100, 0},        // straight back
-                      Motion{20, 0, 100, Dir::North, 2, 100, 20},        // 20 mrad right: drifts east
-                      Motion{-30, 0, 200, Dir::North, -6, 200, -30},     // left: drifts west
-                      Motion{1571 + 10, 1, 100, Dir::East, 100, -1, 10}, // quarter right, a bit more: south
-                      Motion{-1571, -1, 100, Dir::West, -100, 0, 0},     // quarter left, exact
-                      Motion{3142, 2, 100, Dir::South, 0, -100, 0}));    // half turn
+INSTANTIATE_TEST_SUITE_P(Table, PoseTrackerMotion,
+                         ::testing::Values(Motion{0, 0, 100, Dir::North, 0, 100, 0},       // straight ahead
+                                           Motion{0, 0, -100, Dir::North, 0, -100, 0},     // straight back
+                                           Motion{20, 0, 100, Dir::North, 2, 100, 20},     // 20 mrad right: drifts east
+                                           Motion{-30, 0, 200, Dir::North, -6, 200, -30},  // left: drifts west
+                                           Motion{1571 + 10, 1, 100, Dir::East, 100, -1,
+                                                  10},  // quarter right, a bit more: south
+                                           Motion{-1571, -1, 100, Dir::West, -100, 0, 0},   // quarter left, exact
+                                           Motion{3142, 2, 100, Dir::South, 0, -100, 0}));  // half turn
 
 TEST(PoseTracker, TurnsAndDrivingMakeItUncertain) {
   PoseTracker t;

@@ -14,11 +14,15 @@ using P = Propagation;
 using O = PropagationOutcome;
 
 TEST(PropagationTable, TransitionsAsTheThesisListsThem) {
-  const struct { P p; O o; P next; } table[] = {
+  const struct {
+    P p;
+    O o;
+    P next;
+  } table[] = {
       {P::ForwardRight, O::HitVertical, P::BackwardRight},  // wall in front
       {P::ForwardRight, O::HitHorizontal, P::ForwardLeft},  // wall on the right
       {P::ForwardRight, O::Corner, P::BackwardLeft},
-      {P::ForwardLeft, O::HitVertical, P::BackwardLeft},    // (reading) see Propagation.hpp
+      {P::ForwardLeft, O::HitVertical, P::BackwardLeft},  // (reading) see Propagation.hpp
       {P::ForwardLeft, O::HitHorizontal, P::ForwardRight},
       {P::ForwardLeft, O::Corner, P::BackwardRight},        // (reading)
       {P::BackwardRight, O::HitVertical, P::ForwardRight},  // wall at the back
@@ -38,8 +42,7 @@ struct Room {
   int col, row;
 };
 
-mapping::MappingRun runIn(const sim::World& w, int col, int row,
-                          mapping::Strategy s = mapping::Strategy::Propagation) {
+mapping::MappingRun runIn(const sim::World& w, int col, int row, mapping::Strategy s = mapping::Strategy::Propagation) {
   mapping::RunConfig c;
   c.startCol = col;
   c.startRow = row;
@@ -58,11 +61,12 @@ std::vector<PropagationExplorer::Record> records(const mapping::MappingRun& run)
 // A square room: the start-up heuristic picks the open quadrant, the diagonal runs into the
 // opposite corner (success), and the corner sends the robot into the opposite propagation.
 TEST(Propagation, SquareRoomFromEachCornerStartsTowardsTheRoomAndEndsInTheFarCorner) {
-  const sim::World w = sim::World::fromRows({
-      "##########", "#........#", "#........#", "#........#", "#........#",
-      "#........#", "#........#", "#........#", "#........#", "##########"});
-  const struct { int col, row; P first; } starts[] = {
-      {1, 8, P::ForwardRight}, {8, 8, P::ForwardLeft}, {1, 1, P::BackwardRight}, {8, 1, P::BackwardLeft}};
+  const sim::World w = sim::World::fromRows({"##########", "#........#", "#........#", "#........#", "#........#",
+                                             "#........#", "#........#", "#........#", "#........#", "##########"});
+  const struct {
+    int col, row;
+    P first;
+  } starts[] = {{1, 8, P::ForwardRight}, {8, 8, P::ForwardLeft}, {1, 1, P::BackwardRight}, {8, 1, P::BackwardLeft}};
   for (const auto& s : starts) {
     mapping::MappingRun run = runIn(w, s.col, s.row);
     run.runToEnd();
@@ -79,9 +83,8 @@ TEST(Propagation, SquareRoomFromEachCornerStartsTowardsTheRoomAndEndsInTheFarCor
 // Wall detection: in a wide room the forward-right diagonal meets the top wall, deviates along
 // it, counts more than minWallCells blocked cells and fails with "wall ahead" -> backward-right.
 TEST(Propagation, LongWallAheadIsAWall) {
-  const sim::World w = sim::World::fromRows({
-      "################", "#..............#", "#..............#", "#..............#",
-      "#..............#", "################"});
+  const sim::World w = sim::World::fromRows({"################", "#..............#", "#..............#",
+                                             "#..............#", "#..............#", "################"});
   mapping::MappingRun run = runIn(w, 1, 4);
   run.runToEnd();
   const auto log = records(run);
@@ -92,9 +95,8 @@ TEST(Propagation, LongWallAheadIsAWall) {
 }
 
 TEST(Propagation, LongWallAsideIsAWall) {
-  const sim::World w = sim::World::fromRows({
-      "######", "#....#", "#....#", "#....#", "#....#", "#....#", "#....#",
-      "#....#", "#....#", "#....#", "#....#", "#....#", "#....#", "######"});
+  const sim::World w = sim::World::fromRows({"######", "#....#", "#....#", "#....#", "#....#", "#....#", "#....#",
+                                             "#....#", "#....#", "#....#", "#....#", "#....#", "#....#", "######"});
   mapping::MappingRun run = runIn(w, 1, 12);
   run.runToEnd();
   const auto log = records(run);
@@ -106,10 +108,9 @@ TEST(Propagation, LongWallAsideIsAWall) {
 
 // A small obstacle on the diagonal is passed by a deviation, not taken for a wall.
 TEST(Propagation, SmallObstacleIsPassedNotAWall) {
-  const sim::World w = sim::World::fromRows({
-      "############", "#..........#", "#..........#", "#..........#", "#..........#",
-      "#..........#", "#....#.....#", "#..........#", "#..........#", "#..........#",
-      "#..........#", "############"});
+  const sim::World w = sim::World::fromRows({"############", "#..........#", "#..........#", "#..........#",
+                                             "#..........#", "#..........#", "#....#.....#", "#..........#",
+                                             "#..........#", "#..........#", "#..........#", "############"});
   mapping::MappingRun run = runIn(w, 1, 10);
   run.runToEnd();
   const auto log = records(run);
@@ -121,8 +122,8 @@ TEST(Propagation, SmallObstacleIsPassedNotAWall) {
 // Stop heuristic: the run stops propagating when a diagonal would be travelled again, then
 // sweeps; the last propagation record says so.
 TEST(Propagation, StopsWhenADiagonalPathWouldBeReused) {
-  const sim::World w = sim::World::fromRows({
-      "########", "#......#", "#......#", "#......#", "#......#", "#......#", "#......#", "########"});
+  const sim::World w = sim::World::fromRows(
+      {"########", "#......#", "#......#", "#......#", "#......#", "#......#", "#......#", "########"});
   mapping::MappingRun run = runIn(w, 1, 6);
   run.runToEnd();
   const auto log = records(run);
@@ -139,8 +140,10 @@ TEST(Explorers, MapEverythingObservableInSmallRooms) {
   const std::vector<Room> rooms = {
       {{"#######", "#.....#", "#.#.#.#", "#.....#", "#######"}, 1, 3},
       {{"##########", "#...#....#", "#...#....#", "#........#", "#...##...#", "#........#", "##########"}, 8, 5},
-      {{"############", "#....#.....#", "#....#.....#", "#..........#", "######.#####", "#..........#",
-        "#..........#", "############"}, 1, 6},
+      {{"############", "#....#.....#", "#....#.....#", "#..........#", "######.#####", "#..........#", "#..........#",
+        "############"},
+       1,
+       6},
       {{"#####", "#...#", "##.##", "#...#", "#####"}, 2, 1},
   };
   for (const mapping::Strategy s : {mapping::Strategy::Propagation, mapping::Strategy::Frontier}) {

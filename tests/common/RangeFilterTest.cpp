@@ -26,18 +26,33 @@ TEST(RangeFilter, SensorRulesFromTable) {
       {"just above the minimum is good", {6, 6, 6}, RangeStatus::Good, 6, 3},
       {"at the maximum is good", {100, 100, 100}, RangeStatus::Good, 100, 3},
       {"above the maximum is too far", {101, 150, 120}, RangeStatus::TooFar, 0, 3},
-      {"no echo and too far mix into too far", {255, 150, 255, 130, 255, 255, 140, 200, 180, 255},
-       RangeStatus::TooFar, 0, 10},
+      {"no echo and too far mix into too far",
+       {255, 150, 255, 130, 255, 255, 140, 200, 180, 255},
+       RangeStatus::TooFar,
+       0,
+       10},
       {"agreeing echoes beyond the range keep their distance", {180, 181, 180}, RangeStatus::TooFar, 180, 3},
-      {"a majority of agreeing far echoes among dropouts", {180, 255, 181, 179, 180, 180, 255, 182, 180, 181},
-       RangeStatus::TooFar, 180, 10},
-      {"far echoes that agree only in a minority give no distance", {180, 255, 181, 255, 180, 255, 255, 182, 150, 255},
-       RangeStatus::TooFar, 0, 10},
+      {"a majority of agreeing far echoes among dropouts",
+       {180, 255, 181, 179, 180, 180, 255, 182, 180, 181},
+       RangeStatus::TooFar,
+       180,
+       10},
+      {"far echoes that agree only in a minority give no distance",
+       {180, 255, 181, 255, 180, 255, 255, 182, 150, 255},
+       RangeStatus::TooFar,
+       0,
+       10},
       {"one dropout among echoes", {50, 255, 50, 51, 50, 49, 50, 50, 51, 50}, RangeStatus::Good, 50, 10},
-      {"scattered echoes are inconsistent", {20, 80, 50, 35, 95, 10, 65, 255, 3, 150},
-       RangeStatus::Inconsistent, 0, 10},
-      {"half rejected is inconsistent", {50, 255, 50, 255, 50, 255, 50, 255, 50, 255},
-       RangeStatus::Inconsistent, 0, 10},
+      {"scattered echoes are inconsistent",
+       {20, 80, 50, 35, 95, 10, 65, 255, 3, 150},
+       RangeStatus::Inconsistent,
+       0,
+       10},
+      {"half rejected is inconsistent",
+       {50, 255, 50, 255, 50, 255, 50, 255, 50, 255},
+       RangeStatus::Inconsistent,
+       0,
+       10},
   };
   for (const FilterCase& c : cases) {
     const RangeReading r = RangeFilter::filter(g, c.raw.data(), static_cast<uint8_t>(c.raw.size()));
@@ -61,8 +76,10 @@ TEST(RangeGeometry, CellsFromCentimetres) {
   EXPECT_EQ(g.freeCells(), 9);
   EXPECT_EQ(g.hitCells(), 10);
   // The near face of cell k is (k - 1/2) cells away; errors under half a cell keep the cell.
-  const struct { int16_t cm; int16_t cell; } table[] = {{5, 1}, {9, 1}, {14, 2}, {15, 2}, {19, 2},
-                                                        {25, 3}, {95, 10}, {99, 10}};
+  const struct {
+    int16_t cm;
+    int16_t cell;
+  } table[] = {{5, 1}, {9, 1}, {14, 2}, {15, 2}, {19, 2}, {25, 3}, {95, 10}, {99, 10}};
   for (const auto& t : table) EXPECT_EQ(g.hitCell(t.cm), t.cell) << t.cm << " cm";
   const RangeGeometry nxt{20, 5, 100, 5};  // NXT: 20 cm cells, sensor 5 cm ahead of the centre
   EXPECT_EQ(nxt.hitCell(25), 2);

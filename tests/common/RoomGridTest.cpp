@@ -6,11 +6,7 @@ namespace nxtmap {
 namespace {
 
 const std::vector<std::string> kRoom = {
-    "######",
-    "#....#",
-    "#.#..#",
-    "#....#",
-    "######",
+    "######", "#....#", "#.#..#", "#....#", "######",
 };
 
 TEST(RoomGrid, StartsUnknownAndGrowsIntoAllFourQuadrants) {
@@ -36,9 +32,7 @@ TEST(RoomGrid, RefusesToGrowPastItsCapacityAndChangesNothing) {
   EXPECT_EQ(f.grid().at(Cell{-10, 0}), CellState::Occupied) << "wrapping never aliases";
 }
 
-TEST(RoomGrid, TwoBitsPerCell) {
-  EXPECT_EQ(sizeof(MapStorage<64, 64>::grid), 1024u);
-}
+TEST(RoomGrid, TwoBitsPerCell) { EXPECT_EQ(sizeof(MapStorage<64, 64>::grid), 1024u); }
 
 // The same room seen from a start in each quadrant: restructuring moves the origin to the
 // room's lower-left corner, so all four give the same non-negative picture.

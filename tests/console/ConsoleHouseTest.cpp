@@ -24,20 +24,16 @@ using network::RoomMap;
 
 // Two rooms joined by a one-cell doorway at world (7, 3). The robot starts at (3, 3) facing up.
 const char* kWorldRows[] = {
-    "################",
-    "#......#.......#",
-    "#......#.......#",
-    "#..............#",
-    "#......#.......#",
-    "#......#.......#",
-    "################",
+    "################", "#......#.......#", "#......#.......#", "#..............#",
+    "#......#.......#", "#......#.......#", "################",
 };
 constexpr int kStartCol = 3, kStartRow = 3;
 
 std::string worldFile(const test::TempDir& tmp) {
   std::string text = "type octile\nheight 7\nwidth 16\nmap\n";
   for (const char* r : kWorldRows) text += std::string(r) + "\n";
-  for (char& c : text) if (c == '#') c = '@';
+  for (char& c : text)
+    if (c == '#') c = '@';
   return tmp.write("two-rooms.map", text);
 }
 
@@ -76,7 +72,7 @@ network::HouseNetwork twoRoomHouse(bool withIsland = false) {
   h.addRoom(r0);
   network::RoomNode r1;
   r1.name = "kitchen";
-  r1.map = truthMap(f1, -3, -1, 7, 9);  // world cols 7..15, rows 0..6
+  r1.map = truthMap(f1, -3, -1, 7, 9);         // world cols 7..15, rows 0..6
   r1.map.set(Cell{3, 7}, CellState::Unknown);  // world (15, 6): a corner nobody saw
   r1.labels["fridge"] = Cell{-2, 6};           // world (14, 1)
   r1.toHouse = network::RoomTransform::fromPose(f0.toExplorer(8, 3), Dir::East);
@@ -102,17 +98,19 @@ struct Rig {
     transport = std::make_shared<link::SimTransport>(
         link::parseLinkSpec("sim:" + world + "@" + std::to_string(kStartCol) + "," + std::to_string(kStartRow)), 20.0);
     std::shared_ptr<link::SimTransport> t = transport;
-    runner = std::make_unique<link::LinkRunner>([t]() -> std::unique_ptr<link::Transport> {
-      struct Proxy : link::Transport {
-        std::shared_ptr<link::SimTransport> t;
-        size_t read(uint8_t* b, size_t c, int ms) override { return t->read(b, c, ms); }
-        void write(const uint8_t* d, size_t n) override { t->write(d, n); }
-        std::string describe() const override { return t->describe(); }
-      };
-      auto p = std::make_unique<Proxy>();
-      p->t = t;
-      return p;
-    }, link::SessionConfig{});
+    runner = std::make_unique<link::LinkRunner>(
+        [t]() -> std::unique_ptr<link::Transport> {
+          struct Proxy : link::Transport {
+            std::shared_ptr<link::SimTransport> t;
+            size_t read(uint8_t* b, size_t c, int ms) override { return t->read(b, c, ms); }
+            void write(const uint8_t* d, size_t n) override { t->write(d, n); }
+            std::string describe() const override { return t->describe(); }
+          };
+          auto p = std::make_unique<Proxy>();
+          p->t = t;
+          return p;
+        },
+        link::SessionConfig{});
     runner->start();
     console = std::make_unique<Console>(*runner, "sim");
     if (house) console->useHouse(*house->network, house->resolutionM, 0);
@@ -137,12 +135,17 @@ struct Rig {
   }
   // The brick holds room 0 as uploaded: its map came back (live) and the robot stands at (0,0).
   bool settled() {
-    return waitUntil([&] {
-      return runner->with([](link::Session& s) { return s.commandsDone() && s.pose().has_value() && s.map().known() > 0; }) &&
-             console->snapshot().rooms()[0].map == twoRoomHouse().rooms()[0].map;
-    }, 20);
+    return waitUntil(
+        [&] {
+          return runner->with([](link::Session& s) {
+            return s.commandsDone() && s.pose().has_value() && s.map().known() > 0;
+          }) && console->snapshot().rooms()[0].map == twoRoomHouse().rooms()[0].map;
+        },
+        20);
   }
-  uint64_t commandsSent() { return runner->with([](link::Session& s) { return s.counters().commandsSent; }); }
+  uint64_t commandsSent() {
+    return runner->with([](link::Session& s) { return s.counters().commandsSent; });
+  }
 
   std::shared_ptr<link::SimTransport> transport;
   std::unique_ptr<link::LinkRunner> runner;
@@ -180,11 +183,13 @@ TEST(ConsoleHouse, ARouteAcrossTwoRoomsUploadsTheFarRoomWithThePoseAndReachesThe
   EXPECT_NE(out.find("driving to leg 1 of 2 in room 0"), std::string::npos) << out;
   EXPECT_TRUE(endsWith(rig.run("wait goal 60"), "goal reached\n")) << rig.log;
   EXPECT_NE(rig.log.find("at the gateway: room 1 (kitchen) goes to the brick, the robot stands at (0,-1) there"),
-            std::string::npos) << rig.log;
+            std::string::npos)
+      << rig.log;
   EXPECT_NE(rig.log.find("route done: the robot is at (2,5) in room 1"), std::string::npos) << rig.log;
   EXPECT_EQ(rig.console->currentRoom(), 1);
   // The live map is the kitchen as uploaded (the brick took it in the kitchen's frame).
-  EXPECT_TRUE(rig.waitUntil([&] { return rig.console->snapshot().rooms()[1].map == twoRoomHouse().rooms()[1].map; }, 10));
+  EXPECT_TRUE(
+      rig.waitUntil([&] { return rig.console->snapshot().rooms()[1].map == twoRoomHouse().rooms()[1].map; }, 10));
   // A route back to the hall by label.
   EXPECT_NE(rig.run("route near lamp").find("rooms 1 -> 0"), std::string::npos) << rig.log;
   EXPECT_TRUE(endsWith(rig.run("wait goal 60"), "goal reached\n")) << rig.log;
@@ -214,7 +219,7 @@ TEST(ConsoleHouse, TheRobotReallyCrossesIntoTheFarRoom) {
   brick.trueCell(col, row);
   EXPECT_EQ(col, 13);
   EXPECT_EQ(row, 5);
-  EXPECT_EQ(brick.pose().cell, (Cell{2, 5}));  // in the kitchen's frame
+  EXPECT_EQ(brick.pose().cell, (Cell{2, 5}));                    // in the kitchen's frame
   EXPECT_EQ(brick.grid().at(Cell{-3, 7}), CellState::Occupied);  // the kitchen's map is the brick's now
   EXPECT_EQ(brick.grid().at(Cell{3, 7}), CellState::Unknown);
 }
@@ -267,10 +272,12 @@ TEST(ConsoleHouse, RoomsListsTheHouseAndMarksTheCurrentRoom) {
   const std::string out = rig.run("rooms");
   const std::vector<std::string> l = cli::test::lines(out);
   ASSERT_EQ(l.size(), 2u) << out;
-  EXPECT_EQ(l[0], "room 0 hall (current): 8 x 7 cells from (-3,-3), 31 free, 25 occupied; robot at (0,0); "
-                  "exits: to room 1 at (4,0); labels: lamp (-2,2)");
-  EXPECT_EQ(l[1], "room 1 kitchen: 7 x 9 cells from (-3,-1), 36 free, 26 occupied; exits: to room 0 at (0,-1); "
-                  "labels: fridge (-2,6)");
+  EXPECT_EQ(l[0],
+            "room 0 hall (current): 8 x 7 cells from (-3,-3), 31 free, 25 occupied; robot at (0,0); "
+            "exits: to room 1 at (4,0); labels: lamp (-2,2)");
+  EXPECT_EQ(l[1],
+            "room 1 kitchen: 7 x 9 cells from (-3,-1), 36 free, 26 occupied; exits: to room 0 at (0,-1); "
+            "labels: fridge (-2,6)");
 }
 
 TEST(ConsoleHouse, SaveLoadSaveIsByteIdentical) {
@@ -307,8 +314,10 @@ TEST(ConsoleHouse, ANewRoomFromTheBrickKeepsTheOldRoomAndRecordsTheGateway) {
   ASSERT_TRUE(endsWith(rig.run("wait goal 60"), "goal reached\n")) << rig.log;
   rig.transport->pressNewRoom();
   ASSERT_TRUE(rig.waitUntil([&] { return rig.console->currentRoom() == 2; }, 10)) << rig.log;
-  EXPECT_NE(rig.log.find("the brick went into a new room: room 2 (brick room 1), joined to room 0 by a gateway at (4,0)"),
-            std::string::npos) << rig.log;
+  EXPECT_NE(
+      rig.log.find("the brick went into a new room: room 2 (brick room 1), joined to room 0 by a gateway at (4,0)"),
+      std::string::npos)
+      << rig.log;
   const network::HouseNetwork& h = rig.console->house();
   ASSERT_EQ(h.rooms().size(), 3u);
   EXPECT_EQ(h.rooms()[0].map, twoRoomHouse().rooms()[0].map);  // the hall is kept as it was
@@ -319,7 +328,8 @@ TEST(ConsoleHouse, ANewRoomFromTheBrickKeepsTheOldRoomAndRecordsTheGateway) {
   EXPECT_EQ(h.gateways()[1].cellsB, (std::vector<Cell>{Cell{0, 0}}));
   // Explore a little of the new room, then save: the house loads back with all three rooms.
   rig.run("explore");
-  EXPECT_TRUE(rig.waitUntil([&] { return rig.runner->with([](link::Session& s) { return s.map().known() > 20; }); }, 30));
+  EXPECT_TRUE(
+      rig.waitUntil([&] { return rig.runner->with([](link::Session& s) { return s.map().known() > 20; }); }, 30));
   rig.run("stop");
   EXPECT_NE(rig.run("save " + tmp.path("after")).find("3 rooms, 2 gateways"), std::string::npos);
   const network::HouseLoad again = network::loadHouse(tmp.path("after"));
@@ -332,16 +342,20 @@ TEST(ConsoleHouse, TheConnectCommandLoadsAHouseAndDrivesARouteFromAScript) {
   test::TempDir tmp("cli");
   const std::string world = worldFile(tmp);
   savedHouse(tmp, "house");
-  tmp.write("script", "rooms\nroute kitchen 5 2\nwait goal 60\nlabel stove 3 3\nsave " + tmp.path("saved") + "\nquit\n");
-  const std::string cmd = "cd " + cli::test::shellQuote(NXTMAP_SOURCE_DIR) + " && " + cli::test::shellQuote(NXTMAP_CLI_PATH) +
-                          " connect sim:" + world + "@3,3 --speed 20 --house " + tmp.path("house") + " < " + tmp.path("script") +
-                          " > " + tmp.path("out") + " 2> " + tmp.path("err");
+  tmp.write("script",
+            "rooms\nroute kitchen 5 2\nwait goal 60\nlabel stove 3 3\nsave " + tmp.path("saved") + "\nquit\n");
+  const std::string cmd = "cd " + cli::test::shellQuote(NXTMAP_SOURCE_DIR) + " && " +
+                          cli::test::shellQuote(NXTMAP_CLI_PATH) + " connect sim:" + world +
+                          "@3,3 --speed 20 --house " + tmp.path("house") + " < " + tmp.path("script") + " > " +
+                          tmp.path("out") + " 2> " + tmp.path("err");
   const int status = std::system(cmd.c_str());
   const std::string out = cli::test::readFile(tmp.path("out"));
   EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0) << cli::test::readFile(tmp.path("err"));
   EXPECT_EQ(cli::test::readFile(tmp.path("err")), "");
-  EXPECT_NE(out.find("house: 2 rooms, 1 gateways; the brick is in room 0 (hall): its map (8 x 7 cells) goes to the brick"),
-            std::string::npos) << out;
+  EXPECT_NE(
+      out.find("house: 2 rooms, 1 gateways; the brick is in room 0 (hall): its map (8 x 7 cells) goes to the brick"),
+      std::string::npos)
+      << out;
   EXPECT_NE(out.find("room 0 hall (current)"), std::string::npos) << out;
   EXPECT_NE(out.find("route done: the robot is at (2,5) in room 1"), std::string::npos) << out;
   EXPECT_NE(out.find("saved house " + tmp.path("saved") + ": 2 rooms, 1 gateways"), std::string::npos) << out;
@@ -363,12 +377,14 @@ TEST(ConsoleHouse, ABadHouseOrRoomIsOneClearErrorBeforeConnecting) {
   const Case cases[] = {
       {"--house " + tmp.path("none"), "nxtmap: connect: --house " + tmp.path("none") + ": "},
       {"--house " + tmp.path("empty"), "nxtmap: connect: --house " + tmp.path("empty") + ": "},
-      {"--house " + tmp.path("house") + " --room 2", "nxtmap: connect: --room 2: the house " + tmp.path("house") + " has rooms 0..1"},
+      {"--house " + tmp.path("house") + " --room 2",
+       "nxtmap: connect: --room 2: the house " + tmp.path("house") + " has rooms 0..1"},
       {"--room 1", "nxtmap: connect: --room needs --house DIR"},
   };
   for (const Case& c : cases) {
-    const std::string cmd = "cd " + cli::test::shellQuote(NXTMAP_SOURCE_DIR) + " && " + cli::test::shellQuote(NXTMAP_CLI_PATH) +
-                            " connect sim:" + world + "@3,3 " + c.args + " < /dev/null > " + tmp.path("out") + " 2> " + tmp.path("err");
+    const std::string cmd = "cd " + cli::test::shellQuote(NXTMAP_SOURCE_DIR) + " && " +
+                            cli::test::shellQuote(NXTMAP_CLI_PATH) + " connect sim:" + world + "@3,3 " + c.args +
+                            " < /dev/null > " + tmp.path("out") + " 2> " + tmp.path("err");
     const int status = std::system(cmd.c_str());
     EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 2) << c.args;
     const std::vector<std::string> err = cli::test::lines(cli::test::readFile(tmp.path("err")));

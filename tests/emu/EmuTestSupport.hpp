@@ -15,43 +15,40 @@
 
 namespace nxtmap::emu::test {
 
-inline std::string probePath(const std::string& name) { return std::string(NXTMAP_EMU_PROBE_DIR) + "/" + name + ".elf"; }
+inline std::string probePath(const std::string& name) {
+  return std::string(NXTMAP_EMU_PROBE_DIR) + "/" + name + ".elf";
+}
 
 inline ElfImage loadProbe(const std::string& name) {
-    ElfLoad l = ElfImage::load(probePath(name));
-    if (!l.image) throw std::runtime_error(l.error);
-    return std::move(*l.image);
+  ElfLoad l = ElfImage::load(probePath(name));
+  if (!l.image) throw std::runtime_error(l.error);
+  return std::move(*l.image);
 }
 
 // A 12 x 10 room: walls all round, one pillar.
 inline sim::World smallRoom() {
-    return sim::World::fromRows({"############",
-                                 "#..........#",
-                                 "#..........#",
-                                 "#..........#",
-                                 "#.....#....#",
-                                 "#..........#",
-                                 "#..........#",
-                                 "#..........#",
-                                 "#..........#",
-                                 "############"});
+  return sim::World::fromRows({"############", "#..........#", "#..........#", "#..........#", "#.....#....#",
+                               "#..........#", "#..........#", "#..........#", "#..........#", "############"});
 }
 
 struct ProbeRun {
-    ElfImage image;
-    sim::World world;
-    std::unique_ptr<Brick> brick;
-    bool ok = false;
-    ProbeRun(const std::string& name, BrickConfig config, double seconds, LinkEndpoint* link = nullptr)
-        : image(loadProbe(name)), world(smallRoom()) {
-        config.testPort = true;
-        config.link = link;
-        if (config.startCol == 0) { config.startCol = 3; config.startRow = 3; }
-        brick = std::make_unique<Brick>(image, world, config);
-        ok = brick->runFor(seconds);
+  ElfImage image;
+  sim::World world;
+  std::unique_ptr<Brick> brick;
+  bool ok = false;
+  ProbeRun(const std::string& name, BrickConfig config, double seconds, LinkEndpoint* link = nullptr)
+      : image(loadProbe(name)), world(smallRoom()) {
+    config.testPort = true;
+    config.link = link;
+    if (config.startCol == 0) {
+      config.startCol = 3;
+      config.startRow = 3;
     }
-    TestPort& port() { return *brick->testPort(); }
-    std::string fault() const { return brick->machine().fault().describe(); }
+    brick = std::make_unique<Brick>(image, world, config);
+    ok = brick->runFor(seconds);
+  }
+  TestPort& port() { return *brick->testPort(); }
+  std::string fault() const { return brick->machine().fault().describe(); }
 };
 
 // A TcpLink listening on a free loopback port from `firstPort` on (null if none was free). Different tests start
@@ -60,8 +57,7 @@ inline std::unique_ptr<TcpLink> listenOnFreePort(int firstPort) {
   for (int p = firstPort + ::getpid() % 2000; p < firstPort + 8000; p += 97) {
     try {
       return std::make_unique<TcpLink>(p);
-    } catch (const std::runtime_error&) {
-    }
+    } catch (const std::runtime_error&) {}
   }
   return nullptr;
 }

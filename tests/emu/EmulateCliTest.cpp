@@ -20,15 +20,17 @@ void expectUsageError(const RunOutput& r, const std::string& needle) {
 
 TEST(EmulateCli, RejectsBadOptionsWithOneLine) {
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --speed warp"), "--speed must be max or realtime");
-  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --listen udp:1"), "--listen must be tcp:127.0.0.1:PORT or pty");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --listen udp:1"),
+                   "--listen must be tcp:127.0.0.1:PORT or pty");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --listen tcp:127.0.0.1:0"), "port must be 1..65535");
   expectUsageError(runCli("emulate " + kRoom + " --start 0,0"), "");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --noise loud"), "noise");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --seconds -3"), "--seconds");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --firmware /nonexistent/fw.elf"), "make firmware");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --firmware README.md"), "not an ELF");
-  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --firmware " + probe("boot") + " --lcd /nonexistent/dir/x.png"),
-                   "does not exist");
+  expectUsageError(
+      runCli("emulate " + kRoom + " --start 1,20 --firmware " + probe("boot") + " --lcd /nonexistent/dir/x.png"),
+      "does not exist");
 }
 
 TEST(EmulateCli, FirmwareFaultEndsWithTheReportAndExitCode1) {
@@ -43,9 +45,9 @@ TEST(EmulateCli, FirmwareFaultEndsWithTheReportAndExitCode1) {
 TEST(EmulateCli, RealFirmwareRunPrintsMeasurementsAndLcd) {
   TempDir dir("emucli");
   const std::string png = dir.path("lcd.png");
-  const RunOutput r = runCli("emulate " + kRoom + " --start 1,20 --seconds 2 --firmware " +
-                             shellQuote(std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap.elf") + " --lcd " +
-                             shellQuote(png));
+  const RunOutput r =
+      runCli("emulate " + kRoom + " --start 1,20 --seconds 2 --firmware " +
+             shellQuote(std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap.elf") + " --lcd " + shellQuote(png));
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("end              time limit reached"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("RAM high-water"), std::string::npos) << r.out;
@@ -56,8 +58,10 @@ TEST(EmulateCli, RealFirmwareRunPrintsMeasurementsAndLcd) {
 // The firmware drives the brick robot (20 cm cells, 16 x 18 cm body) through a hand-made room turned 10 degrees,
 // with the measured sonar and wheels, set down off square: the emulated brick runs in the honest world too.
 TEST(EmulateCli, RealFirmwareRunsInATurnedRoomWithTheMeasuredSensorsAndWheels) {
-  const RunOutput r = runCli("emulate worlds/rooms/square-turned.yaml --noise nxt --start-jitter 10 --seed 3 --seconds 20 "
-                             "--firmware " + shellQuote(std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap.elf"));
+  const RunOutput r = runCli(
+      "emulate worlds/rooms/square-turned.yaml --noise nxt --start-jitter 10 --seed 3 --seconds 20 "
+      "--firmware " +
+      shellQuote(std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap.elf"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("robot brick (20 cm cells)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("noise nxt"), std::string::npos) << r.out;

@@ -58,7 +58,8 @@ Outcome runLink(bool lossy) {
   ElfLoad load = ElfImage::load(elf);
   EXPECT_TRUE(load.image) << load.error;
   if (!load.image) return out;
-  const sim::WorldLoad world = sim::World::load(std::string(NXTMAP_SOURCE_DIR) + "/worlds/seed-appendix-a/occupancy-120.map");
+  const sim::WorldLoad world =
+      sim::World::load(std::string(NXTMAP_SOURCE_DIR) + "/worlds/seed-appendix-a/occupancy-120.map");
   EXPECT_TRUE(world.world) << world.error;
   if (!world.world) return out;
 
@@ -144,7 +145,8 @@ Outcome runLink(bool lossy) {
     out.differ = 0;
     for (int y = brickMap->minY; y < brickMap->minY + brickMap->height; ++y)
       for (int x = brickMap->minX; x < brickMap->minX + brickMap->width; ++x)
-        if (static_cast<CellState>(brickMap->at(x, y)) != pc.map().at(Cell{static_cast<int16_t>(x), static_cast<int16_t>(y)}))
+        if (static_cast<CellState>(brickMap->at(x, y)) !=
+            pc.map().at(Cell{static_cast<int16_t>(x), static_cast<int16_t>(y)}))
           ++out.differ;
   }
   if (pc.brickCounters()) {

@@ -5,58 +5,58 @@ namespace nxtmap::emu::test {
 namespace {
 
 TEST(Machine, BootsRemapsTakesTimerInterruptsAndIdles) {
-    ProbeRun r("boot", BrickConfig{}, 5.0);
-    ASSERT_TRUE(r.ok) << r.fault();
-    ASSERT_TRUE(r.port().exitCode.has_value()) << "main did not return";
-    EXPECT_EQ(*r.port().exitCode, 7);
-    EXPECT_EQ(r.port().text, "boot ok\n");
-    const auto& v = r.port().values;
-    ASSERT_EQ(v.size(), 5u);
-    EXPECT_EQ(v[0], 0xC0FFEEu);     // static constructor ran
-    EXPECT_EQ(v[1], 0x12345678u);   // .data copied from flash
-    EXPECT_EQ(v[2], 0u);            // before the remap address 0 showed flash
-    EXPECT_EQ(v[3], 0xA11CE5u);     // after it, RAM
-    EXPECT_GE(v[4], 100u);
-    EXPECT_LE(v[4], 101u);
-    const MachineStats s = r.brick->machine().stats();
-    // 100 ticks of (3002+1)*16 cycles: about 100 ms of brick time.
-    EXPECT_NEAR(secondsFromCycles(s.cycles), 0.100, 0.002);
-    EXPECT_GE(s.irqs, 100u);
-    EXPECT_GE(s.idles, 100u);
-    // The idle time was skipped, not executed.
-    EXPECT_LT(s.executed * 20, s.cycles);
-    const RamUse ram = r.brick->machine().ramUse();
-    EXPECT_GT(ram.stackBytes, 0u);
-    EXPECT_LT(ram.stackBytes, 1024u);
-    EXPECT_GE(ram.staticBytes, 64u + 8u);
+  ProbeRun r("boot", BrickConfig{}, 5.0);
+  ASSERT_TRUE(r.ok) << r.fault();
+  ASSERT_TRUE(r.port().exitCode.has_value()) << "main did not return";
+  EXPECT_EQ(*r.port().exitCode, 7);
+  EXPECT_EQ(r.port().text, "boot ok\n");
+  const auto& v = r.port().values;
+  ASSERT_EQ(v.size(), 5u);
+  EXPECT_EQ(v[0], 0xC0FFEEu);    // static constructor ran
+  EXPECT_EQ(v[1], 0x12345678u);  // .data copied from flash
+  EXPECT_EQ(v[2], 0u);           // before the remap address 0 showed flash
+  EXPECT_EQ(v[3], 0xA11CE5u);    // after it, RAM
+  EXPECT_GE(v[4], 100u);
+  EXPECT_LE(v[4], 101u);
+  const MachineStats s = r.brick->machine().stats();
+  // 100 ticks of (3002+1)*16 cycles: about 100 ms of brick time.
+  EXPECT_NEAR(secondsFromCycles(s.cycles), 0.100, 0.002);
+  EXPECT_GE(s.irqs, 100u);
+  EXPECT_GE(s.idles, 100u);
+  // The idle time was skipped, not executed.
+  EXPECT_LT(s.executed * 20, s.cycles);
+  const RamUse ram = r.brick->machine().ramUse();
+  EXPECT_GT(ram.stackBytes, 0u);
+  EXPECT_LT(ram.stackBytes, 1024u);
+  EXPECT_GE(ram.staticBytes, 64u + 8u);
 }
 
 TEST(Machine, SameProbeSameCycleCount) {
-    ProbeRun a("boot", BrickConfig{}, 5.0);
-    ProbeRun b("boot", BrickConfig{}, 5.0);
-    ASSERT_TRUE(a.ok && b.ok);
-    EXPECT_EQ(a.brick->machine().stats().executed, b.brick->machine().stats().executed);
-    EXPECT_EQ(a.brick->machine().stats().cycles, b.brick->machine().stats().cycles);
+  ProbeRun a("boot", BrickConfig{}, 5.0);
+  ProbeRun b("boot", BrickConfig{}, 5.0);
+  ASSERT_TRUE(a.ok && b.ok);
+  EXPECT_EQ(a.brick->machine().stats().executed, b.brick->machine().stats().executed);
+  EXPECT_EQ(a.brick->machine().stats().cycles, b.brick->machine().stats().cycles);
 }
 
 TEST(Machine, TimesAFunctionFromEntryToReturn) {
-    BrickConfig c;
-    c.machine.timedFunction = "pit_isr";
-    ProbeRun r("boot", c, 5.0);
-    ASSERT_TRUE(r.ok) << r.fault();
-    const MachineStats s = r.brick->machine().stats();
-    EXPECT_GE(s.timedCalls, 100u);
-    EXPECT_GT(s.maxTimed, 3u);
-    EXPECT_LT(s.maxTimed, 200u);
+  BrickConfig c;
+  c.machine.timedFunction = "pit_isr";
+  ProbeRun r("boot", c, 5.0);
+  ASSERT_TRUE(r.ok) << r.fault();
+  const MachineStats s = r.brick->machine().stats();
+  EXPECT_GE(s.timedCalls, 100u);
+  EXPECT_GT(s.maxTimed, 3u);
+  EXPECT_LT(s.maxTimed, 200u);
 }
 
 TEST(ElfImage, RejectsWhatIsNotAnArmElf) {
-    const ElfLoad l = ElfImage::load(std::string(NXTMAP_SOURCE_DIR) + "/README.md");
-    EXPECT_FALSE(l.image);
-    EXPECT_NE(l.error.find("not an ELF"), std::string::npos) << l.error;
-    const ElfLoad m = ElfImage::load("/nonexistent/fw.elf");
-    EXPECT_FALSE(m.image);
-    EXPECT_NE(m.error.find("cannot open"), std::string::npos);
+  const ElfLoad l = ElfImage::load(std::string(NXTMAP_SOURCE_DIR) + "/README.md");
+  EXPECT_FALSE(l.image);
+  EXPECT_NE(l.error.find("not an ELF"), std::string::npos) << l.error;
+  const ElfLoad m = ElfImage::load("/nonexistent/fw.elf");
+  EXPECT_FALSE(m.image);
+  EXPECT_NE(m.error.find("cannot open"), std::string::npos);
 }
 
 }  // namespace

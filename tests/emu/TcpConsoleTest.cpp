@@ -181,8 +181,7 @@ TEST(TcpConsoles, AFloodIsHeldBackAndTheBrickStillAnswers) {
         flooded += static_cast<size_t>(w);
       }
       uint8_t sink[4096];
-      while (::recv(fd, sink, sizeof sink, 0) > 0) {
-      }
+      while (::recv(fd, sink, sizeof sink, 0) > 0) {}
       return false;
     }
     if (!console) {

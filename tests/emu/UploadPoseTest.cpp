@@ -24,7 +24,8 @@ TEST(EmulatedUpload, TheFirmwareTakesAnUploadedRoomAndAPoseInItsFrame) {
   if (!std::filesystem::exists(elf)) GTEST_SKIP() << "no nxtmap-sim.elf";
   ElfLoad load = ElfImage::load(elf);
   ASSERT_TRUE(load.image) << load.error;
-  const sim::WorldLoad world = sim::World::load(std::string(NXTMAP_SOURCE_DIR) + "/worlds/seed-appendix-a/occupancy-120.map");
+  const sim::WorldLoad world =
+      sim::World::load(std::string(NXTMAP_SOURCE_DIR) + "/worlds/seed-appendix-a/occupancy-120.map");
   ASSERT_TRUE(world.world) << world.error;
 
   // The robot starts at world (1, 20) facing north (up). The room frame of the upload: the robot
@@ -103,7 +104,8 @@ TEST(EmulatedUpload, TheFirmwareTakesAnUploadedRoomAndAPoseInItsFrame) {
   size_t differ = 0;
   for (int y = window.minY; y <= window.maxY; ++y) {
     for (int x = window.minX; x <= window.maxX; ++x) {
-      const size_t i = static_cast<size_t>(y - window.minY) * static_cast<size_t>(window.width()) + static_cast<size_t>(x - window.minX);
+      const size_t i = static_cast<size_t>(y - window.minY) * static_cast<size_t>(window.width()) +
+                       static_cast<size_t>(x - window.minX);
       if (pc.map().at(Cell{static_cast<int16_t>(x), static_cast<int16_t>(y)}) != cells[i]) ++differ;
     }
   }

@@ -150,7 +150,8 @@ TEST(AtomicFile, AFullDiskIsNamedAsTheReason) {
       std::ofstream(target, std::ios::binary) << "old bytes";
       std::string error;
       const bool ok = writeFileAtomically(target, std::string(256 * 1024, 'n'), error);
-      const bool kept = test::readWholeFile(target) == "old bytes" && test::folderEntries(mountPoint) == std::vector<std::string>{"keep.bin"};
+      const bool kept = test::readWholeFile(target) == "old bytes" &&
+                        test::folderEntries(mountPoint) == std::vector<std::string>{"keep.bin"};
       report = std::string(ok ? "written" : kept ? "kept" : "damaged") + "|" + error;
     }
     const ssize_t n = ::write(fds[1], report.data(), report.size());

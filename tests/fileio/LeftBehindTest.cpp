@@ -24,12 +24,12 @@ TEST(LeftBehind, WriterPidsAreReadFromTheirNames) {
     pid_t pid;
   };
   const Row rows[] = {
-      {"house.saving-123", "house", ".saving-", 123},   {"map.png.tmp-77-0", "map.png", ".tmp-", 77},
-      {"map.png.tmp-77-12", "map.png", ".tmp-", 77},     {"map.png.tmp-77", "map.png", ".tmp-", 77},
-      {"map.png.tmp-", "map.png", ".tmp-", 0},           {"map.png.tmp-x-1", "map.png", ".tmp-", 0},
-      {"other.png.tmp-77-0", "map.png", ".tmp-", 0},     {"map.png", "map.png", ".tmp-", 0},
-      {"house.saving-0", "house", ".saving-", 0},        {"house.saving-99999999999", "house", ".saving-", 0},
-      {"house.saving-12a", "house", ".saving-", 0},      {"map.png.tmp-77-0", "map", ".tmp-", 0},
+      {"house.saving-123", "house", ".saving-", 123}, {"map.png.tmp-77-0", "map.png", ".tmp-", 77},
+      {"map.png.tmp-77-12", "map.png", ".tmp-", 77},  {"map.png.tmp-77", "map.png", ".tmp-", 77},
+      {"map.png.tmp-", "map.png", ".tmp-", 0},        {"map.png.tmp-x-1", "map.png", ".tmp-", 0},
+      {"other.png.tmp-77-0", "map.png", ".tmp-", 0},  {"map.png", "map.png", ".tmp-", 0},
+      {"house.saving-0", "house", ".saving-", 0},     {"house.saving-99999999999", "house", ".saving-", 0},
+      {"house.saving-12a", "house", ".saving-", 0},   {"map.png.tmp-77-0", "map", ".tmp-", 0},
   };
   for (const Row& r : rows) EXPECT_EQ(writerPid(r.entry, r.name, r.infix), r.pid) << r.entry;
 }

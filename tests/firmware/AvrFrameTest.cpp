@@ -17,8 +17,7 @@ TEST(AvrFrame, HandshakeIsTheExactCopyrightString) {
   uint8_t hs[kAvrHandshakeBytes];
   packAvrHandshake(hs);
   EXPECT_EQ(hs[0], 0xCC);
-  EXPECT_EQ(std::string(reinterpret_cast<const char*>(hs + 1), 46),
-            "Let's samba nxt arm in arm, (c)LEGO System A/S");
+  EXPECT_EQ(std::string(reinterpret_cast<const char*>(hs + 1), 46), "Let's samba nxt arm in arm, (c)LEGO System A/S");
   EXPECT_EQ(kAvrHandshakeBytes, 47);
 }
 
@@ -30,8 +29,8 @@ TEST(AvrFrame, CommandLayoutAndChecksum) {
   c.inputPower = constant9v(0) | constant9v(3);
   uint8_t f[kAvrTxBytes];
   packAvrCommand(c, f);
-  EXPECT_EQ(f[0], 0);     // power: normal
-  EXPECT_EQ(f[1], 8);     // 8 kHz PWM
+  EXPECT_EQ(f[0], 0);  // power: normal
+  EXPECT_EQ(f[1], 8);  // 8 kHz PWM
   EXPECT_EQ(f[2], 75);
   EXPECT_EQ(f[3], 0xD8);  // -40
   EXPECT_EQ(f[4], 0);

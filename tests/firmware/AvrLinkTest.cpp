@@ -17,7 +17,7 @@ using namespace reg;
 struct TwiAvr {
   FakeBus bus;
   std::vector<std::vector<uint8_t>> writes;  // completed write transfers
-  std::vector<uint8_t> reply;                 // the next 13-byte status frame
+  std::vector<uint8_t> reply;                // the next 13-byte status frame
   size_t replyPos = 0;
   int reads = 0;
   bool reading = false, active = false, nackNext = false, nacking = false;
@@ -43,9 +43,12 @@ struct TwiAvr {
       if (a == kTwiSr) {
         v = 0;
         if (!active) return true;
-        if (nacking) v = kTwiSrNack;
-        else if (reading) v = replyPos < reply.size() ? kTwiSrRxrdy : 0;
-        else v = kTwiSrTxrdy;
+        if (nacking)
+          v = kTwiSrNack;
+        else if (reading)
+          v = replyPos < reply.size() ? kTwiSrRxrdy : 0;
+        else
+          v = kTwiSrTxrdy;
         return true;
       }
       if (a == kTwiRhr) {
@@ -109,7 +112,7 @@ TEST(AvrLink, HandshakeThenAlternatingCommandAndStatusFrames) {
   tickAndServe(twi, link, 1);  // the first command right after the pause
   ASSERT_EQ(twi.writes.size(), 2u);
   tickAndServe(twi, link, kP - 1);
-  EXPECT_EQ(twi.reads, 0);     // then one transfer every kTransferPeriodMs
+  EXPECT_EQ(twi.reads, 0);              // then one transfer every kTransferPeriodMs
   tickAndServe(twi, link, 1 + 2 * kP);  // read, write, read
   ASSERT_EQ(twi.writes.size(), 3u);
   EXPECT_EQ(twi.reads, 2);
@@ -145,7 +148,7 @@ TEST(AvrLink, ThreeBadChecksumsInARowRestartWithTheHandshake) {
   AvrLink<FakeBus> link(twi.bus);
   link.init(kMck);
   twi.setStatus(0, 0, true);
-  tickAndServe(twi, link, 4);  // handshake + settle
+  tickAndServe(twi, link, 4);                                            // handshake + settle
   tickAndServe(twi, link, 1 + 5 * AvrLink<FakeBus>::kTransferPeriodMs);  // 3 writes + 3 bad reads
   EXPECT_EQ(link.badFrames(), 3u);
   EXPECT_EQ(link.restarts(), 1u);

@@ -17,19 +17,29 @@ using namespace reg;
 struct Bc4 {
   FakeBus bus;
   std::deque<uint8_t> toArm;
-  std::vector<uint8_t> fromArm;          // raw bytes received (stream mode)
+  std::vector<uint8_t> fromArm;                // raw bytes received (stream mode)
   std::vector<std::vector<uint8_t>> commands;  // command frames received (command mode)
   bool cmdLine = false, resetHeld = true, badChecksum = false, indicateReset = true, answerOpenPort = true;
-  bool armCmd = false;                   // ARM7_CMD (PA27): high = data mode
+  bool armCmd = false;  // ARM7_CMD (PA27): high = data mode
   bool holdTx = false;
-  std::vector<uint8_t> heldTx;           // a PDC transfer not sent yet
+  std::vector<uint8_t> heldTx;  // a PDC transfer not sent yet
   std::vector<uint8_t> pinAnswer;
 
   Bc4() {
     bus.onRead = [this](uint32_t a, uint32_t& v) {
-      if (a == kUs1Csr) { v = toArm.empty() ? 0u : kUsCsrRxrdy; return true; }
-      if (a == kUs1Rhr) { v = toArm.front(); toArm.pop_front(); return true; }
-      if (a == kAdcCdr6) { v = cmdLine ? 0x3A0u : 0x010u; return true; }
+      if (a == kUs1Csr) {
+        v = toArm.empty() ? 0u : kUsCsrRxrdy;
+        return true;
+      }
+      if (a == kUs1Rhr) {
+        v = toArm.front();
+        toArm.pop_front();
+        return true;
+      }
+      if (a == kAdcCdr6) {
+        v = cmdLine ? 0x3A0u : 0x010u;
+        return true;
+      }
       return false;
     };
     bus.onWrite = [this](uint32_t a, uint32_t v) {
@@ -66,7 +76,10 @@ struct Bc4 {
   }
   std::vector<uint8_t> partial;
   void received(uint8_t b) {
-    if (armCmd) { fromArm.push_back(b); return; }
+    if (armCmd) {
+      fromArm.push_back(b);
+      return;
+    }
     partial.push_back(b);
     if (partial.size() < 2 || partial.size() < static_cast<size_t>(partial[0]) + 1) return;
     std::vector<uint8_t> f;
@@ -74,17 +87,21 @@ struct Bc4 {
     uint16_t sum = 0;
     for (size_t i = 1; i + 2 < f.size(); ++i) sum = static_cast<uint16_t>(sum + f[i]);  // length excluded
     const uint16_t got = static_cast<uint16_t>((f[f.size() - 2] << 8) | f.back());
-    if (static_cast<uint16_t>(sum + got) != 0) { badChecksum = true; return; }
+    if (static_cast<uint16_t>(sum + got) != 0) {
+      badChecksum = true;
+      return;
+    }
     commands.push_back(f);
     const uint8_t code = f[1];
     if (code == 0x03 && answerOpenPort) reply(0x1B, {0x01, 0x00});  // PORT_OPEN_RESULT: open
-    if (code == 0x09 && f[2] == 1) reply(0x13, {0x01, 0x05});  // CONNECT_RESULT: ok, handle 5
-    if (code == 0x0B && f[2] == 5) cmdLine = true;             // OPEN_STREAM(5)
+    if (code == 0x09 && f[2] == 1) reply(0x13, {0x01, 0x05});       // CONNECT_RESULT: ok, handle 5
+    if (code == 0x0B && f[2] == 5) cmdLine = true;                  // OPEN_STREAM(5)
     if (code == 0x0A) pinAnswer.assign(f.begin() + 2, f.end() - 2);
   }
   void requestConnection() { reply(0x16, {1, 2, 3, 4, 5, 6, 0}); }
   bool sawCommand(uint8_t code) const {
-    for (const auto& c : commands) if (c[1] == code) return true;
+    for (const auto& c : commands)
+      if (c[1] == code) return true;
     return false;
   }
 };
@@ -232,8 +249,8 @@ TEST(BlueCore, ANoiseFragmentDoesNotSwallowTheMessagesAfterIt) {
     uint32_t silenceMs;
   };
   const std::vector<Case> cases{
-      {{0x1B}, BlueCore<FakeBus>::kMessageGapMs},              // a length of 27, then silence
-      {{0x23, 0x99}, 50},                                      // the longest length
+      {{0x1B}, BlueCore<FakeBus>::kMessageGapMs},                 // a length of 27, then silence
+      {{0x23, 0x99}, 50},                                         // the longest length
       {{0x0A, 0x16, 1, 2, 3}, BlueCore<FakeBus>::kMessageGapMs},  // half of a message
   };
   for (const Case& c : cases) {

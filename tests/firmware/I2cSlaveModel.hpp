@@ -27,12 +27,12 @@ class I2cSlaveModel {
   }
   bool sda() const { return sdaLine(); }
 
-  bool present = true;         // false: never ACKs
+  bool present = true;              // false: never ACKs
   bool requireLegoRestart = false;  // a read needs STOP + extra clock + START (else it NACKs)
   uint8_t regs[256] = {};
   std::vector<std::string> trace;
   std::vector<std::pair<uint8_t, uint8_t>> registerWrites;  // (register, value)
-  bool sawContention = false;  // master drove SDA high while the slave pulled it low
+  bool sawContention = false;                               // master drove SDA high while the slave pulled it low
 
   bool idle() const { return scl_ && sdaLine(); }
 
@@ -99,8 +99,10 @@ class I2cSlaveModel {
       slaveLow_ = false;
       if (reading_ && !masterAckIsSlave_) {
         // master ACKed: send the next byte; NACK: stop driving
-        if (!sda_) beginSend();
-        else sending_ = false;
+        if (!sda_)
+          beginSend();
+        else
+          sending_ = false;
       } else if (reading_ && masterAckIsSlave_) {
         masterAckIsSlave_ = false;
         beginSend();

@@ -18,7 +18,10 @@ struct LcdWire {
   std::vector<std::vector<uint8_t>> dataRuns;
   LcdWire() {
     bus.onRead = [](uint32_t a, uint32_t& v) {
-      if (a == kSpiSr) { v = kSpiSrTdre | kSpiSrTxempty; return true; }
+      if (a == kSpiSr) {
+        v = kSpiSrTdre | kSpiSrTxempty;
+        return true;
+      }
       return false;
     };
     bus.onWrite = [this](uint32_t a, uint32_t v) {

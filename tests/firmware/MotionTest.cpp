@@ -10,7 +10,7 @@ namespace nxtmap::fw {
 namespace {
 
 TEST(MotionGeometry, CountsFromMillimetresCellsAndAngles) {
-  const MotionGeometry g;  // 56 mm wheel, 112 mm track, 200 mm cell
+  const MotionGeometry g;               // 56 mm wheel, 112 mm track, 200 mm cell
   EXPECT_EQ(g.countsForCells(1), 409);  // 200 / (pi * 56) * 360 = 409.3
   EXPECT_EQ(g.countsForCells(-1), -409);
   EXPECT_EQ(g.countsForMm(176), 360);  // one wheel turn = pi * 56 = 175.9 mm
@@ -28,7 +28,7 @@ struct FinePlant {
   int32_t count[2] = {0, 0};
   int32_t acc[2] = {0, 0};
   int32_t speedPer10[2] = {8, 8};
-  int32_t wallAt = 1 << 30;          // left wheel stalls beyond this many counts forward
+  int32_t wallAt = 1 << 30;  // left wheel stalls beyond this many counts forward
   void step(int8_t pl, int8_t pr) {
     const int8_t p[2] = {pl, pr};
     for (int w = 0; w < 2; ++w) {

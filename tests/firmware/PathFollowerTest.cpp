@@ -24,7 +24,8 @@ std::vector<DriveAction> follow(PathFollower& f, int blockAtDrive = -1) {
   int drives = 0;
   while (more && actions.size() < 100) {
     actions.push_back(a);
-    DriveEvent e = a.kind == DriveAction::Kind::Rotate ? DriveEvent::rotated() : DriveEvent::driven(drives++ == blockAtDrive);
+    DriveEvent e =
+        a.kind == DriveAction::Kind::Rotate ? DriveEvent::rotated() : DriveEvent::driven(drives++ == blockAtDrive);
     more = f.next(&e, a);
   }
   return actions;

@@ -52,9 +52,9 @@ TEST(Screen, MapShowsOccupiedDarkFreeLightAndTheRobot) {
   EXPECT_TRUE(s.pixelAt(0, 62));   // occupied, one row up
   EXPECT_FALSE(s.pixelAt(0, 63));  // the robot, blink phase off
   s.drawMap(map.grid(), Cell{1, 0}, Dir::North, true);
-  EXPECT_TRUE(s.pixelAt(1, 63));  // the robot, blink phase on
-  EXPECT_TRUE(s.pixelAt(1, 62));  // its heading pixel (north = up)
-  EXPECT_TRUE(s.pixelAt(64, 10)); // separator column
+  EXPECT_TRUE(s.pixelAt(1, 63));   // the robot, blink phase on
+  EXPECT_TRUE(s.pixelAt(1, 62));   // its heading pixel (north = up)
+  EXPECT_TRUE(s.pixelAt(64, 10));  // separator column
 }
 
 }  // namespace

@@ -16,8 +16,17 @@ void turn(TachoDecoder& t, uint32_t& levels, int edges, bool forward, bool tickE
     levels ^= kPinTachoA;
     const bool pulse = (levels & kPinTachoA) != 0;
     // Forward: the direction pin is at the opposite level of the pulse pin after its edge.
-    if (forward) { if (pulse) levels &= ~kPinDirA; else levels |= kPinDirA; }
-    else { if (pulse) levels |= kPinDirA; else levels &= ~kPinDirA; }
+    if (forward) {
+      if (pulse)
+        levels &= ~kPinDirA;
+      else
+        levels |= kPinDirA;
+    } else {
+      if (pulse)
+        levels |= kPinDirA;
+      else
+        levels &= ~kPinDirA;
+    }
     t.onPinChange(levels, kPinTachoA);
     if (tickEach) t.tick();
   }

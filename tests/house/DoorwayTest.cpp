@@ -15,13 +15,7 @@ std::vector<Doorway> find(test::GridFixture& f, const DoorwayLimits& limits = Do
 
 TEST(Doorway, GapInAThinWallBetweenTwoRooms) {
   test::GridFixture f;
-  f.draw({"#########",
-          "#.......#",
-          "#.......#",
-          "###...###",
-          "#.......#",
-          "#.......#",
-          "#########"});
+  f.draw({"#########", "#.......#", "#.......#", "###...###", "#.......#", "#.......#", "#########"});
   const std::vector<Doorway> d = find(f);
   ASSERT_EQ(d.size(), 1u);
   EXPECT_TRUE(d[0].alongX);
@@ -35,12 +29,7 @@ TEST(Doorway, GapInAThinWallBetweenTwoRooms) {
 
 TEST(Doorway, VerticalDoorwayInAThickWall) {
   test::GridFixture f;
-  f.draw({"##########",
-          "#...##...#",
-          "#........#",
-          "#........#",
-          "#...##...#",
-          "##########"});
+  f.draw({"##########", "#...##...#", "#........#", "#........#", "#...##...#", "##########"});
   const std::vector<Doorway> d = find(f);
   ASSERT_EQ(d.size(), 1u);
   EXPECT_FALSE(d[0].alongX);
@@ -66,12 +55,7 @@ TEST(Doorway, CorridorsOpenAreasAndHolesAreNotDoorways) {
 
 TEST(Doorway, StrayCellsAreNoJambsWhenWallsMustGoOn) {
   test::GridFixture f;  // two stray occupied cells in the open (as noise leaves them), and a real doorway
-  f.draw({"##########",
-          "#........#",
-          "#.#...#..#",
-          "#........#",
-          "####..####",
-          "#........#"});
+  f.draw({"##########", "#........#", "#.#...#..#", "#........#", "####..####", "#........#"});
   EXPECT_EQ(find(f, DoorwayLimits{2, 15, 3, 1}).size(), 2u);  // the strays make a "doorway" too
   const std::vector<Doorway> d = find(f, DoorwayLimits{2, 15, 3, 2});
   ASSERT_EQ(d.size(), 1u);
@@ -80,10 +64,7 @@ TEST(Doorway, StrayCellsAreNoJambsWhenWallsMustGoOn) {
 
 TEST(Doorway, SeveralDoorwaysOnOneWallAndACapacityLimit) {
   test::GridFixture f;
-  f.draw({"#..........#",
-          "#..........#",
-          "#..##..##..#",
-          "#..........#"});
+  f.draw({"#..........#", "#..........#", "#..##..##..#", "#..........#"});
   // Runs on the middle line: "..", "..", ".." between the jambs: the two outer ones end at the
   // side walls (not wall ends), the middle one lies between two wall ends.
   EXPECT_EQ(find(f).size(), 1u);
@@ -99,14 +80,8 @@ TEST(RoomInterpretation, TwoExitsOnOneSideAndNoCrossSectionTakenForADoorway) {
   test::GridFixture f;
   // Two exits on the north wall, one on the south wall; the column between them spans the room
   // from wall to wall and is no doorway.
-  f.draw({"???????????????",
-          "?#.###.#######?",
-          "?#...........#?",
-          "?#...........#?",
-          "?#...........#?",
-          "?#####..######?",
-          "??????#.#??????",
-          "???????????????"});
+  f.draw({"???????????????", "?#.###.#######?", "?#...........#?", "?#...........#?", "?#...........#?",
+          "?#####..######?", "??????#.#??????", "???????????????"});
   const RoomInterpretation r = interpretRoom(f.grid(), RoomLimits{3, 50});
   ASSERT_TRUE(r.valid);
   EXPECT_EQ(r.interiorWidth(), 11);
@@ -126,13 +101,8 @@ TEST(RoomInterpretation, TwoExitsOnOneSideAndNoCrossSectionTakenForADoorway) {
 TEST(RoomInterpretation, InnerDoorwayOfANonRectangularRoom) {
   test::GridFixture f;
   // Two wall stubs leave a doorway between the room's lower and upper parts.
-  f.draw({"?##########?",
-          "?#........#?",
-          "?#........#?",
-          "?###...####?",
-          "?#........#?",
-          "?#........#?",
-          "?##########?"});
+  f.draw(
+      {"?##########?", "?#........#?", "?#........#?", "?###...####?", "?#........#?", "?#........#?", "?##########?"});
   const RoomInterpretation r = interpretRoom(f.grid(), RoomLimits{3, 50});
   ASSERT_TRUE(r.valid);
   ASSERT_EQ(r.exitCount, 1);

@@ -11,8 +11,8 @@
 
 namespace nxtmap::house::test {
 
-inline network::RoomMap drawMap(const std::vector<std::string>& rows, int x0 = 0, int y0 = 0,
-                                const char* walls = "#", const char* frees = ".") {
+inline network::RoomMap drawMap(const std::vector<std::string>& rows, int x0 = 0, int y0 = 0, const char* walls = "#",
+                                const char* frees = ".") {
   const int h = static_cast<int>(rows.size()), w = static_cast<int>(rows[0].size());
   network::RoomMap m(x0, y0, w, h);
   for (int r = 0; r < h; ++r) {
@@ -32,7 +32,8 @@ inline Cell markedCell(const std::vector<std::string>& rows, const char* marks, 
   for (int r = 0; r < h; ++r) {
     const std::string& row = rows[static_cast<size_t>(r)];
     const size_t c = row.find_first_of(marks);
-    if (c != std::string::npos) return Cell{static_cast<int16_t>(x0 + static_cast<int>(c)), static_cast<int16_t>(y0 + h - 1 - r)};
+    if (c != std::string::npos)
+      return Cell{static_cast<int16_t>(x0 + static_cast<int>(c)), static_cast<int16_t>(y0 + h - 1 - r)};
   }
   return Cell{};
 }

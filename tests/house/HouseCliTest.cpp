@@ -69,22 +69,23 @@ TEST(HouseCli, BadInputIsOneClearMessage) {
   EXPECT_TRUE(oneLineError(runCli("sim-house " + shellQuote(broken)), "at least 3"));
   // A directory that is not a house is never overwritten.
   t.write("mine/notes.txt", "keep");
-  EXPECT_TRUE(oneLineError(runCli("sim-house worlds/houses/three-rooms.map --start 8,8 --save " +
-                                  shellQuote(t.path("mine"))),
-                           "not overwritten"));
+  EXPECT_TRUE(
+      oneLineError(runCli("sim-house worlds/houses/three-rooms.map --start 8,8 --save " + shellQuote(t.path("mine"))),
+                   "not overwritten"));
   EXPECT_EQ(readFile(t.path("mine/notes.txt")), "keep");
   EXPECT_TRUE(oneLineError(runCli("export " + shellQuote(t.path("nowhere")) + " --png x.png"), "no house file"));
   EXPECT_TRUE(oneLineError(runCli("export " + shellQuote(t.path("mine"))), "at least one of"));
   EXPECT_TRUE(oneLineError(runCli("path --house " + shellQuote(t.path("nowhere")) + " --from a:1,1 --to b:1,1"),
                            "no house file"));
   // A house with a broken file: one message, nothing half-loaded.
-  ASSERT_EQ(runCli("sim-house worlds/houses/three-rooms.map --start 8,8 --save " + shellQuote(t.path("h"))).exitCode, 0);
+  ASSERT_EQ(runCli("sim-house worlds/houses/three-rooms.map --start 8,8 --save " + shellQuote(t.path("h"))).exitCode,
+            0);
   EXPECT_TRUE(oneLineError(runCli("path --house " + shellQuote(t.path("h")) + " --from room0:3,3 --to room9:1,1"),
                            "no room 'room9'"));
   EXPECT_TRUE(oneLineError(runCli("path --house " + shellQuote(t.path("h")) + " --from room0:0,0 --to room1:3,3"),
                            "not a free cell"));
-  EXPECT_TRUE(oneLineError(runCli("path --house " + shellQuote(t.path("h")) + " --from room0 --to room1:3,3"),
-                           "ROOM:COL,ROW"));
+  EXPECT_TRUE(
+      oneLineError(runCli("path --house " + shellQuote(t.path("h")) + " --from room0 --to room1:3,3"), "ROOM:COL,ROW"));
   std::filesystem::remove(t.path("h/room1.pgm"));
   EXPECT_TRUE(oneLineError(runCli("export " + shellQuote(t.path("h")) + " --png " + shellQuote(t.path("x.png"))),
                            "room 'room1'"));
@@ -145,8 +146,8 @@ TEST(HouseCli, HouseNumbersBeyondTheirBoundsAreOneClearMessage) {
     const RunOutput path = runCli("path --house " + shellQuote(dir) + " --from room0:0,0 --to room1:2,2");
     EXPECT_TRUE(oneLineError(path, c.message)) << c.name << ": " << path.exitCode << " " << path.err;
     const std::string png = t.path(c.name + ".png"), svg = t.path(c.name + ".svg"), ros = t.path(c.name + "-ros");
-    const RunOutput ex = runCli("export " + shellQuote(dir) + " --png " + shellQuote(png) + " --svg " + shellQuote(svg) +
-                                " --ros " + shellQuote(ros));
+    const RunOutput ex = runCli("export " + shellQuote(dir) + " --png " + shellQuote(png) + " --svg " +
+                                shellQuote(svg) + " --ros " + shellQuote(ros));
     EXPECT_TRUE(oneLineError(ex, c.message)) << c.name << ": " << ex.exitCode << " " << ex.err;
     for (const std::string& out : {png, svg, ros}) EXPECT_FALSE(std::filesystem::exists(out)) << out;
     const RunOutput connect = runCli("connect sim:worlds/houses/three-rooms.map@8,8 --house " + shellQuote(dir));

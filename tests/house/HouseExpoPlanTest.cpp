@@ -40,9 +40,9 @@ TEST(HouseExpoPlan, RasterisesTheOutlineWithInteriorWallsAsOneCellLines) {
 }
 
 TEST(HouseExpoPlan, AllShippedPlansLoad) {
-  for (const char* f : {"1f99717550c31ae321ca2313edceedcc.json", "3a977bda0c177c31c8c64e8076562d5a.json",
-                        "75555d2f4a69546c4c811f85bac572d9.json", "house_expo_room_0000.json",
-                        "house_expo_room_1451.json"}) {
+  for (const char* f :
+       {"1f99717550c31ae321ca2313edceedcc.json", "3a977bda0c177c31c8c64e8076562d5a.json",
+        "75555d2f4a69546c4c811f85bac572d9.json", "house_expo_room_0000.json", "house_expo_room_1451.json"}) {
     const HousePlanLoad l = loadHouseExpo(kDir + f);
     ASSERT_TRUE(l.plan) << l.error;
     EXPECT_GE(l.plan->roomNum, 2) << f;
@@ -67,7 +67,8 @@ std::string pointList(const std::vector<std::pair<double, double>>& points) {
   std::ostringstream o;
   o.precision(17);
   o << "[";
-  for (size_t i = 0; i < points.size(); ++i) o << (i ? "," : "") << "[" << points[i].first << "," << points[i].second << "]";
+  for (size_t i = 0; i < points.size(); ++i)
+    o << (i ? "," : "") << "[" << points[i].first << "," << points[i].second << "]";
   return o.str() + "]";
 }
 
@@ -157,8 +158,8 @@ TEST(HouseExpoPlan, OutlineSizeIsBoundedAndRasterisingScales) {
 TEST(HouseExpoPlan, OnlyRegularFilesOfBoundedSizeAreRead) {
   test::TempDir t("houseexpo_files");
   EXPECT_NE(loadHouseExpo(t.path()).error.find("is a directory"), std::string::npos);
-  const std::string big = t.write("big.json", R"({"verts": [[0,0],[1,0],[1,1],[0,1]], "pad": ")" +
-                                                  std::string(kMaxPlanFileBytes, 'x') + "\"}");
+  const std::string big = t.write(
+      "big.json", R"({"verts": [[0,0],[1,0],[1,1],[0,1]], "pad": ")" + std::string(kMaxPlanFileBytes, 'x') + "\"}");
   const std::string bigError = loadHouseExpo(big).error;
   EXPECT_NE(bigError.find("larger than 1 MiB, the largest HouseExpo plan accepted"), std::string::npos) << bigError;
   EXPECT_NE(loadHouseExpo("/dev/zero").error.find("not a regular file"), std::string::npos);

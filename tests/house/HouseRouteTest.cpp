@@ -83,9 +83,8 @@ TEST(HouseRoute, HouseExpoPlanRoutesAndLabels) {
   labelRoomsFromPlan(m, *l.plan);
   network::RoomPoint bedroom;
   ASSERT_TRUE(network::findLabel(m.network(), "bedroom", bedroom));
-  const network::HouseRoute r =
-      network::planHouseRoute(m.network(), network::RoomPoint{0, Cell{0, 0}}, network::RoomPoint{}, plan::Algorithm::AStar,
-                              "bedroom");
+  const network::HouseRoute r = network::planHouseRoute(m.network(), network::RoomPoint{0, Cell{0, 0}},
+                                                        network::RoomPoint{}, plan::Algorithm::AStar, "bedroom");
   ASSERT_TRUE(r.found) << r.error;
   const Cell last = r.legs.back().cells.back();
   EXPECT_LE(std::abs(last.x - bedroom.cell.x), 1);

@@ -15,12 +15,7 @@ using test::drawMap;
 
 // The room already mapped: a room 8 wide with a doorway in its top wall (house frame).
 const std::vector<std::string> kKnown = {
-    "##########",
-    "#........#",
-    "#........#",
-    "#........#",
-    "#........#",
-    "###....###",
+    "##########", "#........#", "#........#", "#........#", "#........#", "###....###",
 };
 
 struct Case {
@@ -46,8 +41,7 @@ TEST_P(RoomRegistrationCases, ShiftsTheFrameBackOntoTheKnownRooms) {
       if (known.at(h) != CellState::Unknown) fresh.set(toTruth.apply(h), known.at(h));
     }
   }
-  const network::RoomTransform believed =
-      network::RoomTransform::fromParts(k.beliefDx, k.beliefDy, k.quarters);
+  const network::RoomTransform believed = network::RoomTransform::fromParts(k.beliefDx, k.beliefDy, k.quarters);
   const RoomRegistration r = registerRoom(fresh, believed, known, 2);
   EXPECT_EQ(r.dx, k.wantDx) << k.what;
   EXPECT_EQ(r.dy, k.wantDy) << k.what;
@@ -58,12 +52,13 @@ TEST_P(RoomRegistrationCases, ShiftsTheFrameBackOntoTheKnownRooms) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Table, RoomRegistrationCases,
-                         ::testing::Values(Case{"on target", 0, 0, 0, 0, 0}, Case{"one cell east", 1, 0, 0, -1, 0},
-                                           Case{"a cell south and two west", -2, -1, 0, 2, 1},
-                                           Case{"turned a quarter, one north", 0, 1, 1, 0, -1},
-                                           Case{"turned a half, off diagonally", 1, 1, 2, -1, -1},
-                                           Case{"beyond the search: two of three cells back still disagree, so it stays", 3, 0, 0, 0, 0}));
+INSTANTIATE_TEST_SUITE_P(
+    Table, RoomRegistrationCases,
+    ::testing::Values(Case{"on target", 0, 0, 0, 0, 0}, Case{"one cell east", 1, 0, 0, -1, 0},
+                      Case{"a cell south and two west", -2, -1, 0, 2, 1},
+                      Case{"turned a quarter, one north", 0, 1, 1, 0, -1},
+                      Case{"turned a half, off diagonally", 1, 1, 2, -1, -1},
+                      Case{"beyond the search: two of three cells back still disagree, so it stays", 3, 0, 0, 0, 0}));
 
 TEST(RoomRegistration, NoOverlapMeansNoChange) {
   const network::RoomMap known = drawMap(kKnown, 0, 0);

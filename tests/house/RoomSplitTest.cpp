@@ -9,11 +9,7 @@ namespace {
 TEST(RoomSplit, AnOpenAreaOverTheMaximumBecomesRoomsJoinedAtTheCut) {
   test::GridFixture f;
   // 12 x 3 interior with an obstacle on the cut line: two parts of 6 columns.
-  f.draw({"##############",
-          "#............#",
-          "#.....#......#",
-          "#............#",
-          "##############"});
+  f.draw({"##############", "#............#", "#.....#......#", "#............#", "##############"});
   const RoomInterpretation r = interpretRoom(f.grid(), RoomLimits{2, 7});
   ASSERT_EQ(r.roomClass, RoomClass::TooLarge);
   ASSERT_EQ(r.partsX, 2);

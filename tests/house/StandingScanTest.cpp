@@ -25,12 +25,7 @@ StandingReading wallAt(Dir d, int k) { return StandingReading{d, true, 10 * k - 
 StandingReading nothing(Dir d) { return StandingReading{d, false, 0}; }
 
 const std::vector<std::string> kRoom = {
-    "##########",
-    "#........#",
-    "#........#",
-    "#...B....#",
-    "#........#",
-    "##########",
+    "##########", "#........#", "#........#", "#...B....#", "#........#", "##########",
 };
 
 struct Case {
@@ -43,21 +38,37 @@ struct Case {
 
 TEST(StandingScan, FindsTheWholeCellShiftThatExplainsTheReadings) {
   const std::vector<Case> cases = {
-      {"readings that fit the believed cell", kRoom,
-       {wallAt(Dir::North, 3), wallAt(Dir::East, 5), wallAt(Dir::South, 2), wallAt(Dir::West, 4)}, false, Cell{0, 0}},
-      {"truly one cell east", kRoom,
-       {wallAt(Dir::North, 3), wallAt(Dir::East, 4), wallAt(Dir::South, 2), wallAt(Dir::West, 5)}, false, Cell{1, 0}},
-      {"truly two cells west and one south", kRoom,
-       {wallAt(Dir::North, 4), wallAt(Dir::East, 7), wallAt(Dir::South, 1), wallAt(Dir::West, 2)}, false, Cell{-2, -1}},
+      {"readings that fit the believed cell",
+       kRoom,
+       {wallAt(Dir::North, 3), wallAt(Dir::East, 5), wallAt(Dir::South, 2), wallAt(Dir::West, 4)},
+       false,
+       Cell{0, 0}},
+      {"truly one cell east",
+       kRoom,
+       {wallAt(Dir::North, 3), wallAt(Dir::East, 4), wallAt(Dir::South, 2), wallAt(Dir::West, 5)},
+       false,
+       Cell{1, 0}},
+      {"truly two cells west and one south",
+       kRoom,
+       {wallAt(Dir::North, 4), wallAt(Dir::East, 7), wallAt(Dir::South, 1), wallAt(Dir::West, 2)},
+       false,
+       Cell{-2, -1}},
       {"only the walls across a corridor are seen: no shift along it can be told",
        {"#################################", "#...............B...............#", "#################################"},
-       {wallAt(Dir::North, 1), nothing(Dir::East), wallAt(Dir::South, 1), nothing(Dir::West)}, false, Cell{0, 0}},
+       {wallAt(Dir::North, 1), nothing(Dir::East), wallAt(Dir::South, 1), nothing(Dir::West)},
+       false,
+       Cell{0, 0}},
       {"one echo a cell short is not enough to move", kRoom, {wallAt(Dir::East, 4)}, false, Cell{0, 0}},
       {"the robot stands on a cell the map knows free, never in unknown space",
-       {"   #####", "   #.B.#", "   #####"}, {wallAt(Dir::North, 1), wallAt(Dir::South, 1), wallAt(Dir::East, 2)}, false, Cell{0, 0}},
+       {"   #####", "   #.B.#", "   #####"},
+       {wallAt(Dir::North, 1), wallAt(Dir::South, 1), wallAt(Dir::East, 2)},
+       false,
+       Cell{0, 0}},
       {"blocked driving north, with a wall just ahead: truly below the north wall",
        {"#####", "#...#", "#...#", "#.B.#", "#...#", "#####"},
-       {wallAt(Dir::North, 1)}, true, Cell{0, 2}},
+       {wallAt(Dir::North, 1)},
+       true,
+       Cell{0, 2}},
   };
   const RangeGeometry g = tenCentimetreCells();
   for (const Case& c : cases) {

@@ -31,32 +31,35 @@ struct Case {
 };
 
 const std::vector<std::string> kRoom = {
-    "############",
-    "#..........#",
-    "#..........#",
-    "#....S.....#",
-    "#..........#",
-    "############",
+    "############", "#..........#", "#..........#", "#....S.....#", "#..........#", "############",
 };
 
 TEST(StartAnchor, FindsTheShiftUnderWhichTheStartReadingsFitAgain) {
   const std::vector<Case> cases = {
-      {"the map as read at the start", kRoom, {wallAt(Dir::West, 5), wallAt(Dir::East, 6), wallAt(Dir::South, 2)}, {0, 0}},
+      {"the map as read at the start",
+       kRoom,
+       {wallAt(Dir::West, 5), wallAt(Dir::East, 6), wallAt(Dir::South, 2)},
+       {0, 0}},
       {"within the tolerance", kRoom, {wallAt(Dir::West, 5, 25), wallAt(Dir::East, 6, -25)}, {0, 0}},
-      {"mapped a cell east: the start is a cell east in the map", kRoom,
-       {wallAt(Dir::West, 4), wallAt(Dir::East, 7)}, {-1, 0}},
+      {"mapped a cell east: the start is a cell east in the map",
+       kRoom,
+       {wallAt(Dir::West, 4), wallAt(Dir::East, 7)},
+       {-1, 0}},
       {"one reading on the axis is enough", kRoom, {wallAt(Dir::East, 5)}, {1, 0}},
       {"both axes", kRoom, {wallAt(Dir::West, 6), wallAt(Dir::North, 2)}, {1, 1}},
       {"two cells", kRoom, {wallAt(Dir::West, 3)}, {-2, 0}},
-      {"readings that disagree with each other: no shift fits them all", kRoom,
-       {wallAt(Dir::West, 4), wallAt(Dir::East, 5)}, {0, 0}},
+      {"readings that disagree with each other: no shift fits them all",
+       kRoom,
+       {wallAt(Dir::West, 4), wallAt(Dir::East, 5)},
+       {0, 0}},
       {"half a cell off: neither fits", kRoom, {wallAt(Dir::West, 5, 50)}, {0, 0}},
       {"more than two cells: beyond the shifts looked at", kRoom, {wallAt(Dir::West, 2)}, {0, 0}},
       {"no reading", kRoom, {}, {0, 0}},
       {"only a wall's cell would fit", {"#########", "#...#S..#", "#########"}, {wallAt(Dir::West, 4)}, {0, 0}},
       {"a corridor's end: either of two shifts would do, neither is taken",
        {"#########", "#...S...#", "#########", "         "},
-       {wallAt(Dir::North, 2)}, {0, 0}},
+       {wallAt(Dir::North, 2)},
+       {0, 0}},
   };
   for (const Case& c : cases) {
     const test::DrawnRoom d = test::drawRoom(c.rows, "#", ".S", "S");
@@ -71,11 +74,7 @@ TEST(StartAnchor, AFarEchoMayComeFromTheLaneBesideTheAxis) {
   // the 57 cm from which the beam takes in the neighbouring lanes) comes from the nearer wall
   // beside the axis and fits as mapped; a near one cannot, and shows the notch's shift.
   const std::vector<std::string> rows = {
-      " #..........",
-      " #..........",
-      "#.......S...",
-      " #..........",
-      " #..........",
+      " #..........", " #..........", "#.......S...", " #..........", " #..........",
   };
   const test::DrawnRoom d = test::drawRoom(rows, "#", ".S", "S");
   AnchorGeometry g = tenCentimetreCells();

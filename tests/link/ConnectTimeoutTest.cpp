@@ -42,7 +42,8 @@ TimedRun runTimed(const std::string& args) {
 
 TEST(ConnectTimeout, ValuesThatAreNotSecondsInRangeAreRefused) {
   const std::string message = "nxtmap: connect: --connect-timeout must be a number of seconds in (0, 3600]";
-  for (const char* value : {"nan", "NaN", "-nan", "inf", "-inf", "1e300", "3600.001", "3601", "0", "-0", "-1", "-1e300"}) {
+  for (const char* value :
+       {"nan", "NaN", "-nan", "inf", "-inf", "1e300", "3600.001", "3601", "0", "-0", "-1", "-1e300"}) {
     const TimedRun r = runTimed(std::string("connect tcp:127.0.0.1:1 --connect-timeout ") + value);
     EXPECT_EQ(r.output.exitCode, 2) << value;
     EXPECT_EQ(r.output.err, message + "\n") << value;
@@ -69,7 +70,8 @@ TEST(ConnectTimeout, AHostThatAcceptsAndNeverSpeaksEndsWithinTheTimeout) {
   const std::string link = "tcp:127.0.0.1:" + std::to_string(host.port());
   const TimedRun r = runTimed("connect " + link + " --connect-timeout 1");
   EXPECT_EQ(r.output.exitCode, 2);
-  EXPECT_EQ(r.output.err, "nxtmap: connect: no answer from the brick on " + link + " within 1 s (connected to " + link + ")\n");
+  EXPECT_EQ(r.output.err,
+            "nxtmap: connect: no answer from the brick on " + link + " within 1 s (connected to " + link + ")\n");
   EXPECT_GE(r.seconds, 1.0);
   EXPECT_LT(r.seconds, 1.0 + kMarginS);
 }

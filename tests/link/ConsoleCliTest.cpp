@@ -31,9 +31,10 @@ RunOutput runWithInput(const std::string& args, const std::string& script, const
 
 TEST(Console, ExploresReachesGoalsSavesAndExports) {
   TempDir tmp("consolemap");
-  const std::string script = "explore\nwait explored 120\ngoto 5 5\nwait goal 60\nlabel chair 11 9\n"
-                             "goto near chair\nwait goal 60\nsave " + tmp.path("room.yaml") + "\nexport " +
-                             tmp.path("room.png") + "\nstatus\nquit\n";
+  const std::string script =
+      "explore\nwait explored 120\ngoto 5 5\nwait goal 60\nlabel chair 11 9\n"
+      "goto near chair\nwait goal 60\nsave " +
+      tmp.path("room.yaml") + "\nexport " + tmp.path("room.png") + "\nstatus\nquit\n";
   const RunOutput r = runWithInput(std::string("connect ") + kWorld + " --speed 25", script);
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(r.err, "");
@@ -88,8 +89,11 @@ TEST(Console, BadLinksAreClearErrors) {
     std::string args, message;
   };
   const Case cases[] = {
-      {"connect usb", "nxtmap: connect: link 'usb' has no kind: use bt:00:16:53:XX:XX:XX, serial:/dev/rfcomm0, tcp:HOST:PORT or sim:WORLD[@COL,ROW]"},
-      {"connect bt:00:16:53", "nxtmap: connect: Bluetooth address '00:16:53' is not six hex pairs like 00:16:53:0A:1B:2C"},
+      {"connect usb",
+       "nxtmap: connect: link 'usb' has no kind: use bt:00:16:53:XX:XX:XX, serial:/dev/rfcomm0, tcp:HOST:PORT or "
+       "sim:WORLD[@COL,ROW]"},
+      {"connect bt:00:16:53",
+       "nxtmap: connect: Bluetooth address '00:16:53' is not six hex pairs like 00:16:53:0A:1B:2C"},
       {"connect tcp:localhost:99999", "nxtmap: connect: TCP port 99999 is outside 1..65535"},
       {"connect serial:rfcomm0", "nxtmap: connect: serial device 'rfcomm0' must be an absolute path like /dev/rfcomm0"},
       {"connect sim:no/such.map", ""},
@@ -99,8 +103,10 @@ TEST(Console, BadLinksAreClearErrors) {
     const RunOutput r = runWithInput(c.args, "");
     EXPECT_EQ(r.exitCode, 2) << c.args;
     ASSERT_EQ(lines(r.err).size(), 1u) << c.args << ": " << r.err;
-    if (!c.message.empty()) EXPECT_EQ(lines(r.err)[0], c.message);
-    else EXPECT_EQ(r.err.rfind("nxtmap: connect: ", 0), 0u) << r.err;
+    if (!c.message.empty())
+      EXPECT_EQ(lines(r.err)[0], c.message);
+    else
+      EXPECT_EQ(r.err.rfind("nxtmap: connect: ", 0), 0u) << r.err;
   }
 }
 

@@ -46,8 +46,8 @@ SimBrickConfig brickConfig() {
     for (int x = w.minX; x <= w.maxX; ++x) {
       const Cell c{static_cast<int16_t>(x), static_cast<int16_t>(y)};
       if (grid.at(c) != copy.at(c)) {
-        return ::testing::AssertionFailure() << "cell (" << x << "," << y << "): brick " << int(grid.at(c))
-                                             << ", PC " << int(copy.at(c));
+        return ::testing::AssertionFailure()
+               << "cell (" << x << "," << y << "): brick " << int(grid.at(c)) << ", PC " << int(copy.at(c));
       }
       if (grid.at(c) != CellState::Unknown) ++known;
     }
@@ -69,7 +69,8 @@ TEST(LinkEndToEnd, CleanLinkMapsTheRoomAndReachesAGoal) {
   pc.explore();
   ASSERT_TRUE(h.runUntil([&] { return brick.mode() == protocol::BrickMode::Done; }, 600000));
   std::printf("clean run: explored in %u ms, %u cells moved\n", h.nowMs(), brick.counters().cellsMoved);
-  ASSERT_TRUE(h.runUntil([&] { return brick.link().mapSync().inFlight() == 0 && !brick.link().mapSync().pending(); }, 5000));
+  ASSERT_TRUE(
+      h.runUntil([&] { return brick.link().mapSync().inFlight() == 0 && !brick.link().mapSync().pending(); }, 5000));
   EXPECT_TRUE(sameMap(brick.grid(), pc.map()));
   EXPECT_GT(pc.map().known(), 100u);
 
@@ -78,14 +79,21 @@ TEST(LinkEndToEnd, CleanLinkMapsTheRoomAndReachesAGoal) {
   std::vector<Cell> path{at.cell};
   Cell c = at.cell;
   while (c != Cell{0, 0}) {
-    c = Cell{static_cast<int16_t>(c.x + (c.x < 0 ? 1 : c.x > 0 ? -1 : 0)),
-             static_cast<int16_t>(c.y + (c.y < 0 ? 1 : c.y > 0 ? -1 : 0))};
+    c = Cell{static_cast<int16_t>(c.x + (c.x < 0   ? 1
+                                         : c.x > 0 ? -1
+                                                   : 0)),
+             static_cast<int16_t>(c.y + (c.y < 0   ? 1
+                                         : c.y > 0 ? -1
+                                                   : 0))};
     path.push_back(c);
   }
   const uint16_t seq = pc.followPath(path, 1);
-  const bool ended = h.runUntil([&] {
-    return pc.pathProgress() && pc.pathProgress()->pathId == 1 && pc.pathProgress()->state != protocol::PathState::Following;
-  }, 20000);
+  const bool ended = h.runUntil(
+      [&] {
+        return pc.pathProgress() && pc.pathProgress()->pathId == 1 &&
+               pc.pathProgress()->state != protocol::PathState::Following;
+      },
+      20000);
   ASSERT_TRUE(ended);
   EXPECT_TRUE(pc.acknowledged(seq));
   // Either reached, or blocked at a cell the world really blocks (the straight line may cross an obstacle).
@@ -122,12 +130,16 @@ TEST(LinkEndToEnd, FivePercentDamagedBytesAndADisconnectLoseNothingAndRunNothing
     ASSERT_TRUE(h.runUntil([&] { return brick.counters().cellsMoved >= 25; }, 120000)) << seed;
     h.disconnect(2000);
     ASSERT_TRUE(h.runUntil([&] { return brick.mode() == protocol::BrickMode::Done; }, 900000)) << seed;
-    ASSERT_TRUE(h.runUntil([&] { return pc.commandsDone() && brick.link().mapSync().inFlight() == 0 &&
-                                        !brick.link().mapSync().pending(); }, 200000))
-        << "seed " << seed << " connected " << pc.connected() << " commands done " << pc.commandsDone()
-        << " in flight " << brick.link().mapSync().inFlight() << " pending " << brick.link().mapSync().pending()
-        << " brick connected " << brick.link().connected() << " pc error '" << pc.error() << "'";
-    std::printf("seed %d converged at %u ms; limit %zu, retransmits %u\n", int(seed), h.nowMs(), brick.link().mapSync().payloadLimit(), brick.link().counters().retransmits);
+    ASSERT_TRUE(h.runUntil(
+        [&] {
+          return pc.commandsDone() && brick.link().mapSync().inFlight() == 0 && !brick.link().mapSync().pending();
+        },
+        200000))
+        << "seed " << seed << " connected " << pc.connected() << " commands done " << pc.commandsDone() << " in flight "
+        << brick.link().mapSync().inFlight() << " pending " << brick.link().mapSync().pending() << " brick connected "
+        << brick.link().connected() << " pc error '" << pc.error() << "'";
+    std::printf("seed %d converged at %u ms; limit %zu, retransmits %u\n", int(seed), h.nowMs(),
+                brick.link().mapSync().payloadLimit(), brick.link().counters().retransmits);
     // Let a few acknowledgements and statuses cross the damaged link.
     h.runUntil([] { return false; }, 1000);
     EXPECT_TRUE(sameMap(brick.grid(), pc.map())) << "seed " << seed;

@@ -34,8 +34,10 @@ void pumpBrick(int fd, SimBrick& brick, const std::atomic<bool>& stop, std::atom
   const auto start = std::chrono::steady_clock::now();
   uint8_t buf[256];
   while (!stop) {
-    const uint32_t now = static_cast<uint32_t>(std::chrono::duration_cast<std::chrono::milliseconds>(
-        std::chrono::steady_clock::now() - start).count()) * 10;  // ten times faster than real time
+    const uint32_t now =
+        static_cast<uint32_t>(
+            std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start).count()) *
+        10;  // ten times faster than real time
     std::vector<uint8_t> out;
     {
       std::lock_guard<std::mutex> lock(brickMutex);
@@ -129,21 +131,24 @@ TEST(Transport, TcpLinkMapsTheRoomAndSurvivesADroppedConnection) {
   runner.dropConnection();
   ASSERT_TRUE(waitUntil([&] { return closed.load() >= 1; }, 10));
   ASSERT_TRUE(waitUntil([&] { return brick.mode() == protocol::BrickMode::Done; }, 60));
-  const bool same = waitUntil([&] {
-    return runner.with([&](Session& s) {
-      if (s.counters().connects < 2 || brick.link().mapSync().pending() || brick.link().mapSync().inFlight() > 0) return false;
-      const Bounds w = brick.grid().window();
-      size_t known = 0;
-      for (int y = w.minY; y <= w.maxY; ++y) {
-        for (int x = w.minX; x <= w.maxX; ++x) {
-          const Cell c{static_cast<int16_t>(x), static_cast<int16_t>(y)};
-          if (brick.grid().at(c) != s.map().at(c)) return false;
-          known += brick.grid().at(c) != CellState::Unknown ? 1 : 0;
-        }
-      }
-      return known == s.map().known() && known > 20;
-    });
-  }, 20);
+  const bool same = waitUntil(
+      [&] {
+        return runner.with([&](Session& s) {
+          if (s.counters().connects < 2 || brick.link().mapSync().pending() || brick.link().mapSync().inFlight() > 0)
+            return false;
+          const Bounds w = brick.grid().window();
+          size_t known = 0;
+          for (int y = w.minY; y <= w.maxY; ++y) {
+            for (int x = w.minX; x <= w.maxX; ++x) {
+              const Cell c{static_cast<int16_t>(x), static_cast<int16_t>(y)};
+              if (brick.grid().at(c) != s.map().at(c)) return false;
+              known += brick.grid().at(c) != CellState::Unknown ? 1 : 0;
+            }
+          }
+          return known == s.map().known() && known > 20;
+        });
+      },
+      20);
   runner.stop();
   stop = true;
   brickSide.join();
@@ -170,9 +175,8 @@ TEST(Transport, PtyIsASerialLink) {
   runner.start();
   const bool connected = waitUntil([&] { return runner.with([](Session& s) { return s.connected(); }); }, 10);
   if (connected) runner.with([](Session& s) { return s.explore(); });
-  const bool mapped = connected && waitUntil([&] {
-    return runner.with([](Session& s) { return s.map().known() > 10; });
-  }, 20);
+  const bool mapped =
+      connected && waitUntil([&] { return runner.with([](Session& s) { return s.map().known() > 10; }); }, 20);
   runner.stop();
   stop = true;
   brickSide.join();
@@ -257,7 +261,8 @@ TEST(Transport, OpeningWhatIsNotThereSaysWhy) {
   } catch (const LinkError& e) {
     // Either no adapter here, or no NXT answering at that address: the message says which.
     const std::string what = e.what();
-    EXPECT_TRUE(what.find("Bluetooth") != std::string::npos || what.find("00:16:53:00:00:01") != std::string::npos) << what;
+    EXPECT_TRUE(what.find("Bluetooth") != std::string::npos || what.find("00:16:53:00:00:01") != std::string::npos)
+        << what;
   }
 }
 

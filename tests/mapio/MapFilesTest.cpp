@@ -24,8 +24,8 @@ std::string pgm(int w, int h, const std::vector<int>& px) {
   return s;
 }
 
-std::string yaml(const std::string& extra, const std::string& image = "m.pgm", double occ = 0.65,
-                 double fre = 0.196, int negate = 0) {
+std::string yaml(const std::string& extra, const std::string& image = "m.pgm", double occ = 0.65, double fre = 0.196,
+                 int negate = 0) {
   return "image: " + image + "\nresolution: 0.05\norigin: [-1.5, 2.25, 0.5]\nnegate: " + std::to_string(negate) +
          "\noccupied_thresh: " + std::to_string(occ) + "\nfree_thresh: " + std::to_string(fre) + "\n" + extra;
 }
@@ -99,7 +99,7 @@ TEST(MapFiles, TrinaryThresholdsAndNegate) {
       {89, 0.65, 0.196, 0, Occupancy::Occupied},  {90, 0.65, 0.196, 0, Occupancy::Unknown},
       {0, 0.65, 0.196, 1, Occupancy::Free},       {255, 0.65, 0.196, 1, Occupancy::Occupied},
       {205, 0.65, 0.196, 1, Occupancy::Occupied}, {100, 0.65, 0.196, 1, Occupancy::Unknown},
-      {128, 0.5, 0.5, 0, Occupancy::Free},     {127, 0.5, 0.5, 0, Occupancy::Occupied},
+      {128, 0.5, 0.5, 0, Occupancy::Free},        {127, 0.5, 0.5, 0, Occupancy::Occupied},
       {0, 1.0, 0.0, 0, Occupancy::Unknown},
   };
   TempDir tmp("mapio_thr");
@@ -182,8 +182,8 @@ TEST(MapFiles, MovingAiMapsLoadWithCrlfAndHaveNoUnknown) {
   EXPECT_EQ(r.map->at(0, 1), Occupancy::Free);
   EXPECT_EQ(r.map->count(Occupancy::Occupied), 4u);
   EXPECT_EQ(r.map->count(Occupancy::Unknown), 0u);
-  for (const std::string bad : {"type octile\nheight 2\nwidth 3\nmap\n...\n", "type octile\nheight 1\nwidth 3\nmap\n.x.\n",
-                                "height 1\nwidth 1\nmap\n.\n", ""}) {
+  for (const std::string bad : {"type octile\nheight 2\nwidth 3\nmap\n...\n",
+                                "type octile\nheight 1\nwidth 3\nmap\n.x.\n", "height 1\nwidth 1\nmap\n.\n", ""}) {
     const MapLoad b = loadMap(tmp.write("b.map", bad));
     EXPECT_FALSE(b.map) << bad;
     EXPECT_NE(b.error.find("b.map"), std::string::npos) << b.error;
@@ -224,7 +224,8 @@ TEST(OccupancyMapLabels, NamesAndBlocksAreChecked) {
 TEST(SimSave, ExploredMapIsSavedInTheWorldFrame) {
   TempDir tmp("mapio_sim");
   const std::string out = tmp.path("explored.yaml");
-  const auto r = runCli("sim worlds/seed-appendix-a/occupancy-089.map --start 1,20 --show none --save " + shellQuote(out));
+  const auto r =
+      runCli("sim worlds/seed-appendix-a/occupancy-089.map --start 1,20 --show none --save " + shellQuote(out));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const MapLoad m = loadMap(out);
   ASSERT_TRUE(m.map) << m.error;

@@ -17,9 +17,10 @@ using sim::Vec2;
 // A 200 x 140 cm room with a 40 x 20 cm cupboard, a triangular stand and a table leg, the robot's grid of
 // 10 cm cells through the start point (a cell centre) turned by headingDeg.
 struct Room {
-  explicit Room(double headingDeg = 0.0) : scene(makeScene()),
-      place(sim::placeOnGrid(scene, Vec2(25, 25), headingDeg, 10.0)),
-      truth(sim::rasterizeScene(scene, place.frame, place.width, place.height, "room")) {}
+  explicit Room(double headingDeg = 0.0)
+      : scene(makeScene()),
+        place(sim::placeOnGrid(scene, Vec2(25, 25), headingDeg, 10.0)),
+        truth(sim::rasterizeScene(scene, place.frame, place.width, place.height, "room")) {}
   static sim::Scene makeScene() {
     sim::Scene s;
     s.addRing(sim::Ring{{Vec2(0, 0), Vec2(200, 0), Vec2(200, 140), Vec2(0, 140)}});
@@ -39,9 +40,12 @@ std::vector<KnownCell> mapOf(const sim::World& w) {
   std::vector<KnownCell> known;
   for (int r = 0; r < w.height(); ++r) {
     for (int c = 0; c < w.width(); ++c) {
-      const bool nearFree = !w.blocked(c + 1, r) || !w.blocked(c - 1, r) || !w.blocked(c, r + 1) || !w.blocked(c, r - 1);
-      if (!w.blocked(c, r)) known.push_back({c, r, CellState::Free});
-      else if (nearFree) known.push_back({c, r, CellState::Occupied});
+      const bool nearFree =
+          !w.blocked(c + 1, r) || !w.blocked(c - 1, r) || !w.blocked(c, r + 1) || !w.blocked(c, r - 1);
+      if (!w.blocked(c, r))
+        known.push_back({c, r, CellState::Free});
+      else if (nearFree)
+        known.push_back({c, r, CellState::Occupied});
     }
   }
   return known;
@@ -77,8 +81,7 @@ TEST(MapScoreAligned, AMovedPerfectMapScoresLowAsItLiesAndFullyAligned) {
       const Room room(heading);
       const sim::GridFrame mapFrame =
           movedFrame(room.place.frame, room.place.startCol, room.place.startRow, m.rotationDeg, m.shiftCol, m.shiftRow);
-      const sim::World mapTruth =
-          sim::rasterizeScene(room.scene, mapFrame, room.place.width, room.place.height, "map");
+      const sim::World mapTruth = sim::rasterizeScene(room.scene, mapFrame, room.place.width, room.place.height, "map");
       const MapScore s = scoreMap(inputFor(room, mapOf(mapTruth)));
       EXPECT_GT(s.wrongCells, 10);
       EXPECT_LT(s.detectedPct(), 90.0);

@@ -101,16 +101,26 @@ TEST(HouseNetwork, ValidationKeepsTheHouseWithinItsLimits) {
        "room 'room2': to_house x, y (2147483647, 0) must lie within -8192..8192 cells"},
       {"rooms far apart", [](HouseNetwork& n) { n.rooms()[2].toHouse = RoomTransform::fromParts(0, -8000, 1); },
        "the rooms span 8 x 8006 cells in the house frame, more than 2048 a side"},
-      {"rooms at the largest extent", [](HouseNetwork& n) { n.rooms()[2].toHouse = RoomTransform::fromParts(2044, 0, 0); },
-       ""},
+      {"rooms at the largest extent",
+       [](HouseNetwork& n) { n.rooms()[2].toHouse = RoomTransform::fromParts(2044, 0, 0); }, ""},
       {"a label outside its room", [](HouseNetwork& n) { n.rooms()[0].labels["chair"] = C(4, 0); },
        "room 'room0': label 'chair' at [4, 0] lies outside the room's map (cells 0..3 x 0..2)"},
       {"a label on its room's edge", [](HouseNetwork& n) { n.rooms()[0].labels["chair"] = C(3, 2); }, ""},
-      {"a gateway cell far outside its room", [](HouseNetwork& n) { n.addGateway(Gateway{0, 2, {C(30000, 1)}, {C(0, 0)}}); },
+      {"a gateway cell far outside its room",
+       [](HouseNetwork& n) {
+         n.addGateway(Gateway{0, 2, {C(30000, 1)}, {C(0, 0)}});
+       },
        "gateway 2: cells_a [30000, 1] lies outside room 'room0' (more than 8 cells from its map, cells 0..3 x 0..2)"},
-      {"a gateway cell nine cells out", [](HouseNetwork& n) { n.addGateway(Gateway{0, 2, {C(1, 1)}, {C(-9, 0)}}); },
+      {"a gateway cell nine cells out",
+       [](HouseNetwork& n) {
+         n.addGateway(Gateway{0, 2, {C(1, 1)}, {C(-9, 0)}});
+       },
        "gateway 2: cells_b [-9, 0] lies outside room 'room2'"},
-      {"a gateway cell eight cells out", [](HouseNetwork& n) { n.addGateway(Gateway{0, 2, {C(1, 1)}, {C(0, -8)}}); }, ""},
+      {"a gateway cell eight cells out",
+       [](HouseNetwork& n) {
+         n.addGateway(Gateway{0, 2, {C(1, 1)}, {C(0, -8)}});
+       },
+       ""},
       {"a room with no map yet holds its entrance",
        [](HouseNetwork& n) {
          RoomNode r;
@@ -121,7 +131,8 @@ TEST(HouseNetwork, ValidationKeepsTheHouseWithinItsLimits) {
        ""},
       {"too many rooms",
        [](HouseNetwork& n) {
-         for (int i = 0; i < kMaxRooms; ++i) n.addRoom(RoomNode{"extra" + std::to_string(i), RoomMap(0, 0, 1, 1), {}, {}});
+         for (int i = 0; i < kMaxRooms; ++i)
+           n.addRoom(RoomNode{"extra" + std::to_string(i), RoomMap(0, 0, 1, 1), {}, {}});
        },
        "259 rooms, more than 256"},
       {"too many cells",

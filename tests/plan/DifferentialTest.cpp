@@ -56,9 +56,9 @@ TEST(Differential, AStarJpsDijkstraAndSeedOnRandomGrids) {
       const MapCell to = randomFreeCell(rng, grid);
       if (from.col < 0 || to.col < 0) continue;
       const PlanResult ref = dijkstra->plan(grid, from, to, options);
-      const std::string where = "trial " + std::to_string(trial) + " " + std::to_string(w) + "x" +
-                                std::to_string(h) + " from " + std::to_string(from.col) + "," +
-                                std::to_string(from.row) + " to " + std::to_string(to.col) + "," + std::to_string(to.row);
+      const std::string where = "trial " + std::to_string(trial) + " " + std::to_string(w) + "x" + std::to_string(h) +
+                                " from " + std::to_string(from.col) + "," + std::to_string(from.row) + " to " +
+                                std::to_string(to.col) + "," + std::to_string(to.row);
       ASSERT_TRUE(ref.status == PlanStatus::Found || ref.status == PlanStatus::NoPath) << where;
       ref.found() ? ++found : ++notFound;
       for (Planner* p : {astar.get(), jps.get(), jpsPlus.get(), seed.get()}) {

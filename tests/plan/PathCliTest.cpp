@@ -11,8 +11,8 @@ namespace {
 
 using cli::test::lines;
 using cli::test::readFile;
-using cli::test::RunOutput;
 using cli::test::runCli;
+using cli::test::RunOutput;
 using cli::test::shellQuote;
 using cli::test::TempDir;
 
@@ -130,10 +130,12 @@ TEST(PathsCli, BadInputIsOneLineAndExitTwo) {
   expectUsageError("paths " + map + " --scen " + tmp.write("v.scen", "version 7\n"), "version 1");
   expectUsageError("paths " + map + " --scen " + tmp.write("f.scen", "version 1\n0\tarena2.map\t281\t209\t1\t2\n"),
                    "expected 9 fields");
-  expectUsageError("paths " + map + " --scen " + tmp.write("s.scen", "version 1\n0\tarena2.map\t512\t512\t1\t2\t3\t4\t5\n"),
-                   "is for a 512x512 map");
-  expectUsageError("paths " + map + " --scen " + tmp.write("o.scen", "version 1\n0\tarena2.map\t281\t209\t1\t2\t300\t4\t5\n"),
-                   "outside the map");
+  expectUsageError(
+      "paths " + map + " --scen " + tmp.write("s.scen", "version 1\n0\tarena2.map\t512\t512\t1\t2\t3\t4\t5\n"),
+      "is for a 512x512 map");
+  expectUsageError(
+      "paths " + map + " --scen " + tmp.write("o.scen", "version 1\n0\tarena2.map\t281\t209\t1\t2\t300\t4\t5\n"),
+      "outside the map");
   expectUsageError("paths " + map + " --scen " + tmp.write("e.scen", "version 1\n"), "no problems");
   expectUsageError("paths " + tmp.write("m.map", "type octile\nheight 1\n") + " --scen " + tmp.path("e.scen"), "m.map");
   expectUsageError("paths " + map + " --scen " + tmp.path("e.scen") + " --algo bfs", "--algo");

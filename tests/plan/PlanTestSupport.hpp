@@ -14,7 +14,9 @@ inline mapio::OccupancyMap mapFromRows(const std::vector<std::string>& rows) {
     for (size_t c = 0; c < rows[r].size(); ++c) {
       const char ch = rows[r][c];
       m.set(static_cast<int>(c), static_cast<int>(r),
-            ch == '.' ? mapio::Occupancy::Free : ch == '?' ? mapio::Occupancy::Unknown : mapio::Occupancy::Occupied);
+            ch == '.'   ? mapio::Occupancy::Free
+            : ch == '?' ? mapio::Occupancy::Unknown
+                        : mapio::Occupancy::Occupied);
     }
   }
   return m;

@@ -34,8 +34,10 @@ std::vector<int> decodeAll(const Bytes& stream, FrameDecoder& d) {
     d.push(b);
     while (d.pop(t)) {
       PacketView v;
-      if (parsePacket(t, v)) out.push_back(v.header.seq);
-      else out.push_back(1000 + t.opcode());
+      if (parsePacket(t, v))
+        out.push_back(v.header.seq);
+      else
+        out.push_back(1000 + t.opcode());
     }
   }
   return out;
@@ -50,9 +52,18 @@ Bytes concat(std::initializer_list<Bytes> parts) {
 TEST(FrameDecoder, RecoversFromEveryKindOfDamage) {
   const Bytes a = packetFrame(1, 20), b = packetFrame(2, 100), c = packetFrame(3, 0);
   const Bytes battery = {2, 0, 0x00, 0x0B};
-  auto dropAt = [](Bytes x, size_t i) { x.erase(x.begin() + static_cast<long>(i)); return x; };
-  auto flipAt = [](Bytes x, size_t i) { x[i] ^= 0x5A; return x; };
-  auto dupAt = [](Bytes x, size_t i) { x.insert(x.begin() + static_cast<long>(i), x[i]); return x; };
+  auto dropAt = [](Bytes x, size_t i) {
+    x.erase(x.begin() + static_cast<long>(i));
+    return x;
+  };
+  auto flipAt = [](Bytes x, size_t i) {
+    x[i] ^= 0x5A;
+    return x;
+  };
+  auto dupAt = [](Bytes x, size_t i) {
+    x.insert(x.begin() + static_cast<long>(i), x[i]);
+    return x;
+  };
   struct Case {
     std::string what;
     Bytes stream;
@@ -106,9 +117,9 @@ TEST(SeqWindow, RecordsNewSeqsAndRejectsRepeats) {
     uint16_t ack, mask;  // after recording
   };
   const Step steps[] = {
-      {5, false, 5, 0x0000},   {5, true, 5, 0x0000},    {6, false, 6, 0x0001},   {8, false, 8, 0x0006},
-      {7, false, 8, 0x0007},   {7, true, 8, 0x0007},    {6, true, 8, 0x0007},    {30, false, 30, 0x0000},
-      {13, true, 30, 0x0000},  {14, false, 30, 0x8000}, {14, true, 30, 0x8000},  {31, false, 31, 0x0001},
+      {5, false, 5, 0x0000},  {5, true, 5, 0x0000},    {6, false, 6, 0x0001},  {8, false, 8, 0x0006},
+      {7, false, 8, 0x0007},  {7, true, 8, 0x0007},    {6, true, 8, 0x0007},   {30, false, 30, 0x0000},
+      {13, true, 30, 0x0000}, {14, false, 30, 0x8000}, {14, true, 30, 0x8000}, {31, false, 31, 0x0001},
   };
   SeqWindow w;
   EXPECT_FALSE(w.seen(1));

@@ -55,11 +55,11 @@ TEST(MapSyncScan, NextPendingTable) {
     uint32_t from, end, expected;
   };
   const Row rows[] = {
-      {0, 4096, 5},       {5, 4096, 5},    {6, 4096, 6},  {7, 4096, 130}, {131, 4096, 4095},
-      {0, 5, 5},          // none in [0, 5): the end
-      {1, 3, 3},          // unaligned both ends, nothing inside
-      {3, 6, 5},          // unaligned start, the difference in a partial last byte
-      {129, 131, 130},    {130, 130, 130}, {4095, 4096, 4095}, {4000, 4095, 4095},
+      {0, 4096, 5},      {5, 4096, 5},    {6, 4096, 6},       {7, 4096, 130},
+      {131, 4096, 4095}, {0, 5, 5},  // none in [0, 5): the end
+      {1, 3, 3},                     // unaligned both ends, nothing inside
+      {3, 6, 5},                     // unaligned start, the difference in a partial last byte
+      {129, 131, 130},   {130, 130, 130}, {4095, 4096, 4095}, {4000, 4095, 4095},
   };
   for (const Row& r : rows) EXPECT_EQ(sync.nextPending(r.from, r.end), r.expected) << r.from << ".." << r.end;
   EXPECT_TRUE(sync.pending());
@@ -197,8 +197,8 @@ TEST(MapSyncScan, FullDeltasWithLossesAndResumesAlwaysConverge) {
       const int changes = static_cast<int>(rng() % 120);
       for (int k = 0; k < changes; ++k) {
         const int x = static_cast<int>(rng() % 64) - 32, y = static_cast<int>(rng() % 64) - 32;
-        ASSERT_TRUE(o.grid.set(Cell{static_cast<int16_t>(x), static_cast<int16_t>(y)},
-                               static_cast<CellState>(1 + rng() % 2)));
+        ASSERT_TRUE(
+            o.grid.set(Cell{static_cast<int16_t>(x), static_cast<int16_t>(y)}, static_cast<CellState>(1 + rng() % 2)));
       }
       sync.expire(now);
       Payload p;

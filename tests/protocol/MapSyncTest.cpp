@@ -171,8 +171,8 @@ TEST(MapSync, RandomChangesAndLossesAlwaysConverge) {
       const int changes = static_cast<int>(rng() % 6);
       for (int k = 0; k < changes; ++k) {
         const int x = static_cast<int>(rng() % 50) - 25, y = static_cast<int>(rng() % 50) - 25;
-        ASSERT_TRUE(o.grid.set(Cell{static_cast<int16_t>(x), static_cast<int16_t>(y)},
-                               static_cast<CellState>(1 + rng() % 2)));
+        ASSERT_TRUE(
+            o.grid.set(Cell{static_cast<int16_t>(x), static_cast<int16_t>(y)}, static_cast<CellState>(1 + rng() % 2)));
       }
       sync.expire(now);
       Payload p;

@@ -149,7 +149,7 @@ TEST(Messages, MapChunksCarryRowMajorCellsOfTheWindow) {
   ASSERT_GT(encodeMapChunk(m, p), 0u);
   MapChunkMsg d;
   ASSERT_TRUE(decodeMapChunk(p.bytes, p.size, d));
-  EXPECT_EQ(d.cellOf(0), (Cell{3, 0}));   // offset 25 = row 1, column 5
+  EXPECT_EQ(d.cellOf(0), (Cell{3, 0}));  // offset 25 = row 1, column 5
   EXPECT_EQ(d.cellOf(5), (Cell{8, 0}));
   for (uint16_t i = 0; i < 6; ++i) EXPECT_EQ(d.state(i), states[i]);
 
@@ -161,7 +161,10 @@ TEST(Messages, MapChunksCarryRowMajorCellsOfTheWindow) {
       {"beyond the window", [](MapChunkMsg& x) { x.offset = 20 * 21 - 3; }},
       {"chunk index past the count", [](MapChunkMsg& x) { x.chunkIndex = 2; }},
       {"empty window", [](MapChunkMsg& x) { x.window = Bounds{}; }},
-      {"window wider than 128", [](MapChunkMsg& x) { x.window = Bounds{0, 0, 128, 3}; }},
+      {"window wider than 128",
+       [](MapChunkMsg& x) {
+         x.window = Bounds{0, 0, 128, 3};
+       }},
       {"state 3", [](MapChunkMsg& x) { x.states[0] = 0xFF; }},
   };
   for (const Bad& b : bads) {
@@ -181,7 +184,8 @@ TEST(Messages, DeltasNameCellsByTorusIndexAndUnwrapThroughTheWindow) {
   MapDeltaWriter w(p, h);
   // Torus index of (-10, -4) on 64 x 64: x 54, y 60.
   const uint16_t index = static_cast<uint16_t>(60 * 64 + 54);
-  const CellState run[] = {CellState::Free, CellState::Occupied, CellState::Free, CellState::Unknown, CellState::Occupied};
+  const CellState run[] = {CellState::Free, CellState::Occupied, CellState::Free, CellState::Unknown,
+                           CellState::Occupied};
   ASSERT_TRUE(w.addRun(index, 5, [&](uint8_t k) { return run[k]; }));
   ASSERT_TRUE(w.addRun(0, 1, [](uint8_t) { return CellState::Free; }));
   EXPECT_EQ(p.size, kDeltaHeaderSize + runBytes(5) + runBytes(1));

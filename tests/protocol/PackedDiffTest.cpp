@@ -26,17 +26,17 @@ TEST(PackedDiff, FirstDifferenceTable) {
     size_t expected;
   };
   const Row rows[] = {
-      {0, 64, {}, 64},            // equal: the end
-      {0, 64, {0}, 0},            // the first byte
-      {0, 64, {63}, 63},          // the last byte
-      {0, 64, {17, 40}, 17},      // the first of several
-      {18, 64, {17, 40}, 40},     // differences before `from` are not looked at
-      {0, 17, {17, 40}, 17},      // nor at or after `end`
-      {5, 5, {5}, 5},             // an empty range
-      {3, 37, {36}, 36},          // unaligned start, difference in the tail bytes
-      {1, 64, {2}, 2},            // before the first aligned word
-      {0, 64, {16}, 16},          // right after the first 16-byte block
-      {0, 64, {15}, 15},          // the last byte of the first block
+      {0, 64, {}, 64},         // equal: the end
+      {0, 64, {0}, 0},         // the first byte
+      {0, 64, {63}, 63},       // the last byte
+      {0, 64, {17, 40}, 17},   // the first of several
+      {18, 64, {17, 40}, 40},  // differences before `from` are not looked at
+      {0, 17, {17, 40}, 17},   // nor at or after `end`
+      {5, 5, {5}, 5},          // an empty range
+      {3, 37, {36}, 36},       // unaligned start, difference in the tail bytes
+      {1, 64, {2}, 2},         // before the first aligned word
+      {0, 64, {16}, 16},       // right after the first 16-byte block
+      {0, 64, {15}, 15},       // the last byte of the first block
   };
   for (const Row& r : rows) {
     alignas(4) uint8_t a[64], b[64];
@@ -70,13 +70,14 @@ TEST(PackedDiff, DifferingCellsTable) {
   struct Row {
     uint8_t a, b, mask;
   };
-  const Row rows[] = {
-      {0x00, 0x00, 0x0}, {0xFF, 0xFF, 0x0}, {0x00, 0x01, 0x1}, {0x00, 0x02, 0x1}, {0x00, 0x03, 0x1},
-      {0x00, 0x04, 0x2}, {0x00, 0x08, 0x2}, {0x00, 0x30, 0x4}, {0x00, 0x40, 0x8}, {0x00, 0x80, 0x8},
-      {0x1B, 0xE4, 0xF},  // 0,1,2,3 against 3,2,1,0: every cell
-      {0x1B, 0x1F, 0x2},  // cell 1: 2 -> 3
-      {0xAA, 0x55, 0xF}, {0x55, 0x54, 0x1},
-  };
+  const Row rows[] =
+      {
+          {0x00, 0x00, 0x0}, {0xFF, 0xFF, 0x0}, {0x00, 0x01, 0x1}, {0x00, 0x02, 0x1},
+          {0x00, 0x03, 0x1}, {0x00, 0x04, 0x2}, {0x00, 0x08, 0x2}, {0x00, 0x30, 0x4},
+          {0x00, 0x40, 0x8}, {0x00, 0x80, 0x8}, {0x1B, 0xE4, 0xF},  // 0,1,2,3 against 3,2,1,0: every cell
+          {0x1B, 0x1F, 0x2},                                        // cell 1: 2 -> 3
+          {0xAA, 0x55, 0xF}, {0x55, 0x54, 0x1},
+      };
   for (const Row& r : rows) {
     EXPECT_EQ(differingCells(r.a, r.b), r.mask) << std::hex << int(r.a) << " " << int(r.b);
     EXPECT_EQ(differingCells(r.b, r.a), r.mask);
@@ -127,7 +128,8 @@ TEST(PackedDiff, ExtractCopyAndSetEveryRange) {
       setCells(set, first, count, 3);
       for (uint32_t c = 0; c < total; ++c) {
         const bool inside = c >= first && c < first + count;
-        ASSERT_EQ(cellOf(copy, c), inside ? cellOf(torus, c) : cellOf(other, c)) << first << "," << count << " cell " << c;
+        ASSERT_EQ(cellOf(copy, c), inside ? cellOf(torus, c) : cellOf(other, c))
+            << first << "," << count << " cell " << c;
         ASSERT_EQ(cellOf(set, c), inside ? 3 : cellOf(other, c)) << first << "," << count << " cell " << c;
       }
     }

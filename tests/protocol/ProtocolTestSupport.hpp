@@ -38,8 +38,10 @@ struct MirrorMap {
     Cell c;
     CellState s;
     while (r.next(c, s)) {
-      if (s == CellState::Unknown) cells.erase({c.x, c.y});
-      else cells[{c.x, c.y}] = s;
+      if (s == CellState::Unknown)
+        cells.erase({c.x, c.y});
+      else
+        cells[{c.x, c.y}] = s;
     }
     ++deltas;
     return true;

@@ -125,9 +125,9 @@ TEST(SequenceNumbers, SkipZeroAndAcknowledgeThroughTheMask) {
     bool acked;
   };
   const Case cases[] = {
-      {10, 0x0000, 10, true},  {10, 0x0000, 9, false}, {10, 0x0001, 9, true},   {10, 0x8000, 26, false},
-      {10, 0x8000, 65530, true}, {26, 0x8000, 10, true}, {26, 0x7FFF, 10, false}, {0, 0xFFFF, 0, false},
-      {5, 0, 0, false},        {10, 0xFFFF, 11, false},
+      {10, 0x0000, 10, true},    {10, 0x0000, 9, false},  {10, 0x0001, 9, true},   {10, 0x8000, 26, false},
+      {10, 0x8000, 65530, true}, {26, 0x8000, 10, true},  {26, 0x7FFF, 10, false}, {0, 0xFFFF, 0, false},
+      {5, 0, 0, false},          {10, 0xFFFF, 11, false},
   };
   for (const Case& c : cases) EXPECT_EQ(acknowledges(c.ack, c.mask, c.seq), c.acked) << c.ack << " " << c.seq;
 }
@@ -141,7 +141,7 @@ TEST(LegoDirectCommands, AreAnsweredWithLegosReplyLayout) {
     Bytes reply;  // empty: no reply
   };
   const Case cases[] = {
-      {"battery", {0x00, 0x0B}, {0x02, 0x0B, 0x00, 0x2C, 0x1F}},  // 7980 mV
+      {"battery", {0x00, 0x0B}, {0x02, 0x0B, 0x00, 0x2C, 0x1F}},                 // 7980 mV
       {"keep alive", {0x00, 0x0D}, {0x02, 0x0D, 0x00, 0x60, 0xEA, 0x00, 0x00}},  // 60000 ms
       {"battery, no reply", {0x80, 0x0B}, {}},
       {"write box 3", {0x00, 0x09, 0x03, 0x03, 'h', 'i', 0x00}, {0x02, 0x09, 0x00}},
@@ -170,15 +170,15 @@ TEST(LegoDirectCommands, AreAnsweredWithLegosReplyLayout) {
 
 TEST(LegoDirectCommands, MalformedOnesAreNotTelegrams) {
   const Bytes bad[] = {
-      {0x00, 0x0B, 0x00},                    // battery with a stray byte
-      {0x00, 0x09, 10, 2, 'a', 0},           // mailbox 10 does not exist
-      {0x00, 0x09, 1, 3, 'a', 'b', 'c'},     // not NUL-terminated
-      {0x00, 0x09, 1, 60, 0},                // size beyond 59 / mismatch
-      {0x00, 0x13, 20, 0, 1},                // remote box 20
-      {0x00, 0x13, 1, 0, 2},                 // remove flag 2
-      {0x00, 0x03, 0, 0, 0, 0, 0, 0},        // PLAY_TONE: not served
-      {0x01, 0x9B},                          // system command: not served
-      {0x4E, 0x02},                          // too short for a packet
+      {0x00, 0x0B, 0x00},                 // battery with a stray byte
+      {0x00, 0x09, 10, 2, 'a', 0},        // mailbox 10 does not exist
+      {0x00, 0x09, 1, 3, 'a', 'b', 'c'},  // not NUL-terminated
+      {0x00, 0x09, 1, 60, 0},             // size beyond 59 / mismatch
+      {0x00, 0x13, 20, 0, 1},             // remote box 20
+      {0x00, 0x13, 1, 0, 2},              // remove flag 2
+      {0x00, 0x03, 0, 0, 0, 0, 0, 0},     // PLAY_TONE: not served
+      {0x01, 0x9B},                       // system command: not served
+      {0x4E, 0x02},                       // too short for a packet
   };
   for (const Bytes& b : bad) EXPECT_FALSE(telegramValid(b.data(), b.size())) << int(b[1]);
 }

@@ -11,7 +11,7 @@
 namespace nxtmap::sim::test {
 
 inline std::string dataPath(const std::string& name) {
-    return std::string(NXTMAP_SOURCE_DIR) + "/tests/sim/data/" + name;
+  return std::string(NXTMAP_SOURCE_DIR) + "/tests/sim/data/" + name;
 }
 
 using ::nxtmap::test::TempDir;

@@ -13,8 +13,7 @@ namespace nxtmap::test {
 class TempDir {
  public:
   explicit TempDir(const std::string& tag = "t")
-      : dir_(std::filesystem::temp_directory_path() /
-             ("nxtmap_test_" + std::to_string(::getpid()) + "_" + tag)) {
+      : dir_(std::filesystem::temp_directory_path() / ("nxtmap_test_" + std::to_string(::getpid()) + "_" + tag)) {
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }
@@ -26,9 +25,7 @@ class TempDir {
   TempDir& operator=(const TempDir&) = delete;
 
   // Path of `name` inside the directory (the directory itself for "").
-  std::string path(const std::string& name = "") const {
-    return name.empty() ? dir_.string() : (dir_ / name).string();
-  }
+  std::string path(const std::string& name = "") const { return name.empty() ? dir_.string() : (dir_ / name).string(); }
   // Writes `content` to `name` (creating sub-folders) and returns its path.
   std::string write(const std::string& name, const std::string& content) const {
     const auto p = dir_ / name;

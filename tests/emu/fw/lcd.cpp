@@ -11,40 +11,43 @@ constexpr uint32_t kA0 = 1u << 12, kCs = 1u << 10;
 uint8_t g_page[100];
 
 void send(bool data, uint8_t b) {
-    while (!(REG(kSr) & (1u << 9))) {}  // TXEMPTY before A0 changes
-    if (data) REG(kSodr) = kA0; else REG(kCodr) = kA0;
-    REG(kTdr) = b;
+  while (!(REG(kSr) & (1u << 9))) {}  // TXEMPTY before A0 changes
+  if (data)
+    REG(kSodr) = kA0;
+  else
+    REG(kCodr) = kA0;
+  REG(kTdr) = b;
 }
 }  // namespace
 
 int main() {
-    REG(kWdtMr) = 1u << 15;
-    REG(kPmcPcer) = (1u << 5) | (1u << 2);
-    REG(kPer) = kA0 | kCs;
-    REG(kOer) = kA0 | kCs;
-    REG(kCodr) = kCs;
-    REG(kPdr) = (1u << 13) | (1u << 14);
-    REG(kAsr) = (1u << 13) | (1u << 14);
-    REG(kCr) = 0x80;
-    REG(kCr) = 1;
-    REG(kMr) = 1u | (1u << 4);
-    REG(kCsr0) = (24u << 8) | 1u;
-    const uint8_t init[] = {0xE2, 0x23, 0xEB, 0x81, 0x5C, 0x89, 0xC4, 0xAF};
-    for (uint8_t c : init) send(false, c);
-    for (int i = 0; i < 100; ++i) g_page[i] = i < 10 ? 0xFF : 0x00;
-    send(false, 0x00);
-    send(false, 0x10);
-    send(false, 0xB0);
-    while (!(REG(kSr) & (1u << 9))) {}
-    REG(kSodr) = kA0;
-    REG(kTpr) = reinterpret_cast<uint32_t>(g_page);
-    REG(kTcr) = 100;
-    REG(kPtcr) = 1u << 8;
-    while (!(REG(kSr) & (1u << 9))) {}
-    send(false, 0x02);  // column 50 = 0x32
-    send(false, 0x13);
-    send(false, 0xB2);
-    send(true, 0x10);
-    while (!(REG(kSr) & (1u << 9))) {}
-    return 0;
+  REG(kWdtMr) = 1u << 15;
+  REG(kPmcPcer) = (1u << 5) | (1u << 2);
+  REG(kPer) = kA0 | kCs;
+  REG(kOer) = kA0 | kCs;
+  REG(kCodr) = kCs;
+  REG(kPdr) = (1u << 13) | (1u << 14);
+  REG(kAsr) = (1u << 13) | (1u << 14);
+  REG(kCr) = 0x80;
+  REG(kCr) = 1;
+  REG(kMr) = 1u | (1u << 4);
+  REG(kCsr0) = (24u << 8) | 1u;
+  const uint8_t init[] = {0xE2, 0x23, 0xEB, 0x81, 0x5C, 0x89, 0xC4, 0xAF};
+  for (uint8_t c : init) send(false, c);
+  for (int i = 0; i < 100; ++i) g_page[i] = i < 10 ? 0xFF : 0x00;
+  send(false, 0x00);
+  send(false, 0x10);
+  send(false, 0xB0);
+  while (!(REG(kSr) & (1u << 9))) {}
+  REG(kSodr) = kA0;
+  REG(kTpr) = reinterpret_cast<uint32_t>(g_page);
+  REG(kTcr) = 100;
+  REG(kPtcr) = 1u << 8;
+  while (!(REG(kSr) & (1u << 9))) {}
+  send(false, 0x02);  // column 50 = 0x32
+  send(false, 0x13);
+  send(false, 0xB2);
+  send(true, 0x10);
+  while (!(REG(kSr) & (1u << 9))) {}
+  return 0;
 }

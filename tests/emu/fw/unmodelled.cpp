@@ -2,6 +2,6 @@
 #include "Probe.hpp"
 
 int main() {
-    REG(probe::kWdtMr) = 1u << 15;
-    return static_cast<int>(REG(0xFFFB0000u + 0x1C));  // UDP_ISR
+  REG(probe::kWdtMr) = 1u << 15;
+  return static_cast<int>(REG(0xFFFB0000u + 0x1C));  // UDP_ISR
 }
