@@ -6,6 +6,14 @@
 
 namespace nxtmap {
 
+// The memory an explorer works in, as views: a map and a planner of width x height cells.
+struct ExplorerMemory {
+  MapLayers::Storage map;
+  TravelPlanner::Storage travel;
+  int16_t width;
+  int16_t height;
+};
+
 // All the memory an explorer needs for a room of up to W x H cells, in one caller-owned block
 // (a static on the brick, a member or local on the PC). No heap anywhere.
 template <int W, int H, int QUEUE = (W * H) / 2>
@@ -14,6 +22,7 @@ struct ExplorerStorage {
   TravelStorage<W, H, QUEUE> travel;
   static constexpr int16_t kWidth() { return W; }
   static constexpr int16_t kHeight() { return H; }
+  ExplorerMemory memory() { return ExplorerMemory{map.view(), travel.view(), W, H}; }
   static constexpr size_t kBytes = sizeof(MapStorage<W, H>) + sizeof(TravelStorage<W, H, QUEUE>);
 };
 

@@ -1,7 +1,7 @@
 #include "host/house/HouseMapper.hpp"
 
 #include "common/motion/Pilot.hpp"
-#include "host/house/GoToExplorer.hpp"
+#include "common/explore/GoToExplorer.hpp"
 #include "host/house/OpeningSearch.hpp"
 #include "host/house/RoomRegistration.hpp"
 #include "host/house/RoomSplit.hpp"

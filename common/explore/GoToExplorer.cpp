@@ -1,6 +1,6 @@
-#include "host/house/GoToExplorer.hpp"
+#include "common/explore/GoToExplorer.hpp"
 
-namespace nxtmap::house {
+namespace nxtmap {
 
 Action GoToExplorer::decide() {
   if (pose_.cell == target_ || ++plans_ > kMaxPlans) return Action::done();
@@ -16,4 +16,4 @@ Action GoToExplorer::decide() {
   return follow();
 }
 
-}  // namespace nxtmap::house
+}  // namespace nxtmap

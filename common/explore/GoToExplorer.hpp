@@ -6,7 +6,7 @@
 
 #include "common/explore/Explorer.hpp"
 
-namespace nxtmap::house {
+namespace nxtmap {
 
 class GoToExplorer final : public Explorer {
  public:
@@ -24,4 +24,4 @@ class GoToExplorer final : public Explorer {
   int plans_ = 0;
 };
 
-}  // namespace nxtmap::house
+}  // namespace nxtmap
