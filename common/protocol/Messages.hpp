@@ -6,18 +6,19 @@
 #include "common/explore/Pose.hpp"
 #include "common/grid/Cell.hpp"
 #include "common/grid/CellState.hpp"
+#include "common/protocol/HouseMessages.hpp"
+#include "common/protocol/MapDelta.hpp"
+#include "common/protocol/Payload.hpp"
 #include "common/protocol/WireFormat.hpp"
 
-// The payloads of nxtmap packets, each with an encoder and a validating decoder. Encoders write
-// explicit little-endian fields and return the payload size (0 = does not fit). Decoders read
-// every field, check every range, and return false (leaving `out` unspecified but harmless)
-// for anything malformed: truncated, trailing bytes, out-of-range enum or coordinate.
+// The payloads of nxtmap packets, each with an encoder and a validating decoder, both driven by
+// one list of the message's fields (its Layout, FieldIo.hpp). Encoders write explicit
+// little-endian fields, whatever their values, and return the payload size (0 = does not fit, or
+// an array count out of range). Decoders read every field, check every range, and return false
+// (leaving `out` unspecified but harmless) for anything malformed: truncated, trailing bytes,
+// out-of-range enum or coordinate. The house messages (NewRoom among them) are in
+// HouseMessages.hpp, MapDelta in MapDelta.hpp.
 namespace nxtmap::protocol {
-
-struct Payload {
-  uint8_t bytes[kMaxPayload] = {};
-  size_t size = 0;
-};
 
 // ---- PC -> brick -------------------------------------------------------------------------
 
@@ -101,14 +102,6 @@ struct PathProgressMsg {
 size_t encodePathProgress(const PathProgressMsg& m, Payload& out);
 bool decodePathProgress(const uint8_t* p, size_t n, PathProgressMsg& out);
 
-// The robot went through an exit into another room: a new map epoch starts with it.
-struct NewRoomMsg {
-  uint16_t roomId = 0;  // counts rooms entered since power-on
-  Cell entry{};         // entry cell in the new room's frame
-};
-size_t encodeNewRoom(const NewRoomMsg& m, Payload& out);
-bool decodeNewRoom(const uint8_t* p, size_t n, NewRoomMsg& out);
-
 struct BatteryMsg {
   uint16_t millivolts = 0;
 };
@@ -146,98 +139,5 @@ struct CountersMsg {
 };
 size_t encodeCounters(const CountersMsg& m, Payload& out);
 bool decodeCounters(const uint8_t* p, size_t n, CountersMsg& out);
-
-// MapDelta: changed cells of the brick's grid, as absolute states (so applying one twice or
-// late is harmless). Cells are named by their index on the brick's torus grid (row-major,
-// width 2^widthLog2); the window (the bounding box of every known cell, never wider than the
-// capacity) turns an index back into coordinates. A run covers `count` consecutive indices of
-// one row: [index u16][count u8][states, 2 bits each, ceil(count/4) bytes].
-struct MapDeltaHeader {
-  uint16_t epoch = 0;     // changes when the brick's map restarts (new room, restructuring, resync)
-  uint8_t widthLog2 = 6;  // 1..7 (capacity up to 128)
-  uint8_t heightLog2 = 6;
-  Bounds window{};
-  uint8_t runCount = 0;
-};
-constexpr size_t kDeltaHeaderSize = 2 + 1 + 8 + 1;
-constexpr size_t kRunHeaderSize = 3;
-constexpr uint8_t kMaxRunCells = 64;
-constexpr size_t kMinDeltaPayload = kDeltaHeaderSize + kRunHeaderSize + 1;  // one run of up to 4 cells
-// Bytes one run of `cells` cells takes.
-constexpr size_t runBytes(size_t cells) { return kRunHeaderSize + (cells + 3) / 4; }
-
-// Writes a delta payload run by run.
-class MapDeltaWriter {
- public:
-  // `limit`: the largest payload to build, kMinDeltaPayload..kMaxPayload bytes.
-  MapDeltaWriter(Payload& out, const MapDeltaHeader& header, size_t limit = kMaxPayload);
-  // Whether a run of `cells` cells still fits.
-  bool fits(size_t cells) const { return out_.size + runBytes(cells) <= limit_ && runs_ < 255; }
-  // Adds a run; `stateAt(k)` gives the state of cell index+k. False when it does not fit.
-  template <class StateAt>
-  bool addRun(uint16_t index, uint8_t count, StateAt stateAt) {
-    if (count == 0 || count > kMaxRunCells || !fits(count)) return false;
-    uint8_t* b = out_.bytes + out_.size;
-    b[0] = static_cast<uint8_t>(index);
-    b[1] = static_cast<uint8_t>(index >> 8);
-    b[2] = count;
-    const size_t packed = (count + 3u) / 4u;
-    for (size_t i = 0; i < packed; ++i) b[3 + i] = 0;
-    for (uint8_t k = 0; k < count; ++k) {
-      b[3 + k / 4] = static_cast<uint8_t>(b[3 + k / 4] | ((static_cast<uint8_t>(stateAt(k)) & 3u) << (2 * (k % 4))));
-    }
-    out_.size += kRunHeaderSize + packed;
-    ++runs_;
-    out_.bytes[kDeltaHeaderSize - 1] = runs_;
-    return true;
-  }
-  // Adds a run whose states are already packed as the run carries them (see extractCells).
-  bool addPackedRun(uint16_t index, uint8_t count, const uint8_t* packed) {
-    if (count == 0 || count > kMaxRunCells || !fits(count)) return false;
-    uint8_t* b = out_.bytes + out_.size;
-    b[0] = static_cast<uint8_t>(index);
-    b[1] = static_cast<uint8_t>(index >> 8);
-    b[2] = count;
-    const size_t n = (count + 3u) / 4u;
-    for (size_t i = 0; i < n; ++i) b[3 + i] = packed[i];
-    out_.size += kRunHeaderSize + n;
-    ++runs_;
-    out_.bytes[kDeltaHeaderSize - 1] = runs_;
-    return true;
-  }
-  // The most cells one more run can carry (0 when none fits); fits(n) holds for n <= this.
-  size_t cellsThatFit() const {
-    if (runs_ == 255 || out_.size + kRunHeaderSize >= limit_) return 0;
-    return (limit_ - out_.size - kRunHeaderSize) * 4u;
-  }
-  uint8_t runs() const { return runs_; }
-
- private:
-  Payload& out_;
-  size_t limit_;
-  uint8_t runs_ = 0;
-};
-
-// Reads a delta: validate() checks all of it first (so a bad delta changes nothing), then
-// next() yields each cell with its coordinates and state.
-class MapDeltaReader {
- public:
-  MapDeltaReader(const uint8_t* p, size_t n) : p_(p), n_(n) {}
-  // Parses the header and checks every run. Must return true before next() is used.
-  bool validate();
-  const MapDeltaHeader& header() const { return header_; }
-  bool next(Cell& cell, CellState& state);
-  // Coordinates of torus index `index` inside the window.
-  Cell cellOfIndex(uint16_t index) const;
-
- private:
-  const uint8_t* p_;
-  size_t n_;
-  MapDeltaHeader header_;
-  bool valid_ = false;
-  size_t pos_ = kDeltaHeaderSize;
-  uint8_t run_ = 0;
-  uint8_t k_ = 0;
-};
 
 }  // namespace nxtmap::protocol

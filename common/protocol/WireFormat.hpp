@@ -17,7 +17,7 @@
 //    ack/ackMask: ack = newest reliable seq received, bit i of ackMask = seq (ack - 1 - i) received.
 namespace nxtmap::protocol {
 
-constexpr uint8_t kProtocolVersion = 1;
+constexpr uint8_t kProtocolVersion = 2;
 
 // Sizes (bytes). LEGO's Bluetooth input buffer holds 128 bytes per message.
 constexpr size_t kLengthPrefix = 2;
@@ -59,7 +59,7 @@ constexpr size_t kLegoWriteReplySize = 3;                                     //
 // nxtmap opcodes. PC -> brick:
 enum class Op : uint8_t {
   Hello = 0x01,           // unreliable; HelloMsg
-  Explore = 0x02,         // reliable command, no payload: start (or resume) exploring
+  Explore = 0x02,         // reliable command; ExploreMsg: start (or resume) exploring
   Stop = 0x03,            // reliable command, no payload: stop moving
   FollowPath = 0x04,      // reliable command; PathMsg
   RequestMap = 0x05,      // reliable command, no payload: send the whole map again (new epoch)
@@ -68,6 +68,8 @@ enum class Op : uint8_t {
   BatteryRequest = 0x08,  // unreliable, no payload: answered by Battery
   SetPose = 0x09,         // reliable command; PoseMsg: the robot stands at this pose of the brick's map
                           // (sent after a MapChunk upload: the pose in the uploaded map's frame)
+  GoTo = 0x0A,            // reliable command; GoToMsg: drive to a cell of the brick's map
+  EnterRoom = 0x0B,       // reliable command; EnterRoomMsg: cross a doorway, start the room beyond it
   // brick -> PC:
   HelloReply = 0x41,    // unreliable; HelloReplyMsg
   Status = 0x42,        // unreliable, periodic; StatusMsg
@@ -77,6 +79,7 @@ enum class Op : uint8_t {
   NewRoom = 0x46,       // unreliable, on change and in Status; NewRoomMsg
   Battery = 0x47,       // unreliable; BatteryMsg
   Counters = 0x48,      // unreliable, periodic; CountersMsg
+  RoomExits = 0x49,     // unreliable, periodic while mapping a house; RoomExitsMsg (absolute state)
 };
 
 constexpr uint8_t kFlagReliable = 0x01;
