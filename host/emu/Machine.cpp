@@ -1,6 +1,7 @@
 #include "host/emu/Machine.hpp"
 
 #include "host/emu/UnicornFastPath.hpp"
+#include "host/log/Log.hpp"
 
 #include <unicorn/unicorn.h>
 
@@ -67,8 +68,8 @@ struct Machine::Hooks {
       cpsr = kCpsrT;
     }
     if (m->trace_)
-      std::fprintf(stderr, "block %08x size %u cpsr %08x t=%llu\n", static_cast<unsigned>(address), size, cpsr,
-                   static_cast<unsigned long long>(m->clock_.now));
+      log::debug("emu", "block %08x size %u cpsr %08x t=%llu", static_cast<unsigned>(address), size, cpsr,
+                 static_cast<unsigned long long>(m->clock_.now));
     const uint64_t n = (cpsr & kCpsrT) ? size / 2 : size / 4;
     m->blockStart_ = m->clock_.now;
     m->clock_.now += n;
@@ -185,8 +186,10 @@ Machine::Machine(const ElfImage& image, const MachineOptions& options)
         maxBusy_ = std::max(maxBusy_, clock_.now - busyStart_);
         clock_.poke();
       }),
-      mc_([this] { applyRemap(); }) {                   // immediate, as on the chip (safe inside the MMIO callback)
-  trace_ = std::getenv("NXTMAP_EMU_TRACE") != nullptr;  // debugging aid: every block on stderr
+      mc_([this] { applyRemap(); }) {  // immediate, as on the chip (safe inside the MMIO callback)
+  // Debugging aid: NXTMAP_EMU_TRACE logs every block (area "emu", level debug, which it turns on).
+  trace_ = std::getenv("NXTMAP_EMU_TRACE") != nullptr;
+  if (trace_ && !log::enabled(log::Level::Debug)) log::setLevel(log::Level::Debug);
   if (std::getenv("NXTMAP_EMU_NOALIGN")) options_.checkAlignment = false;
   if (std::getenv("NXTMAP_EMU_SLOW_STORES")) setUnicornFastStores(false);
   flash_ = static_cast<uint8_t*>(std::aligned_alloc(4096, kFlashSize));
