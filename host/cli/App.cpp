@@ -4,6 +4,8 @@
 
 #include <cstring>
 #include <iostream>
+#include <optional>
+#include <string>
 
 #include "host/cli/Args.hpp"
 #include "host/cli/EmulateCommand.hpp"
@@ -16,6 +18,7 @@
 #include "host/cli/PathsCommand.hpp"
 #include "host/cli/SimCommand.hpp"
 #include "host/cli/SimHouseCommand.hpp"
+#include "host/log/Log.hpp"
 
 namespace nxtmap::cli {
 
@@ -40,6 +43,11 @@ int runCli(int argc, char** argv) {
   CLI::App* simHouse = addSimHouseCommand(app, simHouseOptions);
   ExportOptions exportOptions;
   CLI::App* exportCmd = addExportCommand(app, exportOptions);
+  std::string logLevel;  // empty: NXTMAP_LOG or warn
+  app.add_option("--log", logLevel,
+                 "log messages on stderr from this level up: error, warn (the default), info, debug "
+                 "(before the command; NXTMAP_LOG=LEVEL does the same)")
+      ->check(CLI::IsMember({"error", "warn", "info", "debug"}));
   app.footer(
       "Examples:\n  nxtmap sim worlds/seed-appendix-a/occupancy-120.map --start 1,20 --show live\n"
       "  nxtmap emulate worlds/seed-appendix-a/occupancy-120.map --start 1,20 --listen tcp:127.0.0.1:5555\n"
@@ -76,6 +84,7 @@ int runCli(int argc, char** argv) {
       if (emulate->parsed()) where = "emulate: ";
       throw CliError(where + e.what());
     }
+    if (const std::optional<log::Level> level = log::parseLevel(logLevel)) log::setLevel(*level);
     if (sim->parsed()) return runSim(simOptions);
     if (experiments->parsed()) return runExperiments(experimentsOptions);
     if (path->parsed()) return runPath(pathOptions);

@@ -46,86 +46,121 @@ const char* consoleHelp() {
          "quit                 leave (the robot keeps its last command)\n";
 }
 
+namespace {
+
+using Words = std::vector<std::string>;
+using K = ConsoleCommand::Kind;
+
+// A command without arguments.
+template <K kind>
+void parseBare(const Words& w, ConsoleCommand& c) {
+  expectArgs(w, 1, w[0].c_str());
+  c.kind = kind;
+}
+
+void parseGoto(const Words& w, ConsoleCommand& c) {
+  if (w.size() == 3 && w[1] == "near") {
+    c.kind = K::GotoNear;
+    c.name = w[2];
+    return;
+  }
+  expectArgs(w, 3, "goto C R  or  goto near LABEL");
+  c.kind = K::Goto;
+  c.col = parseCell(w[1], "column");
+  c.row = parseCell(w[2], "row");
+}
+
+void parseLabel(const Words& w, ConsoleCommand& c) {
+  expectArgs(w, 4, "label NAME C R");
+  c.kind = K::Label;
+  c.name = w[1];
+  c.col = parseCell(w[2], "column");
+  c.row = parseCell(w[3], "row");
+}
+
+void parseRoute(const Words& w, ConsoleCommand& c) {
+  c.kind = K::Route;
+  if (w.size() == 3 && w[1] == "near") {
+    c.near = true;
+    c.name = w[2];
+    return;
+  }
+  expectArgs(w, 4, "route ROOM C R  or  route near LABEL");
+  c.name = w[1];
+  c.col = parseCell(w[2], "column");
+  c.row = parseCell(w[3], "row");
+}
+
+void parseSave(const Words& w, ConsoleCommand& c) {
+  expectArgs(w, 2, "save DIR  or  save FILE.yaml");
+  c.kind = K::Save;
+  c.name = w[1];
+}
+
+void parseExport(const Words& w, ConsoleCommand& c) {
+  expectArgs(w, 2, "export FILE.png");
+  c.kind = K::Export;
+  c.name = w[1];
+  if (c.name.size() < 5 || c.name.substr(c.name.size() - 4) != ".png")
+    throw ConsoleError("export needs a .png file name: export FILE.png");
+}
+
+void parseWait(const Words& w, ConsoleCommand& c) {
+  if (w.size() < 2 || w.size() > 3 || (w[1] != "explored" && w[1] != "goal"))
+    throw ConsoleError("usage: wait explored|goal [SECONDS]");
+  c.kind = K::Wait;
+  c.name = w[1];
+  c.seconds = 600;
+  if (w.size() == 3) {
+    c.seconds = parseWhole(w[2], "wait: SECONDS", "a whole number of seconds");
+    if (c.seconds < 1) throw ConsoleError("wait: SECONDS must be at least 1");
+  }
+}
+
+// Any words after the command are ignored.
+template <K kind>
+void parseLoose(const Words&, ConsoleCommand& c) {
+  c.kind = kind;
+}
+
+// The first word of a line and its parser.
+struct Syntax {
+  const char* word;
+  void (*parse)(const Words&, ConsoleCommand&);
+};
+const Syntax kSyntax[] = {
+    {"explore", parseBare<K::Explore>},
+    {"stop", parseBare<K::Stop>},
+    {"goto", parseGoto},
+    {"label", parseLabel},
+    {"rooms", parseBare<K::Rooms>},
+    {"route", parseRoute},
+    {"save", parseSave},
+    {"export", parseExport},
+    {"status", parseBare<K::Status>},
+    {"battery", parseBare<K::Battery>},
+    {"map", parseBare<K::Map>},
+    {"wait", parseWait},
+    {"help", parseLoose<K::Help>},
+    {"?", parseLoose<K::Help>},
+    {"quit", parseLoose<K::Quit>},
+    {"exit", parseLoose<K::Quit>},
+};
+
+}  // namespace
+
 ConsoleCommand parseConsoleCommand(const std::string& line) {
   std::istringstream in(line);
-  std::vector<std::string> w;
+  Words w;
   for (std::string t; in >> t;) w.push_back(t);
   ConsoleCommand c;
   if (w.empty() || w[0][0] == '#') return c;
-  const std::string& k = w[0];
-  if (k == "explore") {
-    expectArgs(w, 1, "explore");
-    c.kind = ConsoleCommand::Kind::Explore;
-  } else if (k == "stop") {
-    expectArgs(w, 1, "stop");
-    c.kind = ConsoleCommand::Kind::Stop;
-  } else if (k == "goto") {
-    if (w.size() == 3 && w[1] == "near") {
-      c.kind = ConsoleCommand::Kind::GotoNear;
-      c.name = w[2];
-    } else {
-      expectArgs(w, 3, "goto C R  or  goto near LABEL");
-      c.kind = ConsoleCommand::Kind::Goto;
-      c.col = parseCell(w[1], "column");
-      c.row = parseCell(w[2], "row");
-    }
-  } else if (k == "label") {
-    expectArgs(w, 4, "label NAME C R");
-    c.kind = ConsoleCommand::Kind::Label;
-    c.name = w[1];
-    c.col = parseCell(w[2], "column");
-    c.row = parseCell(w[3], "row");
-  } else if (k == "rooms") {
-    expectArgs(w, 1, "rooms");
-    c.kind = ConsoleCommand::Kind::Rooms;
-  } else if (k == "route") {
-    c.kind = ConsoleCommand::Kind::Route;
-    if (w.size() == 3 && w[1] == "near") {
-      c.near = true;
-      c.name = w[2];
-    } else {
-      expectArgs(w, 4, "route ROOM C R  or  route near LABEL");
-      c.name = w[1];
-      c.col = parseCell(w[2], "column");
-      c.row = parseCell(w[3], "row");
-    }
-  } else if (k == "save") {
-    expectArgs(w, 2, "save DIR  or  save FILE.yaml");
-    c.kind = ConsoleCommand::Kind::Save;
-    c.name = w[1];
-  } else if (k == "export") {
-    expectArgs(w, 2, "export FILE.png");
-    c.kind = ConsoleCommand::Kind::Export;
-    c.name = w[1];
-    if (c.name.size() < 5 || c.name.substr(c.name.size() - 4) != ".png")
-      throw ConsoleError("export needs a .png file name: export FILE.png");
-  } else if (k == "status") {
-    expectArgs(w, 1, "status");
-    c.kind = ConsoleCommand::Kind::Status;
-  } else if (k == "battery") {
-    expectArgs(w, 1, "battery");
-    c.kind = ConsoleCommand::Kind::Battery;
-  } else if (k == "map") {
-    expectArgs(w, 1, "map");
-    c.kind = ConsoleCommand::Kind::Map;
-  } else if (k == "wait") {
-    if (w.size() < 2 || w.size() > 3 || (w[1] != "explored" && w[1] != "goal"))
-      throw ConsoleError("usage: wait explored|goal [SECONDS]");
-    c.kind = ConsoleCommand::Kind::Wait;
-    c.name = w[1];
-    c.seconds = 600;
-    if (w.size() == 3) {
-      c.seconds = parseWhole(w[2], "wait: SECONDS", "a whole number of seconds");
-      if (c.seconds < 1) throw ConsoleError("wait: SECONDS must be at least 1");
-    }
-  } else if (k == "help" || k == "?") {
-    c.kind = ConsoleCommand::Kind::Help;
-  } else if (k == "quit" || k == "exit") {
-    c.kind = ConsoleCommand::Kind::Quit;
-  } else {
-    throw ConsoleError("unknown command '" + k + "' (type help for the list)");
+  for (const Syntax& s : kSyntax) {
+    if (w[0] != s.word) continue;
+    s.parse(w, c);
+    return c;
   }
-  return c;
+  throw ConsoleError("unknown command '" + w[0] + "' (type help for the list)");
 }
 
 }  // namespace nxtmap::console
