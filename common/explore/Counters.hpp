@@ -15,6 +15,17 @@ struct Counters {
   // Time in half cell units: one unit per cell moved and per 90 deg turn (half for 45 deg);
   // steering corrections count by their angle (785 mrad = 45 deg = one half unit).
   constexpr uint32_t timeHalfUnits() const { return 2 * cellsMoved + turnEighths + correctionMrad / 785; }
+
+  // Sums another run's figures into these.
+  constexpr Counters& operator+=(const Counters& o) {
+    sensorRequests += o.sensorRequests;
+    rawSamples += o.rawSamples;
+    cellsMoved += o.cellsMoved;
+    turnEighths += o.turnEighths;
+    blockedMoves += o.blockedMoves;
+    correctionMrad += o.correctionMrad;
+    return *this;
+  }
 };
 
 }  // namespace nxtmap

@@ -16,7 +16,8 @@ Explorer* ExplorerStack::explorer() {
 
 const Explorer* ExplorerStack::explorer() const { return const_cast<ExplorerStack*>(this)->explorer(); }
 
-DriveAction ExplorerStack::start(Strategy strategy, const PilotConfig& pilot, const Pose& at, Cell target) {
+DriveAction ExplorerStack::start(Strategy strategy, const PilotConfig& pilot, const Pose& at, Cell target,
+                                 const CellSet* shut) {
   end();
   strategy_ = strategy;
   switch (strategy) {
@@ -25,6 +26,7 @@ DriveAction ExplorerStack::start(Strategy strategy, const PilotConfig& pilot, co
     case Strategy::GoTo: explorer_.emplace<GoToExplorer>(map_, planner_, config_, target); break;
   }
   pilot_.emplace(*explorer(), pilot);
+  pilot_->setVirtualWalls(shut);
   return pilot_->step(DriveEvent::startAt(at));
 }
 

@@ -30,8 +30,10 @@ class ExplorerStack {
   ExplorerStack& operator=(const ExplorerStack&) = delete;
 
   // Starts a run of `strategy` on the map as it is, the robot at `at` (a new room: Pose{}); for
-  // GoTo, `target` is the cell to reach. Any run before is dropped. Returns the first action.
-  DriveAction start(Strategy strategy, const PilotConfig& pilot, const Pose& at = Pose{}, Cell target = Cell{});
+  // GoTo, `target` is the cell to reach; `shut`: cells held closed that are no walls (see
+  // Pilot::setVirtualWalls; must outlive the run). Any run before is dropped. Returns the first action.
+  DriveAction start(Strategy strategy, const PilotConfig& pilot, const Pose& at = Pose{}, Cell target = Cell{},
+                    const CellSet* shut = nullptr);
   // Feeds one event of the running run and returns what to do next (Done once it is over).
   DriveAction step(const DriveEvent& e);
   // Drops the run (the map stays): the explorer and its pilot are gone.

@@ -61,9 +61,7 @@ bool Pilot::firstWall(Dir d, Cell& wall, int16_t& k) const {
 bool Pilot::knownWall(Dir d, int32_t& faceMm, Cell& c) const {
   int16_t k = 0;
   if (!firstWall(d, c, k) || explorer_.map().evidence(c) < config_.minWallEvidence) return false;
-  for (uint16_t i = 0; i < virtualCount_; ++i) {
-    if (virtual_[i] == c) return false;
-  }
+  if (virtual_ != nullptr && virtual_->contains(c)) return false;
   faceMm = (2 * k - 1) * cellMm_ / 2 - static_cast<int32_t>(explorer_.config().geometry.mountCm) * 10;
   return true;
 }

@@ -3,6 +3,7 @@
 
 #include "common/explore/Counters.hpp"
 #include "common/explore/Explorer.hpp"
+#include "common/grid/CellSet.hpp"
 #include "common/motion/DriveAction.hpp"
 #include "common/motion/DriveEvent.hpp"
 #include "common/motion/PoseTracker.hpp"
@@ -56,12 +57,9 @@ class Pilot {
   bool finished() const { return phase_ == Phase::Done; }
 
   // Cells the caller holds closed without their being walls (a doorway kept shut while a room is
-  // mapped): never a landmark for a pose reading. Non-owning: the caller keeps the array alive and
-  // calls again whenever it changes (nullptr, 0: none).
-  void setVirtualWalls(const Cell* cells, uint16_t count) {
-    virtual_ = cells;
-    virtualCount_ = count;
-  }
+  // mapped): never a landmark for a pose reading. Non-owning: the set must outlive the pilot or be
+  // replaced (nullptr: none).
+  void setVirtualWalls(const CellSet* cells) { virtual_ = cells; }
 
   // The rotation that takes the known heading error out (Done when there is none worth a turn):
   // for handing the robot over to another pilot, whose tracker starts exactly on the axis.
@@ -103,12 +101,11 @@ class Pilot {
   int32_t cellMm_;
   int16_t poseCells_;  // cells out to which known walls are pose landmarks (>= the mapping range's)
   Phase phase_ = Phase::Idle;
-  Action pending_;                 // the explorer's action being carried out
-  int32_t commandMrad_ = 0;        // rotation in progress
-  int32_t driveMm_ = 0;            // drive in progress
-  uint8_t readHere_ = 0;           // bit per Dir: read since the robot last moved
-  const Cell* virtual_ = nullptr;  // see setVirtualWalls
-  uint16_t virtualCount_ = 0;
+  Action pending_;                    // the explorer's action being carried out
+  int32_t commandMrad_ = 0;           // rotation in progress
+  int32_t driveMm_ = 0;               // drive in progress
+  uint8_t readHere_ = 0;              // bit per Dir: read since the robot last moved
+  const CellSet* virtual_ = nullptr;  // see setVirtualWalls
   // The current straight run (since the last quarter turn): mm driven along it and the dead-reckoned
   // sideways drift to the right of it (mm), and per side the last good reading of the wall there.
   struct SideMark {

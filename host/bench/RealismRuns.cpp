@@ -84,6 +84,8 @@ mapping::MapScore runHouse(const RealismSet& set, const RealismStart& st, const 
   c.noise = v.noise;
   c.seed = seed;
   c.strategy = strategy;
+  // Houses at the published robot's 10 cm cells need a grid larger than the brick's (see HouseBench).
+  if (c.robot->cellCm < 20) c.grid = *mapping::GridCapacity::ofCells(128);
   house::HouseMapper m(*st.site, c);
   m.run();
   agreementPct = house::scoreHouse(m).agreementPct();

@@ -1,9 +1,9 @@
-// HouseMapper: maps a house in the simulator room by room (method section 5): map the room
-// (RoomRun), record its exits; then pick the nearest unexplored exit, plan to it over what is
-// known, pass through, start a new room map with its origin at the entrance, map it and record
-// the gateway; repeat until no unexplored exit is left. An exit that leads into a room already
-// mapped becomes a gateway to it without a new run. One simulated robot keeps its true pose
-// throughout; everything the mapper decides uses only its believed pose and its maps.
+// HouseMapper: maps a house in the simulator, room by room (method section 5), by running the one
+// house logic over the simulated robot: the PC's HousePlanner decides (which exit next, the rooms'
+// network, relocalisation) and the brick's RoomSession carries its orders out (map the room, kept in
+// it; travel; cross a doorway; scan) on the common explorer stack, exactly as on the brick. This
+// runner only carries actions out on the simulated robot and hands reports back: no decision is
+// made here. One simulated robot keeps its true pose throughout.
 #pragma once
 
 #include <cstdint>
@@ -12,13 +12,17 @@
 #include "common/explore/Counters.hpp"
 #include "common/interpret/Doorway.hpp"
 #include "common/interpret/RoomInterpretation.hpp"
-#include "host/house/RoomRun.hpp"
-#include "host/house/StartAnchor.hpp"
+#include "common/explore/ExplorerStack.hpp"
+#include "common/house/RoomConfinement.hpp"
+#include "common/house/RoomSession.hpp"
+#include "host/house/HousePlanner.hpp"
+#include "host/mapping/ExplorerBuffer.hpp"
 #include "host/mapping/FrameTransform.hpp"
 #include "host/mapping/Strategy.hpp"
 #include "host/network/HouseNetwork.hpp"
 #include "host/sim/NoiseProfile.hpp"
 #include "host/sim/RobotPlacement.hpp"
+#include "host/sim/SimRobot.hpp"
 #include "host/sim/Site.hpp"
 #include "host/sim/World.hpp"
 
@@ -55,6 +59,8 @@ struct HouseConfig {
   // finished start room; a whole-cell shift under which they fit again (and do not as mapped) moves
   // the start room's frame and the belief with it (see StartAnchor). false: off.
   bool anchorStart = true;
+  // The explorer's grid: the brick's 64 x 64 cells unless chosen otherwise.
+  mapping::GridCapacity grid = mapping::GridCapacity::brick();
 };
 
 struct HouseCounters {
@@ -74,16 +80,14 @@ class HouseMapper {
   // Maps the whole house (every exit reachable from the start). Returns the number of rooms.
   int run();
 
-  const network::HouseNetwork& network() const { return network_; }
-  network::HouseNetwork& network() { return network_; }
-  const HouseCounters& counters() const { return counters_; }
-  int exitsFound() const { return exitsFound_; }
-  int exitsUnreached() const { return exitsUnreached_; }    // exits the robot could not get through
-  int relocalisations() const { return relocalisations_; }  // beliefs moved by a standing scan (see HouseConfig)
-  Cell startShift() const {
-    return startShift_;
-  }  // the start room's frame moved by this (see HouseConfig::anchorStart)
-  int openingsTried() const { return static_cast<int>(openingsTried_.size()); }  // see HouseConfig::maxOpenings
+  const network::HouseNetwork& network() const { return planner_.network(); }
+  network::HouseNetwork& network() { return planner_.network(); }
+  HouseCounters counters() const;
+  int exitsFound() const { return planner_.exitsFound(); }
+  int exitsUnreached() const { return planner_.exitsUnreached(); }    // exits the robot could not get through
+  int relocalisations() const { return planner_.relocalisations(); }  // beliefs moved by a standing scan
+  Cell startShift() const { return planner_.startShift(); }           // see HouseConfig::anchorStart
+  int openingsTried() const { return planner_.openingsTried(); }      // see HouseConfig::maxOpenings
   const sim::SimRobot& robot() const { return robot_; }
   const sim::World& world() const { return world_; }
   const HouseConfig& config() const { return config_; }
@@ -92,50 +96,25 @@ class HouseMapper {
   const mapping::FrameTransform& houseFrame() const { return frame_; }
 
  private:
-  struct Pending {
-    int room;
-    RoomExit exit;  // in the room's frame
-  };
-  void mapRoom(const std::vector<Cell>& entranceHouse, int fromRoom, const RoomExit* via);
-  bool leadsToMappedRoom(const Pending& p);
-  void mapPendingExits();  // maps rooms through the pending exits, nearest first, until none is reachable
-  bool queueOpening();     // an opening onto unmapped space as the next exit (false: none, or the limit)
-  // With NXTMAP_HOUSE_DEBUG set: the believed cell against the simulated robot's true position.
-  void debugBelief(const char* when) const;
-  // What travel may use: the rooms' maps and all the room runs saw (beyond their exits too).
-  network::RoomMap knownForTravel() const;
-  // Drives to a house cell over the known rooms with the pilot (pose corrections); false when not there.
-  bool travelTo(Cell target, const network::RoomMap& known);
-  bool step(Dir d);
-  // Drives to the exit's inside cell and through it; false when blocked on the way.
-  bool passExit(Cell inside, Dir outward, int depth, const network::RoomMap& known);
-  // Reads the four sides and moves belief_.cell to the whole-cell shift that explains them best
-  // (StandingScan); `blocked`: the direction a move just failed in (nullptr: none). True when the
-  // belief moved.
-  bool relocalise(const network::RoomMap& known, const Dir* blocked);
-  PilotConfig pilotConfig() const;  // for the next pilot: starts with the heading uncertainty handed over
-  // The start room's frame moved by the whole cells under which its start readings fit its map again
-  // (StartAnchor); the given frame when they fit already or no shift is clear. Sets startShift_.
-  network::RoomTransform anchoredStart(const RoomRun& run, const network::RoomTransform& toHouse);
-
   HouseMapper(sim::RobotPlacement placed, const HouseConfig& config);
+  // Carries an order out with the session on the simulated robot; the brick's report of it.
+  HouseReport carryOut(const HouseOrder& o);
+  void drive(DriveAction a);               // until the session's command is over
+  void load(const network::RoomMap& map);  // the brick's map replaced (as an upload from the PC)
+  HouseReport report(HouseReport::Kind kind) const;
+  void logBelief(const char* when) const;  // the believed cell against the simulated robot's (log debug)
 
   sim::World world_;  // the truth on the robot's grid
   HouseConfig config_;
   ExplorerConfig explorerConfig_;
   mapping::FrameTransform frame_;
   sim::SimRobot robot_;
-  std::vector<network::RoomNode> seen_;  // each room run's uncut map and frame
-  network::HouseNetwork network_;
-  HouseCounters counters_;
-  Pose belief_;                  // in the house frame
-  int64_t headingVariance_ = 0;  // mrad^2: how well the robot's heading is known between pilots
-  std::vector<Pending> pending_;
-  std::vector<Cell> openingsTried_;  // inside cells (house frame) of the openings taken as exits
-  int exitsFound_ = 0;
-  int exitsUnreached_ = 0;
-  int relocalisations_ = 0;
-  Cell startShift_{0, 0};
+  mapping::ExplorerBuffer memory_;
+  ExplorerStack stack_;
+  std::vector<uint8_t> reachBits_;
+  RoomConfinement confinement_;
+  RoomSession session_;
+  HousePlanner planner_;
 };
 
 }  // namespace nxtmap::house

@@ -75,6 +75,7 @@ TEST(HouseRoute, HouseExpoPlanRoutesAndLabels) {
   const HousePlanLoad l = loadHouseExpo(kRoot + "houseexpo/house_expo_room_0000.json");
   ASSERT_TRUE(l.plan) << l.error;
   HouseConfig config;
+  config.grid = *mapping::GridCapacity::ofCells(128);  // 10 cm cells: its 8 m rooms need more than the brick's grid
   ASSERT_TRUE(defaultStart(*l.plan, config.startCol, config.startRow));
   routesBetweenAllRooms(l.plan->world, config, 4);
 
