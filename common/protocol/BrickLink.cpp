@@ -101,7 +101,19 @@ void BrickLink::handleCommand(const PacketHeader& h, const uint8_t* p, size_t n)
   c.seq = h.seq;
   bool valid = n == 0;
   switch (h.op) {
-    case Op::Explore: c.kind = CommandKind::Explore; break;
+    case Op::Explore:
+      c.kind = CommandKind::Explore;
+      new (&c.explore) ExploreMsg();
+      valid = n == 0 || decodeExplore(p, n, c.explore);  // empty: the frontier explorer, not confined
+      break;
+    case Op::GoTo:
+      c.kind = CommandKind::GoTo;
+      valid = decodeGoTo(p, n, *new (&c.goTo) GoToMsg());
+      break;
+    case Op::EnterRoom:
+      c.kind = CommandKind::EnterRoom;
+      valid = decodeEnterRoom(p, n, *new (&c.enterRoom) EnterRoomMsg());
+      break;
     case Op::Stop: c.kind = CommandKind::Stop; break;
     case Op::RequestMap:
       if (valid) {
@@ -227,7 +239,8 @@ bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out) 
   if (roomPending_ || lastRoom_ != report.roomId) {
     roomPending_ = false;
     lastRoom_ = report.roomId;
-    encodeNewRoom(NewRoomMsg{report.roomId, report.roomEntry}, p);
+    encodeNewRoom(NewRoomMsg{report.roomId, report.roomEntry, report.fromRoom, report.roomOrigin, report.roomHeading},
+                  p);
     return send(Op::NewRoom, false, p, out);
   }
   if (batteryDue_) {
@@ -243,6 +256,7 @@ bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out) 
     posePending_ = pathPending_ = true;
     countersPhase_ = !countersPhase_;
     countersDue_ = countersPhase_;
+    exitsDue_ = report.exits != nullptr;
     StatusMsg s;
     s.mode = report.mode;
     s.pose = report.pose;
@@ -257,6 +271,14 @@ bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out) 
     countersDue_ = false;
     encodeCounters(CountersMsg{report.counters, counters_}, p);
     return send(Op::Counters, false, p, out);
+  }
+  if (exitsDue_ && report.exits != nullptr) {
+    // The room's end is told once the PC holds all of its map: nothing pending, nothing in flight.
+    exitsDue_ = false;
+    RoomExitsMsg m = *report.exits;
+    if (sync_.pending() || sync_.inFlight() > 0) m.end = ExplorerEnd::Running;
+    encodeRoomExits(m, p);
+    return send(Op::RoomExits, false, p, out);
   }
   if (scanNow_ || nowMs - lastScanMs_ >= config_.deltaPeriodMs) {
     lastScanMs_ = nowMs;

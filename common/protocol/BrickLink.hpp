@@ -22,7 +22,13 @@ struct BrickReport {
   uint16_t batteryMillivolts = 0;
   uint16_t roomId = 0;
   Cell roomEntry{};
+  uint16_t fromRoom = 0;  // the room the robot came from, and the new room's origin and +y in its frame
+  Cell roomOrigin{};
+  Dir roomHeading = Dir::North;
   PathProgressMsg path;
+  // Mapping a house: the exits of the room being mapped (nullptr: not mapping a house). Its `end`
+  // goes out as Running until the PC holds every cell of the room's map (see BrickLink::transmit).
+  const RoomExitsMsg* exits = nullptr;
 };
 
 struct BrickLinkConfig {
@@ -106,6 +112,7 @@ class BrickLink {
   uint32_t lastScanMs_ = 0;
   bool statusSent_ = false;
   bool countersDue_ = false, countersPhase_ = false;
+  bool exitsDue_ = false;  // RoomExits, every status period while mapping a house
   uint32_t lastStatusMs_ = 0;
   bool stateDue_ = false;
   bool posePending_ = false, pathPending_ = false, roomPending_ = false;

@@ -21,7 +21,23 @@ uint16_t Session::enqueue(Op op, const Payload& payload) {
   return nextSeq_;
 }
 
-uint16_t Session::explore() { return enqueue(Op::Explore, Payload{}); }
+uint16_t Session::explore(const ExploreMsg& how) {
+  Payload p;
+  encodeExplore(how, p);
+  return enqueue(Op::Explore, p);
+}
+
+uint16_t Session::goTo(uint16_t goalId, Cell target) {
+  Payload p;
+  if (encodeGoTo(GoToMsg{goalId, target}, p) == 0) throw std::invalid_argument("the goal's cell is out of range");
+  return enqueue(Op::GoTo, p);
+}
+
+uint16_t Session::enterRoom(const EnterRoomMsg& m) {
+  Payload p;
+  if (encodeEnterRoom(m, p) == 0) throw std::invalid_argument("the doorway does not fit a packet");
+  return enqueue(Op::EnterRoom, p);
+}
 uint16_t Session::stop() { return enqueue(Op::Stop, Payload{}); }
 uint16_t Session::requestMap() { return enqueue(Op::RequestMap, Payload{}); }
 
@@ -251,6 +267,11 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
         room_ = m;
         noteRoom(m.roomId);
       }
+      break;
+    }
+    case Op::RoomExits: {
+      RoomExitsMsg m;
+      if (decodeRoomExits(v.payload, v.payloadSize, m)) roomExits_ = m;
       break;
     }
     case Op::Battery: {

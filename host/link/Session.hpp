@@ -70,7 +70,13 @@ class Session {
   void linkLost();
 
   // Commands, queued and sent in order. Each returns its sequence number.
-  uint16_t explore();
+  // Explore: the frontier explorer, not confined, unless `how` says otherwise.
+  uint16_t explore(const protocol::ExploreMsg& how = protocol::ExploreMsg{});
+  // Mapping a house: drive to a cell of the brick's map (progress as PathProgress with pathId =
+  // goalId); cross a doorway and map the room beyond it. Throw std::invalid_argument when the
+  // message cannot be encoded.
+  uint16_t goTo(uint16_t goalId, Cell target);
+  uint16_t enterRoom(const protocol::EnterRoomMsg& m);
   uint16_t stop();
   // A path of 8-neighbour cells (cell 0 = the robot's cell), at most kMaxPathCells cells.
   // Throws std::invalid_argument for an empty, too long or broken path.
@@ -98,6 +104,8 @@ class Session {
   const std::optional<Pose>& pose() const { return pose_; }
   const std::optional<protocol::PathProgressMsg>& pathProgress() const { return path_; }
   const std::optional<protocol::NewRoomMsg>& room() const { return room_; }
+  // The exits of the room the brick maps as part of a house, as last reported.
+  const std::optional<protocol::RoomExitsMsg>& roomExits() const { return roomExits_; }
   // The brick's room counter as last reported (none before the first report).
   const std::optional<uint16_t>& roomId() const { return roomId_; }
   // Room changes since the last call, oldest first.
@@ -156,6 +164,7 @@ class Session {
   std::optional<uint16_t> stashRoom_;
   std::optional<protocol::PathProgressMsg> path_;
   std::optional<protocol::NewRoomMsg> room_;
+  std::optional<protocol::RoomExitsMsg> roomExits_;
   std::optional<uint16_t> battery_;
   std::optional<uint16_t> legoBattery_;
   std::optional<protocol::HelloReplyMsg> hello_;
