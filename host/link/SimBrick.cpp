@@ -61,15 +61,13 @@ SimBrick::SimBrick(const sim::Site& site, const SimBrickConfig& config)
 SimBrick::SimBrick(sim::RobotPlacement placed, const SimBrickConfig& config)
     : world_(std::move(placed.truth)),
       config_(placedConfig(placed, config)),
-      explorerConfig_(explorerConfigFor(world_, config_.run, placed.robot.mountCm)),
       frame_(config_.run.startCol, config_.run.startRow, config_.run.heading),
       robot_(placed.scene, placed.robot, placed.grid.frame, placed.start.cm, placed.start.headingDeg, config_.run.noise,
              config_.run.seed, config_.run.sensorReachCm),
-      storage_(std::make_unique<Storage>()),
-      map_(std::make_unique<MapLayers>(storage_->map.view(), Storage::kWidth(), Storage::kHeight())),
-      planner_(std::make_unique<TravelPlanner>(storage_->travel.view(), Storage::kWidth(), Storage::kHeight())),
-      shadow_(packedBytes(map_->grid().capacityWidth(), map_->grid().capacityHeight(), 2)),
-      link_(map_->grid(), shadow_.data(), config.link) {}
+      buffer_(config_.run.grid),
+      stack_(buffer_.memory(), explorerConfigFor(world_, config_.run, placed.robot.mountCm)),
+      shadow_(packedBytes(stack_.map().grid().capacityWidth(), stack_.map().grid().capacityHeight(), 2)),
+      link_(stack_.map().grid(), shadow_.data(), config.link) {}
 
 SimBrick::~SimBrick() = default;
 
@@ -77,11 +75,11 @@ void SimBrick::receive(const uint8_t* data, size_t size) {
   for (size_t i = 0; i < size; ++i) link_.receive(data[i]);
 }
 
-Pose SimBrick::pose() const { return explorer_ != nullptr ? explorer_->pose() : restPose_; }
+Pose SimBrick::pose() const { return stack_.explorer() != nullptr ? stack_.explorer()->pose() : restPose_; }
 
-Counters SimBrick::counters() const { return pilot_ ? pilot_->counters() : Counters{}; }
+Counters SimBrick::counters() const { return stack_.counters(); }
 
-bool SimBrick::finished() const { return pilot_ && pilot_->finished(); }
+bool SimBrick::finished() const { return stack_.finished(); }
 
 void SimBrick::trueCell(int& col, int& row) const {
   col = robot_.col();
@@ -129,34 +127,20 @@ void SimBrick::setPose(const Pose& p) {
   frame_.toWorld(before.cell, col, row);
   frame_ = frameThrough(p.cell, p.heading, col, row, frame_.toWorld(before.heading));
   restPose_ = p;
-  pilot_.reset();
-  explorer_ = nullptr;
+  stack_.end();
 }
 
 void SimBrick::startExploring() {
-  if (pilot_ && !pilot_->finished()) {
+  if (stack_.running() && !stack_.finished()) {
     mode_ = BrickMode::Exploring;  // resume: the cut-short action carries on
     return;
   }
   // A new run on the map as it is, from where the robot stands.
-  const Pose here = pose();
-  restPose_ = here;
-  pilot_.reset();
-  explorer_ = nullptr;
-  propagation_.reset();
-  frontier_.reset();
-  if (config_.run.strategy == mapping::Strategy::Propagation) {
-    propagation_ = std::make_unique<PropagationExplorer>(*map_, *planner_, explorerConfig_);
-    explorer_ = propagation_.get();
-  } else {
-    frontier_ = std::make_unique<FrontierExplorer>(*map_, *planner_, explorerConfig_);
-    explorer_ = frontier_.get();
-  }
+  restPose_ = pose();
   PilotConfig pilot;
   pilot.correct = config_.run.poseCorrection;
-  pilot_ = std::make_unique<Pilot>(*explorer_, pilot);
-  pending_ = pilot_->step(DriveEvent::startAt(here));
-  mode_ = pilot_->finished() ? BrickMode::Done : BrickMode::Exploring;
+  pending_ = stack_.start(config_.run.strategy, pilot, restPose_);
+  mode_ = stack_.finished() ? BrickMode::Done : BrickMode::Exploring;
 }
 
 void SimBrick::takeMapChunk(const MapChunkMsg& chunk) {
@@ -164,16 +148,15 @@ void SimBrick::takeMapChunk(const MapChunkMsg& chunk) {
   stopMoving();
   if (chunk.chunkIndex == 0) {
     restPose_ = pose();  // the robot stays where it is on the PC's map (same frame)
-    pilot_.reset();
-    explorer_ = nullptr;
-    map_->clear();
+    stack_.end();
+    stack_.map().clear();
   }
   for (uint16_t i = 0; i < chunk.count; ++i) {
     const CellState st = chunk.state(i);
     if (st == CellState::Free)
-      (void)map_->markVisited(chunk.cellOf(i));
+      (void)stack_.map().markVisited(chunk.cellOf(i));
     else if (st == CellState::Occupied)
-      (void)map_->markBlocked(chunk.cellOf(i));
+      (void)stack_.map().markBlocked(chunk.cellOf(i));
   }
   if (chunk.chunkIndex + 1 >= chunk.chunkCount) link_.mapRestarted();
 }
@@ -185,9 +168,8 @@ void SimBrick::newRoom() {
   frame_.toWorld(before.cell, col, row);
   frame_ = mapping::FrameTransform(col, row, frame_.toWorld(before.heading));
   restPose_ = Pose{};
-  pilot_.reset();
-  explorer_ = nullptr;
-  map_->clear();
+  stack_.end();
+  stack_.map().clear();
   link_.mapRestarted();
   ++roomId_;
   mode_ = BrickMode::Idle;
@@ -210,8 +192,7 @@ void SimBrick::carryOut(const Command& c) {
       }
       // The path moves the robot: the run (if any) no longer knows where it is.
       restPose_ = here;
-      pilot_.reset();
-      explorer_ = nullptr;
+      stack_.end();
       mode_ = BrickMode::Following;
       if (c.path.count == 1) {
         path_.state = PathState::Reached;
@@ -221,6 +202,8 @@ void SimBrick::carryOut(const Command& c) {
     }
     case CommandKind::MapChunk: takeMapChunk(c.chunk); break;
     case CommandKind::SetPose: setPose(c.pose); break;
+    case CommandKind::GoTo:  // mapping a house: wired with the house session
+    case CommandKind::EnterRoom: break;
   }
 }
 
@@ -265,15 +248,15 @@ void SimBrick::followOne() {
 }
 
 void SimBrick::exploreOne() {
-  if (!pilot_ || pilot_->finished()) {
+  if (!stack_.running() || stack_.finished()) {
     mode_ = BrickMode::Done;
     return;
   }
   // The core's thinking slices cost no robot time here (the brick spends about 1 ms on each).
   do {
-    pending_ = pilot_->step(mapping::carryOutOnRobot(robot_, pending_, explorerConfig_.geometry));
-  } while (!pilot_->finished() && pending_.kind == DriveAction::Kind::Think);
-  if (pilot_->finished() || pending_.kind == DriveAction::Kind::Done) mode_ = BrickMode::Done;
+    pending_ = stack_.step(mapping::carryOutOnRobot(robot_, pending_, stack_.config().geometry));
+  } while (!stack_.finished() && pending_.kind == DriveAction::Kind::Think);
+  if (stack_.finished() || pending_.kind == DriveAction::Kind::Done) mode_ = BrickMode::Done;
 }
 
 void SimBrick::step(uint32_t nowMs) {

@@ -18,11 +18,9 @@
 #include <optional>
 #include <vector>
 
-#include "common/explore/ExplorerStorage.hpp"
-#include "common/explore/FrontierExplorer.hpp"
-#include "common/explore/PropagationExplorer.hpp"
-#include "common/motion/Pilot.hpp"
+#include "common/explore/ExplorerStack.hpp"
 #include "common/protocol/BrickLink.hpp"
+#include "host/mapping/ExplorerBuffer.hpp"
 #include "host/mapping/FrameTransform.hpp"
 #include "host/mapping/MappingRun.hpp"
 #include "host/sim/RobotPlacement.hpp"
@@ -32,7 +30,7 @@
 namespace nxtmap::link {
 
 struct SimBrickConfig {
-  mapping::RunConfig run;  // start cell and heading in the world, noise, strategy, ...
+  mapping::RunConfig run;  // start cell and heading in the world, noise, strategy, grid (the brick's), ...
   uint32_t actionMs = 20;  // one explorer action (read / move / turn) every this many ms
   uint32_t cellMs = 100;   // path following: one cell every this many ms
   uint16_t batteryMillivolts = 7800;
@@ -41,9 +39,6 @@ struct SimBrickConfig {
 
 class SimBrick {
  public:
-  // Host capacity: rooms up to 128 x 128 cells.
-  using Storage = ExplorerStorage<128, 128, 8192>;
-
   // The robot set down in `site` as config.run says (start, robot, jitter, noise); the site's scene is shared.
   SimBrick(const sim::Site& site, const SimBrickConfig& config);
   SimBrick(const sim::World& world, const SimBrickConfig& config);
@@ -58,7 +53,7 @@ class SimBrick {
   // The Left button: a new room starts where the robot stands (empty map, pose (0,0) facing +y).
   void newRoom();
 
-  const RoomGrid& grid() const { return map_->grid(); }
+  const RoomGrid& grid() const { return stack_.map().grid(); }
   protocol::BrickMode mode() const { return mode_; }
   const protocol::BrickLink& link() const { return link_; }
   // The current run's explorer counters (zero before the first Explore), as the brick reports them.
@@ -91,18 +86,12 @@ class SimBrick {
 
   sim::World world_;  // the truth on the robot's grid
   SimBrickConfig config_;
-  ExplorerConfig explorerConfig_;
   mapping::FrameTransform frame_;  // the brick map's frame -> world cells (changes with SetPose / new room)
   sim::SimRobot robot_;
-  std::unique_ptr<Storage> storage_;
-  std::unique_ptr<MapLayers> map_;
-  std::unique_ptr<TravelPlanner> planner_;
-  std::unique_ptr<PropagationExplorer> propagation_;
-  std::unique_ptr<FrontierExplorer> frontier_;
-  Explorer* explorer_ = nullptr;  // the current run's, or none (a new run starts at restPose_)
-  std::unique_ptr<Pilot> pilot_;
-  DriveAction pending_{};  // the action the pilot asked for last
-  Pose restPose_{};        // where the robot stands when no run holds its pose
+  mapping::ExplorerBuffer buffer_;  // the memory of stack_, of config_.run.grid's capacity
+  ExplorerStack stack_;             // the room map and the current run (none: a new run starts at restPose_)
+  DriveAction pending_{};           // the action the pilot asked for last
+  Pose restPose_{};                 // where the robot stands when no run holds its pose
   std::vector<uint8_t> shadow_;
   protocol::BrickLink link_;
   protocol::BrickMode mode_ = protocol::BrickMode::Idle;

@@ -8,7 +8,9 @@
 namespace nxtmap::link {
 
 SimTransport::SimTransport(const LinkSpec& spec, double speed, const SimTransportOptions& options)
-    : description_(spec.text), speed_(speed), start_(std::chrono::steady_clock::now()) {
+    : description_(spec.text + (options.grid.isBrick() ? "" : " (grid " + options.grid.describe() + ")")),
+      speed_(speed),
+      start_(std::chrono::steady_clock::now()) {
   worlds::SiteLoad load = worlds::loadSite(spec.address, options.robot ? options.robot->cellCm : 10);
   if (!load.site) throw LinkError(load.error);
   site_ = std::make_unique<sim::Site>(std::move(*load.site));
@@ -17,6 +19,7 @@ SimTransport::SimTransport(const LinkSpec& spec, double speed, const SimTranspor
   c.run.seed = options.seed;
   c.run.robot = options.robot;
   c.run.startJitterDeg = options.startJitterDeg;
+  c.run.grid = options.grid;
   const sim::World* raster = site_->raster ? &*site_->raster : nullptr;
   if (spec.col >= 0) {
     if (!raster) throw LinkError(spec.address + " is a world file: its start is its own (leave out @COL,ROW)");

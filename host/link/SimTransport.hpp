@@ -14,12 +14,14 @@
 
 namespace nxtmap::link {
 
-// How the stand-in's robot is simulated: the same choices as `nxtmap sim` (--noise, --robot, --start-jitter).
+// How the stand-in's robot is simulated: the same choices as `nxtmap sim` (--noise, --robot, --start-jitter,
+// --grid).
 struct SimTransportOptions {
   sim::NoiseProfile noise;  // default: ideal
   uint64_t seed = 1;
   std::optional<sim::RobotDescription> robot;  // empty: a point robot of the raster's cells (published)
   double startJitterDeg = 0.0;
+  mapping::GridCapacity grid = mapping::GridCapacity::brick();  // the stand-in's room grid
 };
 
 class SimTransport : public Transport {

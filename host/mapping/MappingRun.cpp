@@ -24,6 +24,22 @@ ExplorerConfig explorerConfigFor(const sim::World& truth, const RunConfig& c, in
   return e;
 }
 
+// A free cell of the map beside an unknown one the grid cannot hold: open space cut off by the grid's edge.
+bool openAtGridEdge(const RoomGrid& grid) {
+  const Bounds w = grid.window();
+  for (int16_t y = w.minY; y <= w.maxY; ++y) {
+    for (int16_t x = w.minX; x <= w.maxX; ++x) {
+      const Cell c{x, y};
+      if (!grid.isFree(c)) continue;
+      for (const Dir d : {Dir::North, Dir::East, Dir::South, Dir::West}) {
+        const Cell n = advance(c, d);
+        if (grid.isUnknown(n) && !grid.fits(n)) return true;
+      }
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 MappingRun::MappingRun(const sim::Site& site, const RunConfig& config)
@@ -50,38 +66,26 @@ MappingRun::MappingRun(const sim::World& world, const RunConfig& config)
 MappingRun::MappingRun(Setup setup, const RunConfig&)
     : config_(setup.config),
       truth_(std::move(setup.placed.truth)),
-      explorerConfig_(explorerConfigFor(truth_, config_, setup.placed.robot.mountCm)),
       frame_(config_.startCol, config_.startRow, config_.heading),
       robot_(setup.placed.scene, setup.placed.robot, setup.placed.grid.frame, setup.placed.start.cm,
              setup.placed.start.headingDeg, config_.noise, config_.seed, config_.sensorReachCm),
-      storage_(std::make_unique<Storage>()) {
-  map_ = std::make_unique<MapLayers>(storage_->map.view(), Storage::kWidth(), Storage::kHeight());
-  planner_ = std::make_unique<TravelPlanner>(storage_->travel.view(), Storage::kWidth(), Storage::kHeight());
-  if (config_.strategy == Strategy::Propagation) {
-    propagation_ = std::make_unique<PropagationExplorer>(*map_, *planner_, explorerConfig_);
-    explorer_ = propagation_.get();
-  } else {
-    frontier_ = std::make_unique<FrontierExplorer>(*map_, *planner_, explorerConfig_);
-    explorer_ = frontier_.get();
-  }
+      buffer_(config_.grid),
+      stack_(buffer_.memory(), explorerConfigFor(truth_, config_, setup.placed.robot.mountCm)) {
   PilotConfig pilot;
   pilot.correct = config_.poseCorrection;
-  pilot_ = std::make_unique<Pilot>(*explorer_, pilot);
-  last_ = pilot_->step(DriveEvent::start());
+  last_ = stack_.start(config_.strategy, pilot);
 }
 
 MappingRun::~MappingRun() = default;
 
-const PropagationExplorer* MappingRun::propagation() const { return propagation_.get(); }
-
 DriveEvent MappingRun::carryOut(const DriveAction& a) {
-  return carryOutOnRobot(robot_, a, explorerConfig_.geometry, config_.sensorsTogether);
+  return carryOutOnRobot(robot_, a, stack_.config().geometry, config_.sensorsTogether);
 }
 
 bool MappingRun::step() {
-  if (pilot_->finished()) return false;
-  last_ = pilot_->step(carryOut(last_));
-  return !pilot_->finished();
+  if (stack_.finished()) return false;
+  last_ = stack_.step(carryOut(last_));
+  return !stack_.finished();
 }
 
 uint64_t MappingRun::runToEnd() {
@@ -90,10 +94,14 @@ uint64_t MappingRun::runToEnd() {
   return n;
 }
 
-CellState MappingRun::belief(int col, int row) const { return map_->at(frame_.toExplorer(col, row)); }
+bool MappingRun::metGridEdge() const {
+  return explorer().end() == ExplorerEnd::GridFull || openAtGridEdge(stack_.map().grid());
+}
 
-void MappingRun::believedCell(int& col, int& row) const { frame_.toWorld(explorer_->pose().cell, col, row); }
+CellState MappingRun::belief(int col, int row) const { return stack_.map().at(frame_.toExplorer(col, row)); }
 
-sim::Heading MappingRun::believedHeading() const { return frame_.toWorld(explorer_->pose().heading); }
+void MappingRun::believedCell(int& col, int& row) const { frame_.toWorld(explorer().pose().cell, col, row); }
+
+sim::Heading MappingRun::believedHeading() const { return frame_.toWorld(explorer().pose().heading); }
 
 }  // namespace nxtmap::mapping

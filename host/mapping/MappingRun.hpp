@@ -1,13 +1,10 @@
 #pragma once
 #include <cstdint>
-#include <memory>
 #include <string>
 
-#include "common/explore/ExplorerStorage.hpp"
-#include "common/explore/FrontierExplorer.hpp"
-#include "common/explore/PropagationExplorer.hpp"
-#include "common/motion/Pilot.hpp"
+#include "common/explore/ExplorerStack.hpp"
 #include "common/sensing/RangeFilter.hpp"
+#include "host/mapping/ExplorerBuffer.hpp"
 #include "host/mapping/FrameTransform.hpp"
 #include "host/mapping/Strategy.hpp"
 #include "host/sim/NoiseProfile.hpp"
@@ -41,15 +38,15 @@ struct RunConfig {
   // The firmware pings one sensor at a time (single shot, SonarSequencer); true fires every read as if the
   // other sensors pinged at the same moment (continuous mode), so their cross-talk shows.
   bool sensorsTogether = false;
+  // The room grid the explorer maps into: the brick's 64 x 64 cells unless chosen otherwise. A room wider
+  // than the grid is mapped up to the grid's edge and the run ends GridFull, as on the brick.
+  GridCapacity grid = GridCapacity::brick();
 };
 
 // One mapping run: the common core's explorer and pilot driven by the simulated robot, exactly as
 // the firmware drives them with the real drivers (read -> filter samples -> event, rotate, drive).
 class MappingRun {
  public:
-  // Host capacity: rooms up to 128 x 128 cells.
-  using Storage = ExplorerStorage<128, 128, 8192>;
-
   // A run in `site` (kept alive by the run through its scene; its raster is copied).
   MappingRun(const sim::Site& site, const RunConfig& config);
   // A run in a raster world: the world traced into a scene (the published set-up).
@@ -61,19 +58,24 @@ class MappingRun {
   // Runs until the explorer is done; returns the number of actions carried out.
   uint64_t runToEnd();
 
-  const Explorer& explorer() const { return *explorer_; }
-  const PropagationExplorer* propagation() const;
-  Counters counters() const { return pilot_->counters(); }
-  bool finished() const { return pilot_->finished(); }
+  const Explorer& explorer() const { return *stack_.explorer(); }
+  const PropagationExplorer* propagation() const { return stack_.propagation(); }
+  Counters counters() const { return stack_.counters(); }
+  bool finished() const { return stack_.finished(); }
   const DriveAction& lastAction() const { return last_; }
-  const Pilot& pilot() const { return *pilot_; }
+  const Pilot& pilot() const { return *stack_.pilot(); }
   const sim::SimRobot& robot() const { return robot_; }
   // The truth on the robot's grid (the safe rule: a cell holding any part of an obstacle is blocked).
   const sim::World& world() const { return truth_; }
   const sim::RobotDescription& robotDescription() const { return robot_.description(); }
   const RunConfig& config() const { return config_; }
   const FrameTransform& frame() const { return frame_; }
-  const ExplorerConfig& explorerConfig() const { return explorerConfig_; }
+  const ExplorerConfig& explorerConfig() const { return stack_.config(); }
+  const GridCapacity& grid() const { return buffer_.capacity(); }
+
+  // Whether the room met the grid's edge: the run ended GridFull (a reading or a move beyond the grid), or
+  // it left open space unmapped where the grid ends (the frontier explorer stops there and ends Complete).
+  bool metGridEdge() const;
 
   // The explorer's belief about a world cell (Unknown outside what it mapped).
   CellState belief(int col, int row) const;
@@ -88,16 +90,10 @@ class MappingRun {
 
   RunConfig config_;
   sim::World truth_;
-  ExplorerConfig explorerConfig_;
   FrameTransform frame_;
   sim::SimRobot robot_;
-  std::unique_ptr<Storage> storage_;
-  std::unique_ptr<MapLayers> map_;
-  std::unique_ptr<TravelPlanner> planner_;
-  std::unique_ptr<PropagationExplorer> propagation_;
-  std::unique_ptr<FrontierExplorer> frontier_;
-  Explorer* explorer_ = nullptr;
-  std::unique_ptr<Pilot> pilot_;
+  ExplorerBuffer buffer_;  // the memory of stack_, of config_.grid's capacity
+  ExplorerStack stack_;    // one run of config_.strategy, started in the constructor
   DriveAction last_;
 };
 

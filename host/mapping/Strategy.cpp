@@ -8,7 +8,14 @@ std::optional<Strategy> strategyByName(const std::string& name) {
   return std::nullopt;
 }
 
-std::string strategyName(Strategy s) { return s == Strategy::Propagation ? "propagation" : "frontier"; }
+std::string strategyName(Strategy s) {
+  switch (s) {
+    case Strategy::Propagation: return "propagation";
+    case Strategy::Frontier: return "frontier";
+    case Strategy::GoTo: return "goto";
+  }
+  return "?";
+}
 
 std::vector<std::string> strategyNames() { return {"propagation", "frontier"}; }
 
