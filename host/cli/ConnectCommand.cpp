@@ -37,6 +37,7 @@ CLI::App* addConnectCommand(CLI::App& app, ConnectOptions& o) {
                 "with --house: the room the brick stands in, by number (default 0); the brick's pose is read in "
                 "that room's frame");
   addWorldRunOptions(*c, o.run);
+  addGridOption(*c, o.run);
   c->add_option("--seed", o.seed, "sim: links only: random seed of the noise and the start jitter (default 1)");
   return c;
 }
@@ -54,15 +55,17 @@ int runConnect(const ConnectOptions& o) {
     throw CliError("connect: --speed only applies to sim: links");
   const WorldRunOptions defaults;
   if (spec.kind != link::LinkSpec::Kind::Sim &&
-      (o.run.noise != defaults.noise || o.run.robot != defaults.robot || o.run.startJitterDeg != 0.0 || o.seed != "1"))
+      (o.run.noise != defaults.noise || o.run.robot != defaults.robot || o.run.startJitterDeg != 0.0 || o.seed != "1" ||
+       o.run.grid != defaults.grid))
     throw CliError(
-        "connect: --noise, --robot, --start-jitter and --seed only apply to sim: links (a real or emulated "
+        "connect: --noise, --robot, --start-jitter, --grid and --seed only apply to sim: links (a real or emulated "
         "brick has its own)");
   link::SimTransportOptions simOptions;
   simOptions.noise = parseNoise(o.run.noise);
   simOptions.seed = parseSeed(o.seed);
   if (o.run.robot != defaults.robot) simOptions.robot = parseRobot(o.run.robot);
   simOptions.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
+  simOptions.grid = gridOf(o.run);
   // Checked before any arithmetic: NaN, infinities, huge or negative values would never end the wait.
   if (!(o.connectTimeoutS > 0 && o.connectTimeoutS <= kMaxConnectTimeoutS)) {
     throw CliError("connect: --connect-timeout must be a number of seconds in (0, 3600]");

@@ -19,7 +19,7 @@ struct ConnectOptions {
   bool live = true;        // redraw the map while the brick explores (terminals only)
   std::string house;       // a saved house directory to load (empty: none)
   int room = 0;            // with house: the room the brick stands in (its pose is in that room's frame)
-  WorldRunOptions run;     // sim: links: --noise, --robot, --start-jitter
+  WorldRunOptions run;     // sim: links: --noise, --robot, --start-jitter, --grid
   std::string seed = "1";  // sim: links: the noise's seed
 };
 

@@ -77,10 +77,19 @@ report::RunResult resultOf(const mapping::MappingRun& run) {
   return r;
 }
 
+report::RunResult resultOf(const mapping::MappingRun& run, const std::string& id, std::vector<GridFullRun>* gridFull) {
+  if (gridFull && run.metGridEdge()) {
+    gridFull->push_back(
+        GridFullRun{id, static_cast<int>(run.config().seed), run.world().width(), run.world().height()});
+  }
+  return resultOf(run);
+}
+
 mapping::RunConfig scenarioConfig(const report::Scenario& s, const SuiteSettings& settings, uint64_t seed) {
   mapping::RunConfig c = scenarioConfig(s, settings.strategy, parseNoise(settings.noise), seed);
   c.robot = settings.robot;
   c.startJitterDeg = settings.startJitterDeg;
+  c.grid = settings.grid;
   return c;
 }
 
@@ -106,7 +115,7 @@ report::ExperimentTable runSuite(const Suite& suite, mapping::Strategy strategy,
 }
 
 report::ExperimentTable runSuite(const Suite& suite, const SuiteSettings& settings, const Progress& progress,
-                                 size_t doneBefore, size_t total) {
+                                 size_t doneBefore, size_t total, std::vector<GridFullRun>* gridFull) {
   parseNoise(settings.noise);
   report::ExperimentTable table;
   table.strategy = mapping::strategyName(settings.strategy);
@@ -119,7 +128,9 @@ report::ExperimentTable runSuite(const Suite& suite, const SuiteSettings& settin
     row.scenario = s;
     for (int seed = 1; seed <= settings.seeds; ++seed) {
       if (progress) progress(done, total, s.id);
-      row.perSeed.push_back(runOnce(suite.site(s), scenarioConfig(s, settings, static_cast<uint64_t>(seed))));
+      mapping::MappingRun run(suite.site(s), scenarioConfig(s, settings, static_cast<uint64_t>(seed)));
+      run.runToEnd();
+      row.perSeed.push_back(resultOf(run, s.id, gridFull));
       ++done;
     }
     row.summarize();

@@ -28,13 +28,22 @@ struct Suite {
 // checked. Throws CliError naming the file (and line) on any problem.
 Suite loadSuite(const std::string& dirOrTsv, int cellCm = 10);
 
-// How a suite is run: one strategy, one noise preset, seeds 1..seeds, one robot, set down square or not.
+// How a suite is run: one strategy, one noise preset, seeds 1..seeds, one robot, set down square or not, on
+// one room grid (the brick's unless chosen otherwise).
 struct SuiteSettings {
   mapping::Strategy strategy = mapping::Strategy::Propagation;
   std::string noise = "ideal";
   int seeds = 1;
   sim::RobotDescription robot = *sim::robotByName("published");
   double startJitterDeg = 0.0;
+  mapping::GridCapacity grid = mapping::GridCapacity::brick();
+};
+
+// A run that met the grid's edge (MappingRun::metGridEdge): its room was larger than the grid.
+struct GridFullRun {
+  std::string id;  // the scenario's
+  int seed = 1;
+  int roomCols = 0, roomRows = 0;  // the room on the robot's grid, cells
 };
 
 // The published set-up for a scenario: 1 m range, initial heading N (a point robot of the raster's cells).
@@ -45,6 +54,8 @@ mapping::RunConfig scenarioConfig(const report::Scenario& s, const SuiteSettings
 
 // The figures of a finished run.
 report::RunResult resultOf(const mapping::MappingRun& run);
+// The same, and the run (id, seed, room) added to `gridFull` when it met the grid's edge (nullptr: not recorded).
+report::RunResult resultOf(const mapping::MappingRun& run, const std::string& id, std::vector<GridFullRun>* gridFull);
 // One full run.
 report::RunResult runOnce(const sim::World& world, const mapping::RunConfig& config);
 report::RunResult runOnce(const sim::Site& site, const mapping::RunConfig& config);
@@ -52,10 +63,11 @@ report::RunResult runOnce(const sim::Site& site, const mapping::RunConfig& confi
 using Progress = std::function<void(size_t done, size_t total, const std::string& id)>;
 
 // Every scenario of the suite, seeds 1..seeds each (the same seed list for every scenario).
-// `progress` is called before each run with the runs done so far and the total.
+// `progress` is called before each run with the runs done so far and the total; runs that met the grid's edge
+// are added to `gridFull` (when given).
 report::ExperimentTable runSuite(const Suite& suite, mapping::Strategy strategy, const std::string& noiseName,
                                  int seeds, const Progress& progress = {}, size_t doneBefore = 0, size_t total = 0);
 report::ExperimentTable runSuite(const Suite& suite, const SuiteSettings& settings, const Progress& progress = {},
-                                 size_t doneBefore = 0, size_t total = 0);
+                                 size_t doneBefore = 0, size_t total = 0, std::vector<GridFullRun>* gridFull = nullptr);
 
 }  // namespace nxtmap::cli

@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -30,6 +31,26 @@ void checkOutput(const std::string& path) {
   if (!fileio::resolveOutputTarget(path, error)) throw CliError(error);
 }
 
+// "N of M runs met the edge of the grid (a x2, b x1): the room is larger ..." for the runs that ended GridFull.
+std::string gridFullSummary(const std::vector<GridFullRun>& runs, size_t total, const mapping::GridCapacity& grid,
+                            int cellCm) {
+  std::vector<std::pair<std::string, int>> byScenario;  // runs per scenario, in the order first met
+  int cols = 0, rows = 0;
+  for (const GridFullRun& r : runs) {
+    auto it = std::find_if(byScenario.begin(), byScenario.end(), [&](const auto& s) { return s.first == r.id; });
+    if (it == byScenario.end()) it = byScenario.insert(byScenario.end(), {r.id, 0});
+    ++it->second;
+    cols = std::max(cols, r.roomCols);
+    rows = std::max(rows, r.roomRows);
+  }
+  std::ostringstream o;
+  o << "grid full: " << runs.size() << " of " << total << " runs met the grid's edge (";
+  for (size_t i = 0; i < byScenario.size(); ++i)
+    o << (i > 0 ? ", " : "") << byScenario[i].first << " x" << byScenario[i].second;
+  o << "): " << gridFullNote(grid, cellCm, cols, rows);
+  return o.str();
+}
+
 // Writes `text` to `path` whole or not at all.
 void writeOutput(const std::string& path, const std::string& text) {
   std::string error;
@@ -47,6 +68,7 @@ CLI::App* addExperimentsCommand(CLI::App& app, ExperimentsOptions& o) {
   ex->add_option("--markdown", o.markdown, "write a Markdown report");
   ex->add_option("--plots", o.plots, "write gnuplot figures fig5_3/fig5_4/fig5_6 (.png) into this directory");
   addWorldRunOptions(*ex, o.run);
+  addGridOption(*ex, o.run);
   ex->add_option("--seeds", o.seeds, "runs per scenario with seeds 1..N, reported as means (default 1)");
   ex->add_option("--strategy", o.strategy, "propagation, frontier or both (default propagation)");
   return ex;
@@ -62,6 +84,7 @@ int runExperiments(const ExperimentsOptions& o) {
   settings.seeds = o.seeds;
   settings.robot = parseRobot(o.run.robot);
   settings.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
+  settings.grid = gridOf(o.run);
   if (o.seeds < 1 || o.seeds > 1000) throw CliError("--seeds must lie in 1..1000, not " + std::to_string(o.seeds));
   if (!o.plots.empty() && report::findGnuplot().empty()) {
     throw CliError("--plots needs gnuplot, which is not on PATH; install gnuplot or leave out --plots");
@@ -91,10 +114,11 @@ int runExperiments(const ExperimentsOptions& o) {
     };
   }
   std::vector<report::ExperimentTable> tables;
+  std::vector<GridFullRun> gridFull;
   size_t done = 0;
   for (mapping::Strategy s : strategies) {
     settings.strategy = s;
-    tables.push_back(runSuite(suite, settings, progress, done, total));
+    tables.push_back(runSuite(suite, settings, progress, done, total, &gridFull));
     done += suite.scenarios.size() * static_cast<size_t>(o.seeds);
   }
   if (tty) std::cerr << "\r\x1b[K" << std::flush;
@@ -103,12 +127,15 @@ int runExperiments(const ExperimentsOptions& o) {
   if (o.seeds > 1) std::cout << " x " << o.seeds << " seeds";
   std::cout << ", robot " << settings.robot.name << " (" << settings.robot.cellCm << " cm cells)";
   if (settings.startJitterDeg > 0.0) std::cout << ", set down up to " << settings.startJitterDeg << " deg off square";
+  if (!settings.grid.isBrick()) std::cout << ", grid " << settings.grid.describe();
   std::cout << ", published medians " << report::formatNumber(report::kPublishedMedianTimeUnits) << " time units, "
             << report::formatNumber(report::kPublishedMedianSensorReads) << " sensor reads\n";
   for (const report::ExperimentTable& t : tables) {
     std::cout << '\n';
     t.writeConsole(std::cout);
   }
+  if (!gridFull.empty())
+    std::cout << '\n' << gridFullSummary(gridFull, total, settings.grid, settings.robot.cellCm) << '\n';
 
   for (size_t i = 0; i < csvs.size(); ++i) {
     std::ostringstream csv;

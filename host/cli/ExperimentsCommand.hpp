@@ -16,7 +16,7 @@ struct ExperimentsOptions {
   std::string csv;  // --strategy both: FILE-<strategy>.csv per strategy
   std::string markdown;
   std::string plots;    // directory
-  WorldRunOptions run;  // --noise, --robot (brick: the layouts scaled to 20 cm cells), --start-jitter
+  WorldRunOptions run;  // --noise, --robot (brick: the layouts scaled to 20 cm cells), --start-jitter, --grid
   int seeds = 1;
   std::string strategy = "propagation";  // or frontier, both
 };

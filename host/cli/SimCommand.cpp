@@ -97,6 +97,7 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
   sim->add_option("--heading", o.heading, "initial heading N, E, S or W on a raster world (default N)");
   addRangeOption(*sim, o.run);
   addWorldRunOptions(*sim, o.run);
+  addGridOption(*sim, o.run);
   sim->add_option("--seed", o.seed, "random seed of the noise (default 1)");
   sim->add_option("--strategy", o.strategy, "exploration strategy: propagation, frontier (default propagation)");
   sim->add_option("--show", o.show, "display: live, final, none (default final)");
@@ -117,6 +118,7 @@ int runSim(const SimOptions& o) {
   config.seed = parseSeed(o.seed);
   parseHeading(o.heading);
   config.strategy = parseStrategy(o.strategy);
+  config.grid = gridOf(o.run);
   const Show show = parseShow(o.show);
   if (o.delayMs < 0 || o.delayMs > 10000) {
     throw CliError("--delay-ms must lie in 0..10000, not " + std::to_string(o.delayMs));
@@ -167,8 +169,11 @@ int runSim(const SimOptions& o) {
     out << " (set down " << report::formatNumber(run.robot().frame().headingDeg, 1) << " deg off square)";
   }
   out << ", strategy " << mapping::strategyName(config.strategy) << ", noise " << config.noise.name << ", seed "
-      << config.seed << ", range " << report::formatNumber(robot.rangeM) << " m\n"
-      << "end              " << endName(run.explorer().end()) << "\n"
+      << config.seed << ", range " << report::formatNumber(robot.rangeM) << " m";
+  if (!config.grid.isBrick()) out << ", grid " << config.grid.describe();
+  out << "\n"
+      << "end              " << endName(run.explorer().end())
+      << (run.metGridEdge() && run.explorer().end() == ExplorerEnd::Complete ? " (up to the grid's edge)" : "") << "\n"
       << "time units       " << report::formatNumber(c.timeHalfUnits() / 2.0, 1) << "\n"
       << "sensor requests  " << c.sensorRequests << "\n"
       << "raw samples      " << c.rawSamples << "\n"
@@ -189,6 +194,7 @@ int runSim(const SimOptions& o) {
       << num(s.alignShiftRow) << " cells to fit the world best: detected " << num(s.detectedPctAligned())
       << " %, wrong " << s.wrongCellsAligned << ", unsafe free " << s.unsafeFreeAligned << ", lost "
       << (s.lostAligned ? "yes" : "no") << "\n";
+  if (run.metGridEdge()) out << gridFullNote(config.grid, robot.cellCm, world.width(), world.height()) << "\n";
   std::cout << out.str() << std::flush;
 
   if (!o.png.empty()) {

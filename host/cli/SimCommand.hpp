@@ -17,7 +17,7 @@ struct SimOptions {
   std::string world;
   std::string start;
   std::string heading = "N";
-  WorldRunOptions run;  // --noise, --robot, --start-jitter, --range-m
+  WorldRunOptions run;  // --noise, --robot, --start-jitter, --range-m, --grid
   std::string seed = "1";
   std::string strategy = "propagation";
   std::string show = "final";  // live | final | none

@@ -109,6 +109,34 @@ void addRangeOption(CLI::App& command, WorldRunOptions& o) {
       ->each([&o](const std::string&) { o.rangeGiven = true; });
 }
 
+void addGridOption(CLI::App& command, WorldRunOptions& o) {
+  command.add_option("--grid", o.grid,
+                     "room grid of CELLS x CELLS: 16, 32, 64 or 128 (default 64, the brick's own; a larger room is "
+                     "mapped up to the grid's edge, as on the brick)");
+}
+
+mapping::GridCapacity gridOf(const WorldRunOptions& o) {
+  const std::string problem = countProblem(o.grid, 16, 128);
+  if (problem.empty()) {
+    if (const auto grid = mapping::GridCapacity::ofCells(std::stoi(o.grid))) return *grid;
+  }
+  throw CliError("--grid must be 16, 32, 64 (the brick's) or 128 cells per side, not '" + o.grid + "'");
+}
+
+std::string gridFullNote(const mapping::GridCapacity& grid, int cellCm, int roomCols, int roomRows) {
+  const int side = std::max(roomCols, roomRows);
+  std::string larger;
+  for (int cells = grid.cells * 2; cells <= 128 && larger.empty(); cells *= 2) {
+    if (cells >= side) larger = "--grid " + std::to_string(cells) + " maps it whole";
+  }
+  if (larger.empty()) larger = "no grid of up to 128 cells holds it whole";
+  char metres[32];
+  std::snprintf(metres, sizeof metres, "%g", grid.cells * cellCm / 100.0);
+  const std::string n = std::to_string(grid.cells);
+  return "the room is larger than the " + n + " x " + n + "-cell grid (" + metres + " m at " + std::to_string(cellCm) +
+         " cm cells): mapped up to its edge; " + larger;
+}
+
 sim::RobotDescription robotOf(const WorldRunOptions& o) {
   sim::RobotDescription robot = parseRobot(o.robot);
   if (o.rangeGiven) robot.rangeM = checkRangeM(o.rangeM);

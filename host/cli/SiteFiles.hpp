@@ -3,6 +3,7 @@
 // Every failure throws CliError with one line naming the file or option and the problem.
 #pragma once
 
+#include "host/mapping/ExplorerBuffer.hpp"
 #include "host/sim/NoiseProfile.hpp"
 #include "host/sim/RobotDescription.hpp"
 #include "host/sim/Site.hpp"
@@ -44,11 +45,20 @@ struct WorldRunOptions {
   double startJitterDeg = 0.0;
   double rangeM = 0.0;      // --range-m (addRangeOption), when rangeGiven
   bool rangeGiven = false;  // otherwise the robot's own trusted range
+  std::string grid = "64";  // --grid (addGridOption): room grid cells per side, 64 the brick's
 };
 // robotNote: what an unset --robot means (default: "default published").
 void addWorldRunOptions(CLI::App& command, WorldRunOptions& o, const std::string& robotNote = "default published");
 // --range-m (sim, sim-house): the trusted maximum range, overriding the robot's.
 void addRangeOption(CLI::App& command, WorldRunOptions& o);
+// --grid (sim, experiments, connect sim:): the room grid the explorer maps into, cells per side.
+void addGridOption(CLI::App& command, WorldRunOptions& o);
+// The grid asked for: 16, 32, 64 (the brick's) or 128 cells per side; anything else throws CliError.
+mapping::GridCapacity gridOf(const WorldRunOptions& o);
+// The line for a run that ended GridFull: the room is larger than `grid` at cells of cellCm, mapped up to the
+// grid's edge; names the --grid that holds a room of roomCols x roomRows cells whole (if any does).
+std::string gridFullNote(const mapping::GridCapacity& grid, int cellCm, int roomCols, int roomRows);
+
 // The robot asked for (--robot), with its range overridden by --range-m; the range is checked against its cells.
 sim::RobotDescription robotOf(const WorldRunOptions& o);
 // --noise list: prints every preset's values with units; true when it did (the command then exits 0).
