@@ -1,17 +1,21 @@
 #pragma once
 #include <cstdint>
 
+#include "common/explore/ExplorerStack.hpp"
 #include "common/explore/ExplorerStorage.hpp"
-#include "common/explore/FrontierExplorer.hpp"
-#include "common/explore/PropagationExplorer.hpp"
-#include "common/motion/Pilot.hpp"
 #include "common/protocol/BrickLink.hpp"
 #include "firmware/app/ActionRunner.hpp"
 #include "firmware/app/BrickConfig.hpp"
-#include "firmware/app/PathFollower.hpp"
+#include "firmware/app/ModeMachine.hpp"
+#include "firmware/app/RadioService.hpp"
 #include "firmware/app/Screen.hpp"
+#include "firmware/app/StatusScreen.hpp"
 #include "firmware/board/Aic.hpp"
 #include "firmware/board/Mmio.hpp"
+#include "firmware/board/PioInputs.hpp"
+#include "firmware/board/Pmc.hpp"
+#include "firmware/board/SystemTimer.hpp"
+#include "firmware/board/TimerCounter.hpp"
 #include "firmware/drivers/AvrLink.hpp"
 #include "firmware/drivers/BlueCore.hpp"
 #include "firmware/drivers/Lcd.hpp"
@@ -30,15 +34,12 @@ static_assert(AppExplorerStorage::kWidth() == 64 && AppExplorerStorage::kHeight(
               "the brick's RAM budget (make size) is measured with a 64 x 64-cell room grid");
 #endif
 
-// The brick application: owns every driver, the explorer with its pilot, and the radio link;
-// runs the main loop and serves the interrupts (each ISR in main.cpp calls one on*() member).
-// Commands come from the buttons (Enter: explore with the published method, Right: explore with
-// the frontier explorer, Exit: stop, Left: new room) and from the PC (protocol::Command).
+// The brick application: owns every driver, the explorer (ExplorerStack over storage_), the radio
+// link and the three parts that use them (ModeMachine: what the robot does; RadioService: the PC;
+// StatusScreen: the LCD); brings the board up, runs the main loop and serves the interrupts (each
+// ISR in main.cpp calls one on*() member).
 class BrickApp {
  public:
-  enum class Strategy : uint8_t { Propagation, Frontier };
-  using Mode = protocol::BrickMode;
-
   BrickApp();
   BrickApp(const BrickApp&) = delete;
   BrickApp& operator=(const BrickApp&) = delete;
@@ -59,29 +60,21 @@ class BrickApp {
   [[noreturn]] void checkFailed(const char* file, int line, const char* what);
 
  private:
+  void initTachos();
+  void initSensorPorts();
+  void initAvr();
+  void installInterrupts();
   void loopOnce();
-  void serveRadio(uint32_t now);
-  void carryOut(const protocol::Command& c, uint32_t now);
-  void startExploring(Strategy s, uint32_t now);
-  void followPath(const protocol::PathMsg& path, uint32_t now);
-  void takeMapChunk(const protocol::MapChunkMsg& chunk);
-  // Stops and stands the robot at `p` (no run holds the pose until the next Explore).
-  void restAt(const Pose& p);
-  void stop();
-  void newRoom();
-  void driveRobot(uint32_t now);
-  void driveMotors();
-  void readButtons(uint32_t now);
+  void guardMotors(uint32_t nowMs);
   void startSonarClock();
-  void draw(uint32_t now);
-  void drawMapPages();
-  Pose pose() const;
-  protocol::BrickReport report() const;
-  ActionRunner::Wheels wheels() const;
 
   Mmio bus_{};
   BrickConfig config_{};
   Aic<Mmio> aic_{bus_};
+  Pmc<Mmio> pmc_{bus_};
+  SystemTimer<Mmio> timer_{bus_};
+  PioInputs<Mmio> pio_{bus_};
+  TimerCounter<Mmio> sonarClock_{bus_};  // the soft I2C bit clock, running only during a transaction
   AvrLink<Mmio> avr_{bus_};
   TachoDecoder tacho_;
   SoftI2c i2c_{};
@@ -94,37 +87,17 @@ class BrickApp {
   BlueCore<Mmio> bt_{bus_};
   Screen::Frame frame_ = {};
   Lcd<Mmio> lcd_{bus_, frame_};
-  Screen screen_{frame_};
 
   AppExplorerStorage storage_{};
-  MapLayers map_;
-  TravelPlanner planner_;
-  ExplorerConfig explorerConfig_;
+  ExplorerStack stack_;
   uint8_t shadow_[packedBytes(AppExplorerStorage::kWidth(), AppExplorerStorage::kHeight(), 2)] = {};
   protocol::BrickLink link_;
-  alignas(PropagationExplorer) alignas(FrontierExplorer) uint8_t
-      explorerBuf_[sizeof(PropagationExplorer) > sizeof(FrontierExplorer) ? sizeof(PropagationExplorer)
-                                                                          : sizeof(FrontierExplorer)];
-  alignas(Pilot) uint8_t pilotBuf_[sizeof(Pilot)];
-  Explorer* explorer_ = nullptr;
-  Pilot* pilot_ = nullptr;
   ActionRunner runner_;
-  PathFollower follower_{};
-  DriveAction pending_{};  // the action being carried out
-  Pose restPose_{};        // where the robot stands when neither the explorer nor a path moved it last
-  bool poseFromPath_ = false;
+  ModeMachine modes_;
+  RadioService radio_;
+  StatusScreen status_;
 
   volatile uint32_t ms_ = 0;
-  Mode mode_ = Mode::Idle;
-  uint16_t roomId_ = 0;
-  Button lastButton_ = Button::None;
-  Button candidate_ = Button::None;
-  uint32_t candidateSince_ = 0;
-  uint32_t lastDrawMs_ = 0, lastMapDrawMs_ = 0, lastRadioMs_ = 0;
-  bool radioBurst_ = false;  // the last transmit produced a frame: ask again next pass
-  bool mapDirty_ = true;
-  int8_t mapPage_ = -1;  // next map band to draw, -1 = none pending
-  bool blink_ = false;
 };
 
 }  // namespace nxtmap::fw

@@ -15,6 +15,8 @@ enum PeripheralId : uint32_t {
   kIdTwi = 9,
   kIdTc0 = 12,
 };
+// The bit of peripheral `id` in PMC_PCER and the AIC's enable/disable/clear registers.
+constexpr uint32_t peripheralBit(uint32_t id) { return 1u << id; }
 
 // AIC
 constexpr uint32_t kAicSmr = 0xFFFFF000;  // + 4 * id
@@ -47,7 +49,8 @@ constexpr uint32_t kPioAsr = 0xFFFFF470;
 constexpr uint32_t kPioBsr = 0xFFFFF474;
 
 // PMC / CKGR
-constexpr uint32_t kPmcScdr = 0xFFFFFC04;  // bit 0 PCK: processor clock off until the next interrupt
+constexpr uint32_t kPmcScdr = 0xFFFFFC04;
+constexpr uint32_t kPmcScdrPck = 1u << 0;  // processor clock off until the next interrupt
 constexpr uint32_t kPmcPcer = 0xFFFFFC10;
 constexpr uint32_t kCkgrMor = 0xFFFFFC20;
 constexpr uint32_t kCkgrPllr = 0xFFFFFC2C;
@@ -62,6 +65,11 @@ constexpr uint32_t kPitSr = 0xFFFFFD34;
 constexpr uint32_t kPitPivr = 0xFFFFFD38;
 constexpr uint32_t kWdtCr = 0xFFFFFD40;
 constexpr uint32_t kWdtMr = 0xFFFFFD44;
+constexpr uint32_t kPitMrPiten = 1u << 24, kPitMrPitien = 1u << 25;  // timer on, its interrupt on
+constexpr uint32_t kPitMrPivMask = 0xFFFFFu;                         // period - 1, in MCK/16 ticks
+constexpr uint32_t kPitSrPits = 1u << 0;                             // a period ended since PIVR was read
+constexpr uint32_t kPitPivrPicntShift = 20;                          // PICNT: periods since PIVR was read
+constexpr uint32_t kWdtCrKey = 0xA5u << 24, kWdtCrWdrstt = 1u << 0;  // restart the watchdog
 
 // MC / EFC
 constexpr uint32_t kMcRcr = 0xFFFFFF00;
@@ -120,6 +128,9 @@ constexpr uint32_t kTc0Rc = 0xFFFA001C;
 constexpr uint32_t kTc0Sr = 0xFFFA0020;
 constexpr uint32_t kTc0Ier = 0xFFFA0024;
 constexpr uint32_t kTcCcrClken = 1u << 0, kTcCcrClkdis = 1u << 1, kTcCcrSwtrg = 1u << 2;
+constexpr uint32_t kTcCmrTimerClock1 = 0u;   // TCCLKS: MCK/2
+constexpr uint32_t kTcCmrCpctrg = 1u << 14;  // counter reset on RC compare
+constexpr uint32_t kTcSrCpcs = 1u << 4;      // RC compare (TC_SR, TC_IER)
 
 // PIO A pins of the NXT board.
 constexpr uint32_t pin(int n) { return 1u << n; }

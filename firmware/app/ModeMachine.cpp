@@ -1,0 +1,200 @@
+#include "firmware/app/ModeMachine.hpp"
+
+#include "firmware/app/MapExport.hpp"
+
+namespace nxtmap::fw {
+
+// Run-end markers for the emulator: g_explorerDone turns 1 when the explorer reports Done, after
+// (in the NXTMAP_SIM_GEOMETRY image) the final map was copied to g_mapExport.
+extern "C" {
+volatile uint8_t g_explorerDone = 0;
+#if defined(NXTMAP_SIM_GEOMETRY)
+MapExport g_mapExport;
+#endif
+}
+
+// One sensor update: a filtered reading through the pilot into the explorer (marking rules and
+// the explorer's next decision), or one more slice of a decision (a Thought event). The emulator
+// times this function from entry to return; g_sensorUpdates counts the readings.
+extern "C" {
+volatile uint32_t g_sensorUpdates = 0;
+__attribute__((noinline)) DriveAction nxtmapSensorUpdate(ExplorerStack* stack, const DriveEvent* e) {
+  const DriveAction a = stack->step(*e);
+  if (e->kind == DriveEvent::Kind::Range) g_sensorUpdates = g_sensorUpdates + 1;
+  return a;
+}
+}
+
+void ModeMachine::carryOut(const protocol::Command& c, uint32_t nowMs) {
+  switch (c.kind) {
+    case protocol::CommandKind::Explore: startExploring(Strategy::Frontier, nowMs); break;
+    case protocol::CommandKind::Stop: stop(); break;
+    case protocol::CommandKind::FollowPath: followPath(c.path, nowMs); break;
+    case protocol::CommandKind::MapChunk: takeMapChunk(c.chunk); break;
+    case protocol::CommandKind::SetPose: restAt(c.pose); break;
+    case protocol::CommandKind::GoTo:  // mapping a house: wired with the house session
+    case protocol::CommandKind::EnterRoom: break;
+  }
+}
+
+void ModeMachine::readButton(Button b, uint32_t nowMs) {
+  if (b != candidate_) {
+    candidate_ = b;
+    candidateSince_ = nowMs;
+    return;
+  }
+  if (nowMs - candidateSince_ < kButtonStableMs || b == lastButton_) return;
+  lastButton_ = b;
+  switch (b) {
+    case Button::Enter: startExploring(Strategy::Propagation, nowMs); break;
+    case Button::Right: startExploring(Strategy::Frontier, nowMs); break;
+    case Button::Exit: stop(); break;
+    case Button::Left: newRoom(); break;
+    case Button::None: break;
+  }
+}
+
+void ModeMachine::drive(uint32_t nowMs) {
+  DriveEvent e;
+  if (!moving() || !runner_.poll(wheels(), nowMs, e)) return;
+  driveMotors();  // the action is over: motors to rest before a possibly long explorer decision
+  if (mode_ == Mode::Exploring) {
+    stepExplorer(e, nowMs);
+  } else if (follower_.next(&e, pending_)) {
+    runner_.begin(pending_, wheels(), nowMs);
+  } else {
+    mode_ = Mode::Idle;
+  }
+}
+
+void ModeMachine::stepExplorer(const DriveEvent& e, uint32_t nowMs) {
+  const bool thinking = e.kind == DriveEvent::Kind::Range || e.kind == DriveEvent::Kind::Thought;
+  pending_ = thinking ? nxtmapSensorUpdate(&stack_, &e) : stack_.step(e);
+  mapChanged();
+  if (pending_.kind == DriveAction::Kind::Done || stack_.finished()) {
+    mode_ = Mode::Done;
+#if defined(NXTMAP_SIM_GEOMETRY)
+    g_mapExport.fill(grid());
+#endif
+    g_explorerDone = 1;
+    return;
+  }
+  runner_.begin(pending_, wheels(), nowMs);
+}
+
+void ModeMachine::driveMotors() {
+  if (safety_.tripped()) return;
+  const int8_t left = moving() ? runner_.power(0) : int8_t{0};
+  const int8_t right = moving() ? runner_.power(1) : int8_t{0};
+  motors_.pwm[config_.leftMotor] = left;
+  motors_.pwm[config_.rightMotor] = right;
+  uint8_t brake = kAllBrakes;
+  if (left != 0) brake = static_cast<uint8_t>(brake & ~(1u << config_.leftMotor));
+  if (right != 0) brake = static_cast<uint8_t>(brake & ~(1u << config_.rightMotor));
+  motors_.brakeMask = brake;
+}
+
+void ModeMachine::halt() {
+  runner_.abort();
+  follower_.abort();
+  mode_ = Mode::Fault;
+}
+
+Pose ModeMachine::pose() const {
+  if (poseFromPath_) return follower_.pose();
+  if (const Explorer* e = stack_.explorer()) return e->pose();
+  return restPose_;
+}
+
+protocol::BrickReport ModeMachine::report(uint16_t batteryMillivolts) const {
+  protocol::BrickReport r;
+  r.mode = mode_;
+  r.pose = pose();
+  if (hasRun()) r.counters = counters();
+  r.batteryMillivolts = batteryMillivolts;
+  r.roomId = roomId_;
+  r.roomEntry = Cell{0, 0};
+  r.path = follower_.progress();
+  return r;
+}
+
+ActionRunner::Wheels ModeMachine::wheels() const {
+  return ActionRunner::Wheels{tacho_.count(config_.leftMotor), tacho_.count(config_.rightMotor)};
+}
+
+void ModeMachine::startExploring(Strategy s, uint32_t nowMs) {
+  if (mode_ == Mode::Exploring) return;
+  safety_.clear();
+  tacho_.clearFault();
+  follower_.abort();
+  if (stack_.running() && !stack_.finished() && !poseFromPath_) {
+    // Resume a stopped run: the action that was cut short carries on to where it was going.
+    if (!runner_.resume(wheels(), nowMs)) runner_.begin(pending_, wheels(), nowMs);
+  } else {
+    // A new run on the map as it is (empty in a new room, or what earlier runs, paths and the PC's
+    // map left), from where the robot stands.
+    const Pose here = pose();
+    poseFromPath_ = false;
+    pending_ = stack_.start(s, PilotConfig{}, here);
+    runner_.begin(pending_, wheels(), nowMs);
+  }
+  mapChanged();
+  mode_ = Mode::Exploring;
+}
+
+void ModeMachine::followPath(const protocol::PathMsg& path, uint32_t nowMs) {
+  if (mode_ == Mode::Exploring) stop();
+  safety_.clear();
+  tacho_.clearFault();
+  if (!follower_.start(path, pose(), config_.drive.cellMm)) return;  // not from where the robot stands
+  poseFromPath_ = true;
+  DriveAction first;
+  if (follower_.next(nullptr, first)) {
+    pending_ = first;
+    runner_.begin(first, wheels(), nowMs);
+    mode_ = Mode::Following;
+  }
+}
+
+void ModeMachine::takeMapChunk(const protocol::MapChunkMsg& chunk) {
+  // Chunk 0: the robot stays where it is on the PC's map (same frame); the next run starts there.
+  if (chunk.chunkIndex == 0) {
+    restAt(pose());
+    stack_.map().clear();
+  } else {
+    stop();
+  }
+  for (uint16_t i = 0; i < chunk.count; ++i) {
+    const CellState st = chunk.state(i);
+    if (st == CellState::Free)
+      (void)stack_.map().markVisited(chunk.cellOf(i));
+    else if (st == CellState::Occupied)
+      (void)stack_.map().markBlocked(chunk.cellOf(i));
+  }
+  if (chunk.chunkIndex + 1 >= chunk.chunkCount) link_.mapRestarted();
+  mapChanged();
+}
+
+void ModeMachine::restAt(const Pose& p) {
+  stop();
+  restPose_ = p;  // e.g. the robot's cell in a room the PC just uploaded (SetPose), in that room's frame
+  stack_.end();   // the next run starts from there on the map as it is
+  poseFromPath_ = false;
+  mapChanged();
+}
+
+void ModeMachine::stop() {
+  runner_.abort();
+  follower_.abort();
+  if (moving()) mode_ = Mode::Idle;
+}
+
+void ModeMachine::newRoom() {
+  restAt(Pose{});
+  stack_.map().clear();
+  link_.mapRestarted();
+  ++roomId_;
+  mode_ = Mode::Idle;
+}
+
+}  // namespace nxtmap::fw

@@ -1,0 +1,94 @@
+#pragma once
+#include <cstdint>
+
+#include "common/explore/ExplorerStack.hpp"
+#include "common/protocol/BrickLink.hpp"
+#include "common/protocol/Command.hpp"
+#include "firmware/app/ActionRunner.hpp"
+#include "firmware/app/BrickConfig.hpp"
+#include "firmware/app/PathFollower.hpp"
+#include "firmware/drivers/AvrFrame.hpp"
+#include "firmware/drivers/MotorSafety.hpp"
+#include "firmware/drivers/TachoDecoder.hpp"
+
+namespace nxtmap::fw {
+
+// What the brick is doing (protocol::BrickMode) and the commands that change it, from the PC
+// (protocol::Command) and from the buttons (Enter: explore with the published method, Right: explore
+// with the frontier explorer, Exit: stop, Left: new room). Exploring feeds the ActionRunner the
+// ExplorerStack's actions; following a path feeds it the PathFollower's. Owns the follower and the
+// robot's resting pose; the stack, runner, link, safety and tachometers are BrickApp's.
+class ModeMachine {
+ public:
+  using Mode = protocol::BrickMode;
+
+  ModeMachine(ExplorerStack& stack, ActionRunner& runner, protocol::BrickLink& link, MotorSafety& safety,
+              TachoDecoder& tacho, AvrCommand& motors, const BrickConfig& config)
+      : stack_(stack), runner_(runner), link_(link), safety_(safety), tacho_(tacho), motors_(motors), config_(config) {}
+  ModeMachine(const ModeMachine&) = delete;
+  ModeMachine& operator=(const ModeMachine&) = delete;
+
+  // One command from the PC.
+  void carryOut(const protocol::Command& c, uint32_t nowMs);
+  // The buttons as the AVR reads them now (Button::None when none); a press counts once it has
+  // held for kButtonStableMs and differs from the last one that counted.
+  void readButton(Button b, uint32_t nowMs);
+  // Carries the running action on: when it ends, the motors rest and the explorer or the path
+  // gives the next one.
+  void drive(uint32_t nowMs);
+  // The runner's wheel power into the AVR command (braked when 0); nothing while safety has tripped
+  // (the tick holds the motors at 0 with the brake on).
+  void driveMotors();
+  // The motors must stop (a tripped MotorSafety): the run or path is cut short, mode Fault.
+  void halt();
+
+  Mode mode() const { return mode_; }
+  bool moving() const { return mode_ == Mode::Exploring || mode_ == Mode::Following; }
+  // True while the runner drives either wheel (whatever the mode).
+  bool wheelsDriven() const { return runner_.power(0) != 0 || runner_.power(1) != 0; }
+  // Where the robot stands: on the path it follows, in the explorer's run, or where it was left.
+  Pose pose() const;
+  uint16_t roomId() const { return roomId_; }
+  const RoomGrid& grid() const { return stack_.map().grid(); }
+  // The run's counters, while a run exists (started and not dropped).
+  bool hasRun() const { return stack_.running(); }
+  Counters counters() const { return stack_.counters(); }
+  // Changes whenever the map may have changed (compare with the value last drawn).
+  uint32_t mapVersion() const { return mapVersion_; }
+  protocol::BrickReport report(uint16_t batteryMillivolts) const;
+
+  static constexpr uint32_t kButtonStableMs = 50;
+  static constexpr uint8_t kAllBrakes = 0x07;  // outputs A, B, C
+
+ private:
+  void startExploring(Strategy s, uint32_t nowMs);
+  void followPath(const protocol::PathMsg& path, uint32_t nowMs);
+  void takeMapChunk(const protocol::MapChunkMsg& chunk);
+  // Stops and stands the robot at `p` (no run holds the pose until the next Explore).
+  void restAt(const Pose& p);
+  void stop();
+  void newRoom();
+  void stepExplorer(const DriveEvent& e, uint32_t nowMs);
+  ActionRunner::Wheels wheels() const;
+  void mapChanged() { ++mapVersion_; }
+
+  ExplorerStack& stack_;
+  ActionRunner& runner_;
+  protocol::BrickLink& link_;
+  MotorSafety& safety_;
+  TachoDecoder& tacho_;
+  AvrCommand& motors_;  // the AVR link's next command (its motor part)
+  const BrickConfig& config_;
+  PathFollower follower_{};
+  DriveAction pending_{};  // the action being carried out
+  Pose restPose_{};        // where the robot stands when neither the explorer nor a path moved it last
+  bool poseFromPath_ = false;
+  Mode mode_ = Mode::Idle;
+  uint16_t roomId_ = 0;
+  uint32_t mapVersion_ = 1;
+  Button lastButton_ = Button::None;
+  Button candidate_ = Button::None;
+  uint32_t candidateSince_ = 0;
+};
+
+}  // namespace nxtmap::fw

@@ -1,0 +1,2 @@
+# The brick's mode machine is plain C++ over the drivers' logic: tested on the host from its source.
+target_sources(test_firmware PRIVATE ${PROJECT_SOURCE_DIR}/firmware/app/ModeMachine.cpp)

@@ -1,0 +1,153 @@
+// The brick's mode machine from outside: buttons (debounced) and PC commands in, the mode, room,
+// pose, map and motor command out. The parts it drives are the real ones (explorer stack on a
+// 16 x 16 grid, action runner, brick link); the wheels do not turn.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "firmware/app/ModeMachine.hpp"
+
+namespace nxtmap::fw::test {
+namespace {
+using Mode = protocol::BrickMode;
+
+constexpr TachoDecoder::Pins kPins[TachoDecoder::kMotors] = {{1u << 15, 1u << 1}, {1u << 26, 1u << 9}, {1u, 1u << 8}};
+
+struct Brick {
+  BrickConfig config{};
+  ExplorerStorage<16, 16, 128> storage{};
+  ExplorerStack stack{storage.memory(), config.explorer()};
+  uint8_t shadow[packedBytes(16, 16, 2)] = {};
+  protocol::BrickLink link{stack.map().grid(), shadow, protocol::BrickLinkConfig{}};
+  MotionController motion{};
+  SoftI2c i2c{};
+  SonarSequencer sonar{i2c};
+  ActionRunner runner{motion, sonar, config.drive, stack.config().geometry, config.sensorPorts};
+  MotorSafety safety{};
+  TachoDecoder tacho{kPins};
+  AvrCommand motors{};
+  ModeMachine modes{stack, runner, link, safety, tacho, motors, config};
+};
+
+struct Press {
+  Button button;
+  uint32_t atMs;
+};
+
+TEST(ModeMachine, ButtonsCountOnceHeldFor50MsAndChangeTheMode) {
+  struct Case {
+    std::string name;
+    std::vector<Press> presses;
+    Mode mode;
+    uint16_t room;
+    bool run;  // a run exists (a stopped one resumes on the next Explore)
+  };
+  const Press enter[] = {{Button::Enter, 0}, {Button::Enter, 50}};
+  const Case cases[] = {
+      {"nothing", {}, Mode::Idle, 0, false},
+      {"enter too short", {{Button::Enter, 0}, {Button::Enter, 49}}, Mode::Idle, 0, false},
+      {"enter held", {enter[0], enter[1]}, Mode::Exploring, 0, true},
+      {"right held", {{Button::Right, 0}, {Button::Right, 60}}, Mode::Exploring, 0, true},
+      {"enter then exit", {enter[0], enter[1], {Button::Exit, 60}, {Button::Exit, 110}}, Mode::Idle, 0, true},
+      {"exit then left drops the run",
+       {enter[0], enter[1], {Button::Exit, 60}, {Button::Exit, 110}, {Button::Left, 120}, {Button::Left, 170}},
+       Mode::Idle,
+       1,
+       false},
+      {"left: new room", {{Button::Left, 0}, {Button::Left, 50}}, Mode::Idle, 1, false},
+      {"left held long counts once",
+       {{Button::Left, 0}, {Button::Left, 50}, {Button::Left, 500}},
+       Mode::Idle,
+       1,
+       false},
+      {"left twice",
+       {{Button::Left, 0},
+        {Button::Left, 50},
+        {Button::None, 60},
+        {Button::None, 110},
+        {Button::Left, 120},
+        {Button::Left, 170}},
+       Mode::Idle,
+       2,
+       false},
+      {"a bounce restarts the wait",
+       {enter[0], {Button::None, 30}, {Button::Enter, 40}, {Button::Enter, 80}},
+       Mode::Idle,
+       0,
+       false},
+  };
+  for (const Case& c : cases) {
+    Brick b;
+    for (const Press& p : c.presses) b.modes.readButton(p.button, p.atMs);
+    EXPECT_EQ(b.modes.mode(), c.mode) << c.name;
+    EXPECT_EQ(b.modes.roomId(), c.room) << c.name;
+    EXPECT_EQ(b.modes.hasRun(), c.run) << c.name;
+  }
+}
+
+protocol::Command commandOf(protocol::CommandKind kind) {
+  protocol::Command c;
+  c.kind = kind;
+  return c;
+}
+
+TEST(ModeMachine, PcCommandsExploreStopAndSetThePose) {
+  Brick b;
+  const uint32_t v0 = b.modes.mapVersion();
+  b.modes.carryOut(commandOf(protocol::CommandKind::Explore), 0);
+  EXPECT_EQ(b.modes.mode(), Mode::Exploring);
+  EXPECT_EQ(b.stack.strategy(), Strategy::Frontier);
+  EXPECT_NE(b.modes.mapVersion(), v0);
+  b.modes.carryOut(commandOf(protocol::CommandKind::Stop), 1);
+  EXPECT_EQ(b.modes.mode(), Mode::Idle);
+  EXPECT_TRUE(b.modes.hasRun());  // a stopped run resumes on the next Explore
+  protocol::Command set = commandOf(protocol::CommandKind::SetPose);
+  set.pose = Pose{Cell{3, -2}, Dir::East};
+  b.modes.carryOut(set, 2);
+  EXPECT_FALSE(b.modes.hasRun());
+  EXPECT_EQ(b.modes.pose().cell, (Cell{3, -2}));
+  EXPECT_EQ(b.modes.report(7400).pose.cell, (Cell{3, -2}));
+  EXPECT_EQ(b.modes.report(7400).batteryMillivolts, 7400);
+  b.modes.carryOut(commandOf(protocol::CommandKind::Explore), 3);
+  EXPECT_EQ(b.modes.pose().cell, (Cell{3, -2})) << "a new run starts where the robot stands";
+}
+
+TEST(ModeMachine, MapChunkReplacesTheMap) {
+  Brick b;
+  (void)b.stack.map().markBlocked(Cell{5, 5});
+  protocol::MapChunkMsg chunk;
+  chunk.chunkIndex = 0;
+  chunk.chunkCount = 1;
+  chunk.window = Bounds{0, 0, 2, 0};  // cells (0,0) (1,0) (2,0)
+  chunk.count = 3;
+  chunk.setState(0, CellState::Free);
+  chunk.setState(1, CellState::Occupied);
+  chunk.setState(2, CellState::Unknown);
+  protocol::Command c = commandOf(protocol::CommandKind::MapChunk);
+  c.chunk = chunk;
+  b.modes.carryOut(c, 0);
+  const RoomGrid& g = b.modes.grid();
+  EXPECT_EQ(g.at(Cell{0, 0}), CellState::Free);
+  EXPECT_EQ(g.at(Cell{1, 0}), CellState::Occupied);
+  EXPECT_EQ(g.at(Cell{2, 0}), CellState::Unknown);
+  EXPECT_EQ(g.at(Cell{5, 5}), CellState::Unknown) << "chunk 0 clears the old map";
+}
+
+TEST(ModeMachine, MotorsBrakedUnlessMovingAndHaltFaults) {
+  Brick b;
+  b.modes.driveMotors();
+  EXPECT_EQ(b.motors.brakeMask, ModeMachine::kAllBrakes);
+  EXPECT_EQ(b.motors.pwm[0], 0);
+  b.modes.carryOut(commandOf(protocol::CommandKind::Explore), 0);
+  b.modes.halt();
+  EXPECT_EQ(b.modes.mode(), Mode::Fault);
+  EXPECT_FALSE(b.modes.wheelsDriven());
+  b.motors.brakeMask = 0;
+  b.safety.trip(MotorSafety::Reason::Encoder);
+  b.modes.driveMotors();
+  EXPECT_EQ(b.motors.brakeMask, 0) << "a tripped safety leaves the command to the tick";
+}
+
+}  // namespace
+}  // namespace nxtmap::fw::test
