@@ -24,6 +24,13 @@ Pose RoomSession::pose() const {
   return idlePose_;
 }
 
+void RoomSession::abort() {
+  idlePose_ = pose();
+  stack_.end();
+  phase_ = Phase::Idle;
+  outcome_ = Outcome::None;
+}
+
 void RoomSession::setPose(const Pose& p) {
   if (phase_ == Phase::Idle) idlePose_ = p;
 }
@@ -37,6 +44,7 @@ DriveAction RoomSession::exploreRoom(Strategy strategy, const Pose& at, const Do
   phase_ = Phase::Exploring;
   outcome_ = Outcome::None;
   last_ = stack_.start(strategy, pilotConfig(), at, Cell{}, &confinement_);
+  if (stack_.finished()) return finishExploring();  // nothing to do: over at once
   return last_;
 }
 
@@ -49,6 +57,7 @@ DriveAction RoomSession::goTo(Cell target, const Pose& at) {
   }
   phase_ = Phase::Travelling;
   last_ = stack_.start(Strategy::GoTo, pilotConfig(), at, target);
+  if (stack_.finished()) return finishTravelling();  // no way there: over at once
   return last_;
 }
 
@@ -114,6 +123,10 @@ DriveAction RoomSession::stepExploring(const DriveEvent& event) {
     if (!confinement_.drivesIntoShut(pose(), last_)) return last_;
     e = DriveEvent::driven(true);
   }
+  return finishExploring();
+}
+
+DriveAction RoomSession::finishExploring() {
   explore_ += stack_.counters();
   return endRun(Outcome::RoomMapped);
 }
@@ -121,6 +134,10 @@ DriveAction RoomSession::stepExploring(const DriveEvent& event) {
 DriveAction RoomSession::stepTravelling(const DriveEvent& e) {
   last_ = stack_.step(e);
   if (!stack_.finished()) return last_;
+  return finishTravelling();
+}
+
+DriveAction RoomSession::finishTravelling() {
   travel_ += stack_.counters();
   const bool arrived = stack_.goTo() != nullptr && stack_.goTo()->arrived();
   if (!arrived) ++travelsNotArrived_;

@@ -59,6 +59,8 @@ class RoomSession {
   uint16_t roomsStarted() const { return roomsStarted_; }
   int64_t headingVarianceMrad2() const { return headingVariance_; }
   void setHeadingVarianceMrad2(int64_t v) { headingVariance_ = v; }
+  // Stops the command where the robot is believed to be (no outcome).
+  void abort();
   // Moves the belief to `p` (e.g. a relocalisation by the PC); only while idle.
   void setPose(const Pose& p);
   // After scan(): the reading of sensor s.
@@ -74,6 +76,8 @@ class RoomSession {
   PilotConfig pilotConfig() const;
   DriveAction stepExploring(const DriveEvent& e);
   DriveAction stepTravelling(const DriveEvent& e);
+  DriveAction finishExploring();   // the room's run is over
+  DriveAction finishTravelling();  // the travel is over
   DriveAction stepCrossing(const DriveEvent& e);
   DriveAction stepScanning(const DriveEvent& e);
   DriveAction crossNext();

@@ -58,7 +58,9 @@ void BrickLink::handlePacket(const Telegram& t) {
     case Op::FollowPath:
     case Op::RequestMap:
     case Op::MapChunk:
-    case Op::SetPose: handleCommand(v.header, v.payload, v.payloadSize); break;
+    case Op::SetPose:
+    case Op::GoTo:
+    case Op::EnterRoom: handleCommand(v.header, v.payload, v.payloadSize); break;
     case Op::BatteryRequest: batteryDue_ = true; break;
     default: break;  // Ack (already applied) and anything the brick does not take
   }

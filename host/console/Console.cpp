@@ -59,6 +59,7 @@ const Console::Command Console::kCommands[] = {
     {K::Help, nullptr, &Console::help},
     {K::Quit, nullptr, &Console::leave},
     {K::Explore, "explore", &Console::explore},
+    {K::ExploreHouse, "explore house", &Console::exploreHouse},
     {K::Stop, "stop", &Console::stop},
     {K::Goto, "goto", &Console::gotoCell},
     {K::GotoNear, "goto near", &Console::gotoNear},
@@ -75,7 +76,12 @@ const Console::Command Console::kCommands[] = {
 };
 
 Console::Console(link::LinkRunner& runner, std::string linkText)
-    : runner_(runner), linkText_(std::move(linkText)), goals_(runner), house_(runner), route_(runner, house_, goals_) {}
+    : runner_(runner),
+      linkText_(std::move(linkText)),
+      goals_(runner),
+      house_(runner),
+      route_(runner, house_, goals_),
+      exploration_(runner) {}
 
 std::string Console::execute(const ConsoleCommand& c) {
   std::string out;
@@ -101,7 +107,11 @@ std::string Console::poll() {
         "the brick did not know this console any more (it restarted, or another console talked to it): the "
         "command sent last may not have run; it is not sent again\n";
   }
-  out += house_.pollRooms([this] { return dropGoalForNewRoom(); });
+  if (exploration_.active()) {
+    out += pollHouse();
+  } else {
+    out += house_.pollRooms([this] { return dropGoalForNewRoom(); });
+  }
   out += house_.pollUpload();
   out += goals_.poll();
   out += route_.poll();
@@ -155,6 +165,36 @@ std::string Console::explore(const ConsoleCommand&) {
   route_.cancel();
   runner_.with([](link::Session& s) { return s.explore(); });
   return "exploring\n";
+}
+
+std::string Console::exploreHouse(const ConsoleCommand&) {
+  goals_.cancel();
+  route_.cancel();
+  return exploration_.start();
+}
+
+std::string Console::pollHouse() {
+  runner_.with([](link::Session& s) { return s.takeRoomChanges(); });  // the planner keeps the rooms
+  std::string out = exploration_.poll();
+  if (!exploration_.done()) return out;
+  // The planner's house becomes the console's; the brick gets the room it stands in, in its frame.
+  const int room = exploration_.roomOfRobot();
+  if (room < 0) return out;
+  const network::HouseNetwork& h = exploration_.planner().network();
+  const network::RoomTransform toRoom = h.rooms()[static_cast<size_t>(room)].toHouse.inverse();
+  const Pose b = exploration_.planner().belief();
+  house_.useHouse(h, 0.10, room);
+  out += house_.enterHouseRoom();
+  runner_.with([&](link::Session& s) { return s.setPose(Pose{toRoom.apply(b.cell), toRoom.apply(b.heading)}); });
+  return out;
+}
+
+std::string Console::waitHouse(double seconds) {
+  if (!exploration_.active() && !exploration_.done()) throw ConsoleError("wait house: explore house was not given");
+  if (!waitFor([&] { return !exploration_.active(); }, seconds))
+    throw ConsoleError("still mapping the house after " + std::to_string(static_cast<int>(seconds)) +
+                       " s: " + exploration_.progress());
+  return "house mapped: " + exploration_.progress() + "\n";
 }
 
 std::string Console::stop(const ConsoleCommand&) {
@@ -244,6 +284,7 @@ std::string Console::battery(const ConsoleCommand&) {
 }
 
 std::string Console::wait(const ConsoleCommand& c) {
+  if (c.name == "house") return waitHouse(c.seconds);
   if (c.name == "explored") {
     const auto done = [&] {
       return runner_.with([](link::Session& s) { return s.status() && s.status()->mode == protocol::BrickMode::Done; });

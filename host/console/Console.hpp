@@ -5,6 +5,7 @@
 //                 replanned when the brick reports "blocked";
 //   ConsoleHouse  the house session: rooms seen or loaded, room changes, uploads, labels, save;
 //   RouteDriver   routes across rooms driven leg by leg through the gateways;
+//   HouseExploration  `explore house`: the PC's house planner driving the brick room by room;
 //   MapView       the map shown by `map` and written by `export` (host/report).
 // A bad goal (outside the map, an obstacle, unexplored, unreachable) is refused with one clear message
 // and nothing is sent.
@@ -15,6 +16,7 @@
 #include "host/console/ConsoleCommand.hpp"
 #include "host/console/ConsoleHouse.hpp"
 #include "host/console/GoalDriver.hpp"
+#include "host/console/HouseExploration.hpp"
 #include "host/console/MapView.hpp"
 #include "host/console/RouteDriver.hpp"
 #include "host/link/LinkRunner.hpp"
@@ -65,6 +67,7 @@ class Console {
   std::string help(const ConsoleCommand&) { return consoleHelp(); }
   std::string leave(const ConsoleCommand&);
   std::string explore(const ConsoleCommand&);
+  std::string exploreHouse(const ConsoleCommand&);
   std::string stop(const ConsoleCommand&);
   std::string gotoCell(const ConsoleCommand& c);
   std::string gotoNear(const ConsoleCommand& c);
@@ -80,6 +83,8 @@ class Console {
 
   std::string startGoal(Cell target, const std::string& what);
   std::string dropGoalForNewRoom();
+  std::string pollHouse();  // the house exploration; once it is done, its house becomes the console's
+  std::string waitHouse(double seconds);
   bool waitFor(const std::function<bool()>& done, double seconds);
   void waitForUpload() {
     if (house_.uploadPending()) waitFor([&] { return !house_.uploadPending(); }, 5.0);
@@ -90,6 +95,7 @@ class Console {
   GoalDriver goals_;
   ConsoleHouse house_;
   RouteDriver route_;
+  HouseExploration exploration_;
   std::function<void()> waiting_;
   std::string notes_;  // lines poll() produced while a command waited (printed with its answer)
   bool quit_ = false;

@@ -27,6 +27,7 @@ void expectArgs(const std::vector<std::string>& w, size_t n, const char* form) {
 
 const char* consoleHelp() {
   return "explore              start (or resume) exploring\n"
+         "explore house        map the whole house by itself: room by room, through every exit\n"
          "stop                 stop the robot\n"
          "goto C R             drive to map cell column C, row R (as the map shows them)\n"
          "goto near LABEL      drive next to a labelled cell\n"
@@ -41,7 +42,8 @@ const char* consoleHelp() {
          "status               link, robot and map figures\n"
          "battery              the brick's battery voltage\n"
          "map                  print the map\n"
-         "wait explored|goal [SECONDS]   wait until exploring ends / the goal is reached\n"
+         "wait explored|goal|house [SECONDS]   wait until exploring ends / the goal is reached /\n"
+         "                     the house is mapped\n"
          "help                 this list\n"
          "quit                 leave (the robot keeps its last command)\n";
 }
@@ -106,8 +108,8 @@ void parseExport(const Words& w, ConsoleCommand& c) {
 }
 
 void parseWait(const Words& w, ConsoleCommand& c) {
-  if (w.size() < 2 || w.size() > 3 || (w[1] != "explored" && w[1] != "goal"))
-    throw ConsoleError("usage: wait explored|goal [SECONDS]");
+  if (w.size() < 2 || w.size() > 3 || (w[1] != "explored" && w[1] != "goal" && w[1] != "house"))
+    throw ConsoleError("usage: wait explored|goal|house [SECONDS]");
   c.kind = K::Wait;
   c.name = w[1];
   c.seconds = 600;
@@ -115,6 +117,15 @@ void parseWait(const Words& w, ConsoleCommand& c) {
     c.seconds = parseWhole(w[2], "wait: SECONDS", "a whole number of seconds");
     if (c.seconds < 1) throw ConsoleError("wait: SECONDS must be at least 1");
   }
+}
+
+void parseExplore(const Words& w, ConsoleCommand& c) {
+  if (w.size() == 2 && w[1] == "house") {
+    c.kind = K::ExploreHouse;
+    return;
+  }
+  expectArgs(w, 1, "explore  or  explore house");
+  c.kind = K::Explore;
 }
 
 // Any words after the command are ignored.
@@ -129,7 +140,7 @@ struct Syntax {
   void (*parse)(const Words&, ConsoleCommand&);
 };
 const Syntax kSyntax[] = {
-    {"explore", parseBare<K::Explore>},
+    {"explore", parseExplore},
     {"stop", parseBare<K::Stop>},
     {"goto", parseGoto},
     {"label", parseLabel},

@@ -8,6 +8,7 @@ namespace nxtmap::console {
 struct ConsoleCommand {
   enum class Kind {
     Explore,
+    ExploreHouse,
     Stop,
     Goto,
     GotoNear,

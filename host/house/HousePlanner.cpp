@@ -161,9 +161,22 @@ HouseOrder HousePlanner::passExit() {
   // The known house around the leg, as much as the brick's grid holds.
   const Cell a = toLocal.apply(Cell{box.minX, box.minY}), b = toLocal.apply(Cell{box.maxX, box.maxY});
   const int minX = std::min(a.x, b.x), minY = std::min(a.y, b.y);
-  o.map = network::RoomMap(minX, minY, box.width(), box.height());
+  // Only the known cells' box of it (and the robot's and the target's cells) goes to the brick.
+  Bounds used{0, 0, 0, 0};
+  const auto grow = [&](Cell c) {
+    used =
+        Bounds{std::min(used.minX, c.x), std::min(used.minY, c.y), std::max(used.maxX, c.x), std::max(used.maxY, c.y)};
+  };
+  grow(target);
   for (int y = minY; y < minY + box.height(); ++y) {
     for (int x = minX; x < minX + box.width(); ++x) {
+      const Cell c{static_cast<int16_t>(x), static_cast<int16_t>(y)};
+      if (known_.at(brickToHouse_.apply(c)) != CellState::Unknown) grow(c);
+    }
+  }
+  o.map = network::RoomMap(used.minX, used.minY, used.width(), used.height());
+  for (int y = used.minY; y <= used.maxY; ++y) {
+    for (int x = used.minX; x <= used.maxX; ++x) {
       const Cell c{static_cast<int16_t>(x), static_cast<int16_t>(y)};
       o.map.set(c, known_.at(brickToHouse_.apply(c)));
     }

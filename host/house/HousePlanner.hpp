@@ -79,6 +79,7 @@ class HousePlanner {
   int relocalisations() const { return relocalisations_; }
   Cell startShift() const { return startShift_; }
   int openingsTried() const { return static_cast<int>(openingsTried_.size()); }
+  int exitsLeft() const { return static_cast<int>(pending_.size()); }
   const Pose& belief() const { return belief_; }  // house frame
 
  private:

@@ -66,6 +66,15 @@ SimBrick::SimBrick(sim::RobotPlacement placed, const SimBrickConfig& config)
              config_.run.seed, config_.run.sensorReachCm),
       buffer_(config_.run.grid),
       stack_(buffer_.memory(), explorerConfigFor(world_, config_.run, placed.robot.mountCm)),
+      reach_(packedBytes(config_.run.grid.cells, config_.run.grid.cells, 1)),
+      confinement_(reach_.data(), config_.run.grid.cells, config_.run.grid.cells, DoorwayLimits{4, 15, 3, 2},
+                   stack_.config().geometry.hitCells()),
+      house_(stack_, confinement_,
+             [&] {
+               PilotConfig p;
+               p.correct = config_.run.poseCorrection;
+               return p;
+             }()),
       shadow_(packedBytes(stack_.map().grid().capacityWidth(), stack_.map().grid().capacityHeight(), 2)),
       link_(stack_.map().grid(), shadow_.data(), config.link) {}
 
@@ -75,7 +84,10 @@ void SimBrick::receive(const uint8_t* data, size_t size) {
   for (size_t i = 0; i < size; ++i) link_.receive(data[i]);
 }
 
-Pose SimBrick::pose() const { return stack_.explorer() != nullptr ? stack_.explorer()->pose() : restPose_; }
+Pose SimBrick::pose() const {
+  if (house_.active()) return house_.pose();
+  return stack_.explorer() != nullptr ? stack_.explorer()->pose() : restPose_;
+}
 
 Counters SimBrick::counters() const { return stack_.counters(); }
 
@@ -94,6 +106,7 @@ BrickReport SimBrick::report() const {
   r.batteryMillivolts = config_.batteryMillivolts;
   r.roomId = roomId_;
   r.path = path_;
+  if (house_.active()) house_.fill(r);
   return r;
 }
 
@@ -175,8 +188,39 @@ void SimBrick::newRoom() {
   mode_ = BrickMode::Idle;
 }
 
+void SimBrick::newRoomFrame(const Pose& origin) {
+  int col = 0, row = 0;
+  frame_.toWorld(origin.cell, col, row);
+  frame_ = mapping::FrameTransform(col, row, frame_.toWorld(origin.heading));
+}
+
+void SimBrick::houseCommand(const Command& c) {
+  if (mode_ == BrickMode::Following && path_.state == PathState::Following) path_.state = PathState::Aborted;
+  const Pose here = pose();
+  if (c.kind == CommandKind::Explore) {
+    newRoomFrame(here);
+    pending_ = house_.explore(c.explore, here, roomId_);
+  } else if (c.kind == CommandKind::GoTo) {
+    pending_ = house_.goTo(c.goTo, here);
+  } else {
+    pending_ = house_.enterRoom(c.enterRoom, here);
+  }
+  if (house_.takeMapRestart()) link_.mapRestarted();
+  roomId_ = house_.roomId();
+  mode_ = house_.mode();
+}
+
 void SimBrick::carryOut(const Command& c) {
   executed_.push_back(c.seq);
+  const bool houseCommand = c.kind == CommandKind::GoTo || c.kind == CommandKind::EnterRoom ||
+                            (c.kind == CommandKind::Explore && c.explore.confine);
+  if (houseCommand) return this->houseCommand(c);
+  if (house_.active()) {  // any other command ends the house command and its reports
+    house_.abort();
+    house_.deactivate();
+    restPose_ = house_.pose();
+    stack_.end();
+  }
   switch (c.kind) {
     case CommandKind::Explore: startExploring(); break;
     case CommandKind::Stop: stopMoving(); break;
@@ -202,8 +246,8 @@ void SimBrick::carryOut(const Command& c) {
     }
     case CommandKind::MapChunk: takeMapChunk(c.chunk); break;
     case CommandKind::SetPose: setPose(c.pose); break;
-    case CommandKind::GoTo:  // mapping a house: wired with the house session
-    case CommandKind::EnterRoom: break;
+    case CommandKind::GoTo:
+    case CommandKind::EnterRoom: break;  // houseCommand
   }
 }
 
@@ -259,11 +303,27 @@ void SimBrick::exploreOne() {
   if (stack_.finished() || pending_.kind == DriveAction::Kind::Done) mode_ = BrickMode::Done;
 }
 
+void SimBrick::houseOne() {
+  // The core's thinking slices cost no robot time here (the brick spends about 1 ms on each).
+  do {
+    pending_ = house_.step(mapping::carryOutOnRobot(robot_, pending_, stack_.config().geometry));
+    if (house_.takeMapRestart()) {  // through the doorway: the next room's frame starts here
+      newRoomFrame(house_.session().crossedAt());
+      link_.mapRestarted();
+      roomId_ = house_.roomId();
+    }
+  } while (house_.running() && pending_.kind == DriveAction::Kind::Think);
+  mode_ = house_.mode();
+}
+
 void SimBrick::step(uint32_t nowMs) {
   Command c;
   while (link_.nextCommand(c)) carryOut(c);
   while (nowMs >= nextActionMs_) {
-    if (mode_ == BrickMode::Exploring) {
+    if (house_.active() && house_.running()) {
+      houseOne();
+      nextActionMs_ += config_.actionMs;
+    } else if (mode_ == BrickMode::Exploring) {
       exploreOne();
       nextActionMs_ += config_.actionMs;
     } else if (mode_ == BrickMode::Following) {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "common/explore/ExplorerStack.hpp"
+#include "common/house/HouseBrick.hpp"
 #include "common/protocol/BrickLink.hpp"
 #include "host/mapping/ExplorerBuffer.hpp"
 #include "host/mapping/FrameTransform.hpp"
@@ -78,6 +79,9 @@ class SimBrick {
   void setPose(const Pose& p);
   void stopMoving();
   void exploreOne();
+  void houseOne();  // one action of a house command (HouseBrick)
+  void houseCommand(const protocol::Command& c);
+  void newRoomFrame(const Pose& origin);  // the map's frame moves to a new room whose origin is `origin`
   void followOne();
   bool worldBlocked(Cell c) const;
   protocol::BrickReport report() const;
@@ -90,8 +94,11 @@ class SimBrick {
   sim::SimRobot robot_;
   mapping::ExplorerBuffer buffer_;  // the memory of stack_, of config_.run.grid's capacity
   ExplorerStack stack_;             // the room map and the current run (none: a new run starts at restPose_)
-  DriveAction pending_{};           // the action the pilot asked for last
-  Pose restPose_{};                 // where the robot stands when no run holds its pose
+  std::vector<uint8_t> reach_;      // the confinement's flood bits
+  RoomConfinement confinement_;
+  HouseBrick house_;       // the house commands (confined explore, goto, enter room)
+  DriveAction pending_{};  // the action the pilot asked for last
+  Pose restPose_{};        // where the robot stands when no run holds its pose
   std::vector<uint8_t> shadow_;
   protocol::BrickLink link_;
   protocol::BrickMode mode_ = protocol::BrickMode::Idle;

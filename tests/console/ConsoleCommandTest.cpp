@@ -25,6 +25,7 @@ TEST(ConsoleCommand, EachLineParsesToItsCommand) {
       {"", K::Empty, 0, 0, "", false, 0},
       {"# a comment", K::Empty, 0, 0, "", false, 0},
       {"explore", K::Explore, 0, 0, "", false, 0},
+      {"explore house", K::ExploreHouse, 0, 0, "", false, 0},
       {"  stop  ", K::Stop, 0, 0, "", false, 0},
       {"goto 18 3", K::Goto, 18, 3, "", false, 0},
       {"goto near sofa", K::GotoNear, 0, 0, "sofa", false, 0},
@@ -41,6 +42,7 @@ TEST(ConsoleCommand, EachLineParsesToItsCommand) {
       {"map", K::Map, 0, 0, "", false, 0},
       {"wait explored", K::Wait, 0, 0, "explored", false, 600},
       {"wait goal 60", K::Wait, 0, 0, "goal", false, 60},
+      {"wait house 900", K::Wait, 0, 0, "house", false, 900},
       {"help", K::Help, 0, 0, "", false, 0},
       {"? me", K::Help, 0, 0, "", false, 0},
       {"quit", K::Quit, 0, 0, "", false, 0},
@@ -62,7 +64,8 @@ TEST(ConsoleCommand, AMalformedLineIsOneMessageNamingTheRightForm) {
     std::string line, message;
   };
   const Case cases[] = {
-      {"explore now", "usage: explore"},
+      {"explore now", "usage: explore  or  explore house"},
+      {"explore house now", "usage: explore  or  explore house"},
       {"map 1", "usage: map"},
       {"goto 1", "usage: goto C R  or  goto near LABEL"},
       {"goto a 2", "column 'a' is not a cell number (0, 1, 2, ...)"},
@@ -71,8 +74,8 @@ TEST(ConsoleCommand, AMalformedLineIsOneMessageNamingTheRightForm) {
       {"route 1 2", "usage: route ROOM C R  or  route near LABEL"},
       {"save", "usage: save DIR  or  save FILE.yaml"},
       {"export room.jpg", "export needs a .png file name: export FILE.png"},
-      {"wait", "usage: wait explored|goal [SECONDS]"},
-      {"wait house", "usage: wait explored|goal [SECONDS]"},
+      {"wait", "usage: wait explored|goal|house [SECONDS]"},
+      {"wait rooms", "usage: wait explored|goal|house [SECONDS]"},
       {"wait goal 0", "wait: SECONDS must be at least 1"},
       {"wait goal x", "wait: SECONDS 'x' is not a whole number of seconds (0, 1, 2, ...)"},
       {"fly 1 2", "unknown command 'fly' (type help for the list)"},

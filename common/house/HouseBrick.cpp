@@ -1,0 +1,146 @@
+#include "common/house/HouseBrick.hpp"
+
+namespace nxtmap {
+namespace {
+
+Strategy strategyOf(protocol::ExploreStrategy s) {
+  return s == protocol::ExploreStrategy::Propagation ? Strategy::Propagation : Strategy::Frontier;
+}
+
+Doorway doorwayOf(const protocol::DoorwayMsg& m) {
+  Doorway d;
+  d.alongX = m.alongX;
+  d.first = m.first;
+  d.width = m.width;
+  d.depth = m.depth;
+  return d;
+}
+
+protocol::DoorwayMsg messageOf(const Doorway& d) {
+  protocol::DoorwayMsg m;
+  m.alongX = d.alongX;
+  m.first = d.first;
+  m.width = static_cast<uint8_t>(d.width);
+  m.depth = static_cast<uint8_t>(d.depth);
+  return m;
+}
+
+}  // namespace
+
+HouseBrick::HouseBrick(ExplorerStack& stack, RoomConfinement& confinement, const PilotConfig& pilot)
+    : stack_(stack), confinement_(confinement), session_(stack, confinement, pilot) {}
+
+DriveAction HouseBrick::explore(const protocol::ExploreMsg& how, const Pose& here, uint16_t roomId) {
+  abort();
+  stack_.map().clear();
+  mapRestart_ = true;
+  fromRoom_ = roomId;
+  roomId_ = static_cast<uint16_t>(roomId + 1);
+  origin_ = here;
+  active_ = true;
+  goal_ = protocol::PathProgressMsg{};
+  resetExits();
+  const DriveAction a = session_.exploreRoom(strategyOf(how.strategy), Pose{}, nullptr);
+  roomsSeen_ = session_.roomsStarted();
+  return a;
+}
+
+DriveAction HouseBrick::goTo(const protocol::GoToMsg& goal, const Pose& here) {
+  abort();
+  active_ = true;
+  goal_ = protocol::PathProgressMsg{goal.goalId, 0, protocol::PathState::Following, here.cell};
+  const DriveAction a = session_.goTo(goal.target, here);
+  if (a.kind == DriveAction::Kind::Done) goal_.state = protocol::PathState::Reached;
+  return a;
+}
+
+DriveAction HouseBrick::enterRoom(const protocol::EnterRoomMsg& m, const Pose& here) {
+  abort();
+  active_ = true;
+  pendingRoom_ = m.roomId;
+  session_.setPose(Pose{m.inside, here.heading});
+  RoomExit exit;
+  exit.door = doorwayOf(m.door);
+  exit.inside = m.inside;
+  exit.outward = m.outward;
+  roomsSeen_ = session_.roomsStarted();
+  return session_.cross(exit, strategyOf(m.strategy));
+}
+
+DriveAction HouseBrick::step(const DriveEvent& e) {
+  const DriveAction a = session_.step(e);
+  if (session_.roomsStarted() != roomsSeen_) noteNewRoom();
+  if (a.kind != DriveAction::Kind::Done) return a;
+  switch (session_.outcome()) {
+    case RoomSession::Outcome::Arrived:
+    case RoomSession::Outcome::NotArrived:
+      goal_.state = session_.outcome() == RoomSession::Outcome::Arrived ? protocol::PathState::Reached
+                                                                        : protocol::PathState::Blocked;
+      goal_.at = session_.pose().cell;
+      break;
+    case RoomSession::Outcome::RoomMapped: updateExits(); break;
+    default: break;
+  }
+  return a;
+}
+
+void HouseBrick::abort() {
+  if (!session_.busy()) return;
+  session_.abort();
+  if (goal_.state == protocol::PathState::Following) goal_.state = protocol::PathState::Aborted;
+}
+
+void HouseBrick::noteNewRoom() {
+  roomsSeen_ = session_.roomsStarted();
+  mapRestart_ = true;
+  fromRoom_ = roomId_;
+  roomId_ = pendingRoom_;
+  origin_ = session_.crossedAt();
+  resetExits();
+}
+
+void HouseBrick::resetExits() {
+  exits_.roomId = roomId_;
+  exits_.end = ExplorerEnd::Running;
+  exits_.count = 0;
+}
+
+void HouseBrick::updateExits() {
+  const Explorer* explorer = stack_.explorer();
+  exits_.end = explorer != nullptr ? explorer->end() : ExplorerEnd::Complete;
+  exits_.count = 0;
+  for (uint8_t i = 0; i < confinement_.exitCount() && exits_.count < protocol::kMaxRoomExits; ++i) {
+    const RoomExit& x = confinement_.exit(i);
+    protocol::RoomExitMsg& m = exits_.exits[exits_.count++];
+    m.door = messageOf(x.door);
+    m.inside = x.inside;
+    m.outward = x.outward;
+  }
+}
+
+bool HouseBrick::takeMapRestart() {
+  const bool r = mapRestart_;
+  mapRestart_ = false;
+  return r;
+}
+
+protocol::BrickMode HouseBrick::mode() const {
+  switch (session_.phase()) {
+    case RoomSession::Phase::Travelling: return protocol::BrickMode::Following;
+    case RoomSession::Phase::Idle: break;
+    default: return protocol::BrickMode::Exploring;
+  }
+  return session_.outcome() == RoomSession::Outcome::RoomMapped ? protocol::BrickMode::Done : protocol::BrickMode::Idle;
+}
+
+void HouseBrick::fill(protocol::BrickReport& r) const {
+  r.roomId = roomId_;
+  r.fromRoom = fromRoom_;
+  r.roomOrigin = origin_.cell;
+  r.roomHeading = origin_.heading;
+  r.roomEntry = Cell{0, 0};
+  if (goal_.state != protocol::PathState::None) r.path = goal_;
+  r.exits = &exits_;
+}
+
+}  // namespace nxtmap

@@ -1,0 +1,59 @@
+// HouseBrick: the house commands as the brick carries them out, shared by the firmware's mode
+// machine and the stand-in brick: a confined Explore (map the room the robot stands in), GoTo (drive
+// to a cell of the map held) and EnterRoom (cross a doorway into the next room and map it), each run
+// by the RoomSession, and what the brick reports of them (room ids, the new room's frame, the goal's
+// progress, the room's exits). Events in, actions out; the caller carries the actions out.
+#pragma once
+#include <cstdint>
+
+#include "common/house/RoomSession.hpp"
+#include "common/protocol/BrickLink.hpp"
+
+namespace nxtmap {
+
+class HouseBrick {
+ public:
+  HouseBrick(ExplorerStack& stack, RoomConfinement& confinement, const PilotConfig& pilot);
+
+  // Each starts its command from `here` (the believed pose on the map held) and returns the first
+  // action (Done: over at once). A confined explore starts a new room (the one after `roomId`, the
+  // brick's room so far): the map is cleared.
+  DriveAction explore(const protocol::ExploreMsg& how, const Pose& here, uint16_t roomId);
+  DriveAction goTo(const protocol::GoToMsg& goal, const Pose& here);
+  DriveAction enterRoom(const protocol::EnterRoomMsg& m, const Pose& here);
+  DriveAction step(const DriveEvent& e);
+  // Stops the command (Stop, a fault, another command): the robot stands where it is believed.
+  void abort();
+
+  bool running() const { return session_.busy(); }
+  // A house command ran since the last other command: its state is what the brick reports.
+  bool active() const { return active_; }
+  void deactivate() { active_ = false; }
+  Pose pose() const { return session_.pose(); }
+  // The map was cleared for a new room since the last call (the link must send it afresh).
+  bool takeMapRestart();
+  // The mode the brick reports while a house command is active.
+  protocol::BrickMode mode() const;
+  // Room ids, the new room's frame, the goal's progress and the room's exits, into `r`.
+  void fill(protocol::BrickReport& r) const;
+  uint16_t roomId() const { return roomId_; }
+  const RoomSession& session() const { return session_; }
+
+ private:
+  void noteNewRoom();
+  void resetExits();   // a new room: no exits yet, running
+  void updateExits();  // the room is mapped: its exits and how its run ended
+
+  ExplorerStack& stack_;
+  RoomConfinement& confinement_;
+  RoomSession session_;
+  bool active_ = false;
+  bool mapRestart_ = false;
+  uint16_t roomId_ = 0, fromRoom_ = 0, pendingRoom_ = 0;
+  Pose origin_{};  // the current room's origin and +y in the frame of the room before it
+  uint16_t roomsSeen_ = 0;
+  protocol::PathProgressMsg goal_{};
+  protocol::RoomExitsMsg exits_{};
+};
+
+}  // namespace nxtmap
