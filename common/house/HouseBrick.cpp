@@ -50,7 +50,11 @@ DriveAction HouseBrick::goTo(const protocol::GoToMsg& goal, const Pose& here) {
   active_ = true;
   goal_ = protocol::PathProgressMsg{goal.goalId, 0, protocol::PathState::Following, here.cell};
   const DriveAction a = session_.goTo(goal.target, here);
-  if (a.kind == DriveAction::Kind::Done) goal_.state = protocol::PathState::Reached;
+  if (a.kind == DriveAction::Kind::Done) {  // over at once: already there, or no way there
+    goal_.state = session_.outcome() == RoomSession::Outcome::Arrived ? protocol::PathState::Reached
+                                                                      : protocol::PathState::Blocked;
+    goal_.at = session_.pose().cell;
+  }
   return a;
 }
 

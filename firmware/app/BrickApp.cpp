@@ -10,6 +10,12 @@ constexpr TachoDecoder::Pins kTachoPins[TachoDecoder::kMotors] = {
 constexpr uint32_t kTickHz = 1000;          // the main loop's millisecond
 constexpr uint32_t kSoftI2cTickHz = 28800;  // 3 ticks per bit at 9600 bit/s
 constexpr uint16_t kAvrSilentTripMs = 100;
+#ifndef NXTMAP_RAM_RUN
+// Doorways the brick's rooms are cut at, in cells: 4 .. 15 wide (0.4 .. 1.5 m at 10 cm cells), at
+// most 3 deep, each jamb a wall of 2+ cells; the same limits as the PC's house planner
+// (host/house/HousePlanner.hpp HouseConfig::doorways) and the stand-in brick (host/link/SimBrick.cpp).
+constexpr DoorwayLimits kDoorways{4, 15, 3, 2};
+#endif
 
 // Interrupt sources, their AIC priority (0..7, 7 first) and handler. The AVR's TWI moves one byte
 // per interrupt and loses the frame if late; the tick and the tacho edges come next, then the soft
@@ -32,11 +38,17 @@ BrickApp::BrickApp()
              {bus_, kSensorPortPins[2]},
              {bus_, kSensorPortPins[3]}},
       stack_(storage_.memory(), config_.explorer()),
+#ifndef NXTMAP_RAM_RUN
+      confinement_(reach_, AppExplorerStorage::kWidth(), AppExplorerStorage::kHeight(), kDoorways,
+                   stack_.config().geometry.hitCells()),
+      house_(stack_, confinement_, PilotConfig{}),
+#endif
       link_(stack_.map().grid(), shadow_, protocol::BrickLinkConfig{}),
       runner_(motion_, sonar_, config_.drive, stack_.config().geometry, config_.sensorPorts),
-      modes_(stack_, runner_, link_, safety_, tacho_, avr_.command(), config_),
+      modes_(stack_, houseBrick(), runner_, link_, safety_, tacho_, avr_.command(), config_),
       radio_(bt_, link_, modes_, avr_),
-      status_(frame_, lcd_, modes_, bt_, link_, avr_, safety_) {}
+      status_(frame_, lcd_, modes_, bt_, link_, avr_, safety_) {
+}
 
 void BrickApp::init() {
   aic_.init(bus_.address(reinterpret_cast<const void*>(nxtmapIsrSpurious)));

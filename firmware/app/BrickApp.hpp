@@ -3,6 +3,8 @@
 
 #include "common/explore/ExplorerStack.hpp"
 #include "common/explore/ExplorerStorage.hpp"
+#include "common/house/HouseBrick.hpp"
+#include "common/house/RoomConfinement.hpp"
 #include "common/protocol/BrickLink.hpp"
 #include "firmware/app/ActionRunner.hpp"
 #include "firmware/app/BrickConfig.hpp"
@@ -67,6 +69,13 @@ class BrickApp {
   void loopOnce();
   void guardMotors(uint32_t nowMs);
   void startSonarClock();
+  HouseBrick* houseBrick() {
+#ifdef NXTMAP_RAM_RUN
+    return nullptr;
+#else
+    return &house_;
+#endif
+  }
 
   Mmio bus_{};
   BrickConfig config_{};
@@ -90,6 +99,13 @@ class BrickApp {
 
   AppExplorerStorage storage_{};
   ExplorerStack stack_;
+#ifndef NXTMAP_RAM_RUN
+  // Mapping a house: the confinement's flood bits (one per cell of the room grid) and the house
+  // commands over the one stack (ModeMachine::houseCommand). Not in the RAM-run image (no room).
+  uint8_t reach_[packedBytes(AppExplorerStorage::kWidth(), AppExplorerStorage::kHeight(), 1)] = {};
+  RoomConfinement confinement_;
+  HouseBrick house_;
+#endif
   uint8_t shadow_[packedBytes(AppExplorerStorage::kWidth(), AppExplorerStorage::kHeight(), 2)] = {};
   protocol::BrickLink link_;
   ActionRunner runner_;

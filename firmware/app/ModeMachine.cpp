@@ -25,15 +25,65 @@ __attribute__((noinline)) DriveAction nxtmapSensorUpdate(ExplorerStack* stack, c
 }
 }
 
+namespace {
+bool isHouseCommand(const protocol::Command& c) {
+  return c.kind == protocol::CommandKind::GoTo || c.kind == protocol::CommandKind::EnterRoom ||
+         (c.kind == protocol::CommandKind::Explore && c.explore.confine);
+}
+}  // namespace
+
 void ModeMachine::carryOut(const protocol::Command& c, uint32_t nowMs) {
+  if (isHouseCommand(c)) return houseCommand(c, nowMs);
+  leaveHouse();
   switch (c.kind) {
     case protocol::CommandKind::Explore: startExploring(Strategy::Frontier, nowMs); break;
     case protocol::CommandKind::Stop: stop(); break;
     case protocol::CommandKind::FollowPath: followPath(c.path, nowMs); break;
     case protocol::CommandKind::MapChunk: takeMapChunk(c.chunk); break;
     case protocol::CommandKind::SetPose: restAt(c.pose); break;
-    case protocol::CommandKind::GoTo:  // mapping a house: wired with the house session
+    case protocol::CommandKind::GoTo:  // houseCommand
     case protocol::CommandKind::EnterRoom: break;
+  }
+}
+
+void ModeMachine::houseCommand(const protocol::Command& c, uint32_t nowMs) {
+  if constexpr (kHouseCommands) {
+    if (house_ == nullptr) return;  // refused like an unknown command
+    const Pose here = pose();
+    runner_.abort();
+    follower_.abort();
+    safety_.clear();
+    tacho_.clearFault();
+    poseFromPath_ = false;
+    DriveAction first;
+    if (c.kind == protocol::CommandKind::Explore)
+      first = house_->explore(c.explore, here, roomId_);  // a new room: the map is cleared
+    else if (c.kind == protocol::CommandKind::GoTo)
+      first = house_->goTo(c.goTo, here);
+    else
+      first = house_->enterRoom(c.enterRoom, here);
+    afterHouseStep(first, nowMs);
+  }
+}
+
+void ModeMachine::afterHouseStep(const DriveAction& next, uint32_t nowMs) {
+  if constexpr (kHouseCommands) {
+    if (house_->takeMapRestart()) link_.mapRestarted();
+    roomId_ = house_->roomId();
+    mapChanged();
+    pending_ = next;
+    if (house_->running()) runner_.begin(next, wheels(), nowMs);
+  }
+}
+
+void ModeMachine::leaveHouse() {
+  if constexpr (kHouseCommands) {
+    if (!houseActive()) return;
+    runner_.abort();
+    house_->abort();
+    house_->deactivate();
+    mode_ = Mode::Idle;
+    restAt(house_->pose());
   }
 }
 
@@ -45,6 +95,7 @@ void ModeMachine::readButton(Button b, uint32_t nowMs) {
   }
   if (nowMs - candidateSince_ < kButtonStableMs || b == lastButton_) return;
   lastButton_ = b;
+  if (b != Button::None) leaveHouse();
   switch (b) {
     case Button::Enter: startExploring(Strategy::Propagation, nowMs); break;
     case Button::Right: startExploring(Strategy::Frontier, nowMs); break;
@@ -58,7 +109,9 @@ void ModeMachine::drive(uint32_t nowMs) {
   DriveEvent e;
   if (!moving() || !runner_.poll(wheels(), nowMs, e)) return;
   driveMotors();  // the action is over: motors to rest before a possibly long explorer decision
-  if (mode_ == Mode::Exploring) {
+  if (houseActive()) {
+    afterHouseStep(house_->step(e), nowMs);
+  } else if (mode_ == Mode::Exploring) {
     stepExplorer(e, nowMs);
   } else if (follower_.next(&e, pending_)) {
     runner_.begin(pending_, wheels(), nowMs);
@@ -95,12 +148,14 @@ void ModeMachine::driveMotors() {
 }
 
 void ModeMachine::halt() {
+  leaveHouse();
   runner_.abort();
   follower_.abort();
   mode_ = Mode::Fault;
 }
 
 Pose ModeMachine::pose() const {
+  if (houseActive()) return house_->pose();
   if (poseFromPath_) return follower_.pose();
   if (const Explorer* e = stack_.explorer()) return e->pose();
   return restPose_;
@@ -108,13 +163,14 @@ Pose ModeMachine::pose() const {
 
 protocol::BrickReport ModeMachine::report(uint16_t batteryMillivolts) const {
   protocol::BrickReport r;
-  r.mode = mode_;
+  r.mode = mode();
   r.pose = pose();
   if (hasRun()) r.counters = counters();
   r.batteryMillivolts = batteryMillivolts;
   r.roomId = roomId_;
   r.roomEntry = Cell{0, 0};
   r.path = follower_.progress();
+  if (houseActive()) house_->fill(r);
   return r;
 }
 

@@ -2,6 +2,7 @@
 #include <cstdint>
 
 #include "common/explore/ExplorerStack.hpp"
+#include "common/house/HouseBrick.hpp"
 #include "common/protocol/BrickLink.hpp"
 #include "common/protocol/Command.hpp"
 #include "firmware/app/ActionRunner.hpp"
@@ -13,18 +14,37 @@
 
 namespace nxtmap::fw {
 
+// The RAM-run image (NXTMAP_RAM_RUN) has no room for the house commands: they are refused there
+// like an unknown command (nothing happens), and no HouseBrick code is linked.
+#if defined(NXTMAP_RAM_RUN)
+inline constexpr bool kHouseCommands = false;
+#else
+inline constexpr bool kHouseCommands = true;
+#endif
+
 // What the brick is doing (protocol::BrickMode) and the commands that change it, from the PC
 // (protocol::Command) and from the buttons (Enter: explore with the published method, Right: explore
 // with the frontier explorer, Exit: stop, Left: new room). Exploring feeds the ActionRunner the
-// ExplorerStack's actions; following a path feeds it the PathFollower's. Owns the follower and the
-// robot's resting pose; the stack, runner, link, safety and tachometers are BrickApp's.
+// ExplorerStack's actions; following a path feeds it the PathFollower's. Mapping a house (a confined
+// Explore, GoTo, EnterRoom from the PC) feeds it the HouseBrick's: while that is active, the mode,
+// pose, room and report are the house's; any other command or button, and a fault, aborts it and
+// leaves the robot resting where the house believed it. Owns the follower and the robot's resting
+// pose; the stack, house, runner, link, safety and tachometers are BrickApp's (`house` may be
+// nullptr: no house commands).
 class ModeMachine {
  public:
   using Mode = protocol::BrickMode;
 
-  ModeMachine(ExplorerStack& stack, ActionRunner& runner, protocol::BrickLink& link, MotorSafety& safety,
-              TachoDecoder& tacho, AvrCommand& motors, const BrickConfig& config)
-      : stack_(stack), runner_(runner), link_(link), safety_(safety), tacho_(tacho), motors_(motors), config_(config) {}
+  ModeMachine(ExplorerStack& stack, HouseBrick* house, ActionRunner& runner, protocol::BrickLink& link,
+              MotorSafety& safety, TachoDecoder& tacho, AvrCommand& motors, const BrickConfig& config)
+      : stack_(stack),
+        house_(house),
+        runner_(runner),
+        link_(link),
+        safety_(safety),
+        tacho_(tacho),
+        motors_(motors),
+        config_(config) {}
   ModeMachine(const ModeMachine&) = delete;
   ModeMachine& operator=(const ModeMachine&) = delete;
 
@@ -42,8 +62,10 @@ class ModeMachine {
   // The motors must stop (a tripped MotorSafety): the run or path is cut short, mode Fault.
   void halt();
 
-  Mode mode() const { return mode_; }
-  bool moving() const { return mode_ == Mode::Exploring || mode_ == Mode::Following; }
+  Mode mode() const { return houseActive() ? house_->mode() : mode_; }
+  bool moving() const { return mode() == Mode::Exploring || mode() == Mode::Following; }
+  // A house command ran since the last other command: mode, pose, room and report are the house's.
+  bool houseActive() const { return kHouseCommands && house_ != nullptr && house_->active(); }
   // True while the runner drives either wheel (whatever the mode).
   bool wheelsDriven() const { return runner_.power(0) != 0 || runner_.power(1) != 0; }
   // Where the robot stands: on the path it follows, in the explorer's run, or where it was left.
@@ -69,10 +91,17 @@ class ModeMachine {
   void stop();
   void newRoom();
   void stepExplorer(const DriveEvent& e, uint32_t nowMs);
+  // A confined Explore, GoTo or EnterRoom: started by the HouseBrick from where the robot stands.
+  void houseCommand(const protocol::Command& c, uint32_t nowMs);
+  // After each house step: the map restart goes to the link, the room id follows, the next action runs.
+  void afterHouseStep(const DriveAction& next, uint32_t nowMs);
+  // Aborts and deactivates the house (if active): the robot rests where the house believed it.
+  void leaveHouse();
   ActionRunner::Wheels wheels() const;
   void mapChanged() { ++mapVersion_; }
 
   ExplorerStack& stack_;
+  HouseBrick* house_;  // nullptr: no house commands (the RAM-run image)
   ActionRunner& runner_;
   protocol::BrickLink& link_;
   MotorSafety& safety_;

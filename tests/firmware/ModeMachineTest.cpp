@@ -1,34 +1,16 @@
 // The brick's mode machine from outside: buttons (debounced) and PC commands in, the mode, room,
 // pose, map and motor command out. The parts it drives are the real ones (explorer stack on a
-// 16 x 16 grid, action runner, brick link); the wheels do not turn.
+// 16 x 16 grid, action runner, brick link: ModeMachineRig); the wheels do not turn here.
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "firmware/app/ModeMachine.hpp"
+#include "tests/firmware/ModeMachineRig.hpp"
 
 namespace nxtmap::fw::test {
 namespace {
 using Mode = protocol::BrickMode;
-
-constexpr TachoDecoder::Pins kPins[TachoDecoder::kMotors] = {{1u << 15, 1u << 1}, {1u << 26, 1u << 9}, {1u, 1u << 8}};
-
-struct Brick {
-  BrickConfig config{};
-  ExplorerStorage<16, 16, 128> storage{};
-  ExplorerStack stack{storage.memory(), config.explorer()};
-  uint8_t shadow[packedBytes(16, 16, 2)] = {};
-  protocol::BrickLink link{stack.map().grid(), shadow, protocol::BrickLinkConfig{}};
-  MotionController motion{};
-  SoftI2c i2c{};
-  SonarSequencer sonar{i2c};
-  ActionRunner runner{motion, sonar, config.drive, stack.config().geometry, config.sensorPorts};
-  MotorSafety safety{};
-  TachoDecoder tacho{kPins};
-  AvrCommand motors{};
-  ModeMachine modes{stack, runner, link, safety, tacho, motors, config};
-};
 
 struct Press {
   Button button;
@@ -84,12 +66,6 @@ TEST(ModeMachine, ButtonsCountOnceHeldFor50MsAndChangeTheMode) {
     EXPECT_EQ(b.modes.roomId(), c.room) << c.name;
     EXPECT_EQ(b.modes.hasRun(), c.run) << c.name;
   }
-}
-
-protocol::Command commandOf(protocol::CommandKind kind) {
-  protocol::Command c;
-  c.kind = kind;
-  return c;
 }
 
 TEST(ModeMachine, PcCommandsExploreStopAndSetThePose) {
