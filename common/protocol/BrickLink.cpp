@@ -251,11 +251,11 @@ bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out) 
     return send(Op::Battery, false, p, out);
   }
   if (!statusSent_ || nowMs - lastStatusMs_ >= config_.statusPeriodMs) {
-    // Every period: Status; every other period: Counters. Pose and path repeat with it, so a
-    // lost report (e.g. "blocked") is made good within one period even on a bad link.
+    // Every period: Status; every other period: Counters. Pose, path and room repeat with it, so a
+    // lost report (e.g. "blocked", the new room's frame) is made good within one period on a bad link.
     statusSent_ = true;
     lastStatusMs_ = nowMs;
-    posePending_ = pathPending_ = true;
+    posePending_ = pathPending_ = roomPending_ = true;
     countersPhase_ = !countersPhase_;
     countersDue_ = countersPhase_;
     exitsDue_ = report.exits != nullptr;

@@ -81,7 +81,7 @@ Console::Console(link::LinkRunner& runner, std::string linkText)
       goals_(runner),
       house_(runner),
       route_(runner, house_, goals_),
-      exploration_(runner) {}
+      exploration_() {}
 
 std::string Console::execute(const ConsoleCommand& c) {
   std::string out;
@@ -167,15 +167,19 @@ std::string Console::explore(const ConsoleCommand&) {
   return "exploring\n";
 }
 
+double Console::clockS() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
 std::string Console::exploreHouse(const ConsoleCommand&) {
   goals_.cancel();
   route_.cancel();
-  return exploration_.start();
+  return runner_.with([&](link::Session& s) { return exploration_.start(s, clockS()); });
 }
 
 std::string Console::pollHouse() {
   runner_.with([](link::Session& s) { return s.takeRoomChanges(); });  // the planner keeps the rooms
-  std::string out = exploration_.poll();
+  std::string out = runner_.with([&](link::Session& s) { return exploration_.poll(s, clockS()); });
   if (!exploration_.done()) return out;
   // The planner's house becomes the console's; the brick gets the room it stands in, in its frame.
   const int room = exploration_.roomOfRobot();
@@ -198,6 +202,7 @@ std::string Console::waitHouse(double seconds) {
 }
 
 std::string Console::stop(const ConsoleCommand&) {
+  exploration_.cancel();
   goals_.cancel();
   route_.cancel();
   runner_.with([](link::Session& s) { return s.stop(); });

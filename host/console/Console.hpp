@@ -85,6 +85,7 @@ class Console {
   std::string dropGoalForNewRoom();
   std::string pollHouse();  // the house exploration; once it is done, its house becomes the console's
   std::string waitHouse(double seconds);
+  static double clockS();  // seconds of a steady clock
   bool waitFor(const std::function<bool()>& done, double seconds);
   void waitForUpload() {
     if (house_.uploadPending()) waitFor([&] { return !house_.uploadPending(); }, 5.0);

@@ -39,26 +39,22 @@ Doorway doorwayOf(const protocol::DoorwayMsg& m) {
 
 }  // namespace
 
-HouseExploration::HouseExploration(link::LinkRunner& runner) : runner_(runner) {}
-
-std::string HouseExploration::start() {
+std::string HouseExploration::start(link::Session& s, double nowS) {
   if (active_) throw ConsoleError("explore house: the house is being mapped already (wait house)");
   planner_.emplace(linkPlanner(), RangeGeometry{});
   active_ = true;
   done_ = false;
   roomsMapped_ = 0;
-  started_ = std::chrono::steady_clock::now();
-  room_ = runner_.with([](link::Session& s) { return s.status() ? s.status()->roomId : uint16_t{0}; });
+  startedS_ = nowS_ = nowS;
+  room_ = s.status() ? s.status()->roomId : uint16_t{0};
   ++room_;  // a confined explore starts the next room
-  return "mapping the house: " + send(planner_->start());
+  return "mapping the house: " + send(s, planner_->start());
 }
 
-std::string HouseExploration::send(const house::HouseOrder& o) {
+std::string HouseExploration::send(link::Session& s, const house::HouseOrder& o) {
   switch (o.kind) {
     case Kind::ExploreFirstRoom:
-      runner_.with([](link::Session& s) {
-        return s.explore(protocol::ExploreMsg{protocol::ExploreStrategy::Frontier, true});
-      });
+      s.explore(protocol::ExploreMsg{protocol::ExploreStrategy::Frontier, true});
       wait_ = Wait::Room;
       return "the brick maps the room it stands in\n";
     case Kind::Travel: {
@@ -70,11 +66,9 @@ std::string HouseExploration::send(const house::HouseOrder& o) {
       const Bounds window{static_cast<int16_t>(o.map.minX()), static_cast<int16_t>(o.map.minY()),
                           static_cast<int16_t>(o.map.maxX()), static_cast<int16_t>(o.map.maxY())};
       ++goalId_;
-      runner_.with([&](link::Session& s) {
-        s.uploadMap(window, cells, transferId_++);
-        s.setPose(Pose{});
-        return s.goTo(goalId_, o.target);
-      });
+      s.uploadMap(window, cells, transferId_++);
+      s.setPose(Pose{});
+      s.goTo(goalId_, o.target);
       wait_ = Wait::Goal;
       return "";
     }
@@ -86,12 +80,11 @@ std::string HouseExploration::send(const house::HouseOrder& o) {
       m.door = doorwayMessage(o.exit.door);
       m.outward = o.exit.outward;
       m.inside = o.exit.inside;
-      runner_.with([&](link::Session& s) {
-        s.setPose(o.at);
-        return s.enterRoom(m);
-      });
+      s.setPose(o.at);
+      enterSeq_ = s.enterRoom(m);
+      statusesAtAck_ = 0;
       wait_ = Wait::Cross;
-      crossSince_ = std::chrono::steady_clock::now();
+      crossSinceS_ = nowS_;
       return "";
     }
     case Kind::Scan:  // never asked for: relocaliseCells is 0 over the link
@@ -103,11 +96,11 @@ std::string HouseExploration::send(const house::HouseOrder& o) {
   return "the house is mapped: " + progress() + "\n";
 }
 
-house::HouseReport HouseExploration::roomReport() const {
-  return runner_.with([&](link::Session& s) {
+house::HouseReport HouseExploration::roomReport(link::Session& s) const {
+  {
     house::HouseReport r;
     r.kind = house::HouseReport::Kind::RoomMapped;
-    r.pose = s.pose() ? *s.pose() : Pose{};
+    r.pose = s.status()->pose;
     const Bounds b = s.map().bounds();
     r.map = network::RoomMap(b.minX, b.minY, b.width(), b.height());
     s.map().forEach([&](Cell c, CellState st) { r.map.set(c, st); });
@@ -116,50 +109,57 @@ house::HouseReport HouseExploration::roomReport() const {
       r.exits.push_back(RoomExit{doorwayOf(m.exits[i].door), m.exits[i].inside, m.exits[i].outward});
     if (s.room() && s.room()->roomId == room_) r.crossedAt = Pose{s.room()->origin, s.room()->heading};
     return r;
-  });
+  }
 }
 
-std::optional<house::HouseReport> HouseExploration::arrived() {
+std::optional<house::HouseReport> HouseExploration::arrived(link::Session& s) {
   if (wait_ == Wait::Cross) {
-    const auto [entered, idle, pose] = runner_.with([&](link::Session& s) {
-      const bool in = s.status() && s.status()->roomId == room_;
-      const bool still = s.commandsDone() && s.status() && s.status()->mode == protocol::BrickMode::Idle;
-      return std::make_tuple(in, still, s.pose() ? *s.pose() : Pose{});
-    });
+    const bool entered = (s.status() && s.status()->roomId == room_) || (s.room() && s.room()->roomId == room_);
+    if (statusesAtAck_ == 0 && s.acknowledged(enterSeq_)) {
+      statusesAtAck_ = s.statusesReceived() + 1;
+      crossSinceS_ = nowS_;
+    }
+    // Blocked: the brick says it is idle in its old room, in statuses sent after it ran EnterRoom
+    // (the second after the acknowledgement: the first may have left before), a while after.
+    const bool idleSince =
+        statusesAtAck_ != 0 && s.statusesReceived() > statusesAtAck_ && s.status()->mode == protocol::BrickMode::Idle;
     if (entered) wait_ = Wait::Room;
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - crossSince_).count();
-    if (!entered && idle && s > kCrossBlockedS) {
+    if (!entered && idleSince && nowS_ - crossSinceS_ > kCrossBlockedS) {
       house::HouseReport r;
       r.kind = house::HouseReport::Kind::CrossBlocked;
-      r.pose = pose;
+      r.pose = s.status()->pose;
       --room_;
       return r;
     }
   }
   if (wait_ == Wait::Room) {
-    const bool mapped = runner_.with([&](link::Session& s) {
-      return s.roomExits() && s.roomExits()->roomId == room_ && s.roomExits()->end != ExplorerEnd::Running;
-    });
-    if (mapped) return roomReport();
+    // The room's end (its whole map held here) and a Status of the brick done in that room (its pose).
+    // After a crossing, also the new room's frame (NewRoom, repeated with every Status).
+    const auto& st = s.status();
+    const bool framed = roomsMapped_ == 0 || (s.room() && s.room()->roomId == room_);
+    if (s.roomExits() && s.roomExits()->roomId == room_ && s.roomExits()->end != ExplorerEnd::Running && st &&
+        st->roomId == room_ && st->mode == protocol::BrickMode::Done && framed)
+      return roomReport(s);
   }
   if (wait_ == Wait::Goal) {
-    return runner_.with([&](link::Session& s) -> std::optional<house::HouseReport> {
-      const auto& p = s.pathProgress();
-      if (!s.commandsDone() || !p || p->pathId != goalId_) return std::nullopt;
-      if (p->state != protocol::PathState::Reached && p->state != protocol::PathState::Blocked) return std::nullopt;
-      house::HouseReport r;
-      r.kind = p->state == protocol::PathState::Reached ? house::HouseReport::Kind::Arrived
-                                                        : house::HouseReport::Kind::NotArrived;
-      r.pose = s.pose() ? *s.pose() : Pose{};
-      return r;
-    });
+    // The goal's end and the pose it ended at, from one Status (a Pose message may be older).
+    const auto& st = s.status();
+    if (!s.commandsDone() || !st || st->path.pathId != goalId_) return std::nullopt;
+    if (st->path.state != protocol::PathState::Reached && st->path.state != protocol::PathState::Blocked)
+      return std::nullopt;
+    house::HouseReport r;
+    r.kind = st->path.state == protocol::PathState::Reached ? house::HouseReport::Kind::Arrived
+                                                            : house::HouseReport::Kind::NotArrived;
+    r.pose = st->pose;
+    return r;
   }
   return std::nullopt;
 }
 
-std::string HouseExploration::poll() {
+std::string HouseExploration::poll(link::Session& s, double nowS) {
   if (!active_) return "";
-  const std::optional<house::HouseReport> r = arrived();
+  nowS_ = nowS;
+  const std::optional<house::HouseReport> r = arrived(s);
   if (!r) return "";
   std::string out;
   if (r->kind == house::HouseReport::Kind::RoomMapped) {
@@ -168,7 +168,7 @@ std::string HouseExploration::poll() {
     o << "house: room " << roomsMapped_ << " mapped, " << r->exits.size() << " exits; " << progress() << "\n";
     out += o.str();
   }
-  return out + send(planner_->on(*r));
+  return out + send(s, planner_->on(*r));
 }
 
 int HouseExploration::roomOfRobot() const {
@@ -182,7 +182,7 @@ int HouseExploration::roomOfRobot() const {
 
 std::string HouseExploration::progress() const {
   std::ostringstream o;
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  const double s = nowS_ - startedS_;
   o << planner_->network().rooms().size() << " rooms, " << planner_->network().gateways().size() << " gateways, "
     << planner_->exitsLeft() << " exits left, " << std::fixed << std::setprecision(1) << s << " s";
   return o.str();

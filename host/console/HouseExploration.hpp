@@ -5,26 +5,29 @@
 // sends the brick to the exit (GoTo), then through it into the next room (EnterRoom); until no exit
 // is left. Every order is a reliable command, run once by the brick. Progress is reported as lines
 // (rooms done, exits left, time). The link may drop and come back in between: the orders wait.
+// Works on the PC's Session directly (the console calls it under the link runner's lock); times are
+// seconds of the caller's clock.
 // Relocalisation by a standing scan and the start anchor are the simulator's only for now (the link
 // carries no scan yet).
 #pragma once
-#include <chrono>
 #include <optional>
 #include <string>
 
 #include "host/house/HousePlanner.hpp"
-#include "host/link/LinkRunner.hpp"
+#include "host/link/Session.hpp"
 
 namespace nxtmap::console {
 
 class HouseExploration {
  public:
-  explicit HouseExploration(link::LinkRunner& runner);
+  HouseExploration() = default;
 
   // Starts mapping the house from the room the brick stands in. Returns what to print.
-  std::string start();
+  std::string start(link::Session& s, double nowS);
   // Follows the brick; returns progress lines ("" when nothing new).
-  std::string poll();
+  std::string poll(link::Session& s, double nowS);
+  // Gives up (the console's stop): nothing more is sent.
+  void cancel() { active_ = false; }
   bool active() const { return active_; }
   bool done() const { return done_; }
   const house::HousePlanner& planner() const { return *planner_; }
@@ -32,20 +35,23 @@ class HouseExploration {
   // The room (index in the planner's network) the robot stands in, as believed.
   int roomOfRobot() const;
   std::string progress() const;
+  int roomsMapped() const { return roomsMapped_; }
 
  private:
   enum class Wait { Nothing, Room, Goal, Cross };
-  std::string send(const house::HouseOrder& o);
-  std::optional<house::HouseReport> arrived();  // the report the brick gave for the current order
-  house::HouseReport roomReport() const;
+  std::string send(link::Session& s, const house::HouseOrder& o);
+  // The report the brick gave for the current order, once it is complete.
+  std::optional<house::HouseReport> arrived(link::Session& s);
+  house::HouseReport roomReport(link::Session& s) const;
 
-  link::LinkRunner& runner_;
   std::optional<house::HousePlanner> planner_;
   bool active_ = false, done_ = false;
   Wait wait_ = Wait::Nothing;
   uint16_t room_ = 0;  // the brick's id of the room being mapped (or entered)
   uint16_t goalId_ = 0, transferId_ = 0x4000;
-  std::chrono::steady_clock::time_point started_{}, crossSince_{};
+  uint16_t enterSeq_ = 0;       // the EnterRoom command's sequence number
+  uint64_t statusesAtAck_ = 0;  // statuses received when it was acknowledged (0: not yet)
+  double startedS_ = 0, crossSinceS_ = 0, nowS_ = 0;
   int roomsMapped_ = 0;
 };
 

@@ -9,24 +9,34 @@
 
 namespace nxtmap::house {
 namespace {
-CellState beliefAt(const HouseMapper& m, const network::RoomMap& merged, int col, int row) {
-  return merged.at(m.houseFrame().toExplorer(col, row));
+CellState beliefAt(const mapping::FrameTransform& f, const network::RoomMap& merged, int col, int row) {
+  return merged.at(f.toExplorer(col, row));
+}
+
+HouseInWorld inWorld(const HouseMapper& m) {
+  return HouseInWorld{&m.network(),        &m.world(),          m.houseFrame(),
+                      m.config().startCol, m.config().startRow, m.explorerConfig().geometry};
 }
 }  // namespace
 
-HouseScore scoreHouse(const HouseMapper& m) {
-  const sim::World& world = m.world();
-  const RangeGeometry& g = m.explorerConfig().geometry;
-  const sim::Observability obs =
-      sim::computeObservability(world, m.config().startCol, m.config().startRow, g.freeCells(), g.hitCells());
-  const network::RoomMap merged = m.network().merged();
+HouseScore scoreHouse(const HouseMapper& m) { return scoreHouse(inWorld(m)); }
+
+PlanCoverage planCoverage(const HouseMapper& m, const HousePlan& plan, double minPct) {
+  return planCoverage(inWorld(m), plan, minPct);
+}
+
+HouseScore scoreHouse(const HouseInWorld& h) {
+  const sim::World& world = *h.world;
+  const RangeGeometry& g = h.geometry;
+  const sim::Observability obs = sim::computeObservability(world, h.startCol, h.startRow, g.freeCells(), g.hitCells());
+  const network::RoomMap merged = h.network->merged();
   HouseScore s;
-  s.rooms = static_cast<int>(m.network().rooms().size());
-  s.gateways = static_cast<int>(m.network().gateways().size());
+  s.rooms = static_cast<int>(h.network->rooms().size());
+  s.gateways = static_cast<int>(h.network->gateways().size());
   for (int row = 0; row < world.height(); ++row) {
     for (int col = 0; col < world.width(); ++col) {
       const bool blocked = world.blocked(col, row);
-      const CellState b = beliefAt(m, merged, col, row);
+      const CellState b = beliefAt(h.houseFrame, merged, col, row);
       const bool disagree = b != CellState::Unknown && ((b == CellState::Occupied) != blocked);
       if (obs.observable[static_cast<size_t>(row * world.width() + col)] == 0) {
         if (disagree) ++s.wrongElsewhere;
@@ -45,10 +55,10 @@ HouseScore scoreHouse(const HouseMapper& m) {
   return s;
 }
 
-PlanCoverage planCoverage(const HouseMapper& m, const HousePlan& plan, double minPct) {
-  const sim::World& world = m.world();
-  const sim::Observability obs = sim::computeObservability(world, m.config().startCol, m.config().startRow, 1, 1);
-  const network::RoomMap merged = m.network().merged();
+PlanCoverage planCoverage(const HouseInWorld& h, const HousePlan& plan, double minPct) {
+  const sim::World& world = *h.world;
+  const sim::Observability obs = sim::computeObservability(world, h.startCol, h.startRow, 1, 1);
+  const network::RoomMap merged = h.network->merged();
   PlanCoverage c;
   c.planRooms = static_cast<int>(plan.rooms.size());
   for (const PlanRoom& r : plan.rooms) {
@@ -57,7 +67,7 @@ PlanCoverage planCoverage(const HouseMapper& m, const HousePlan& plan, double mi
       for (int col = r.minCol; col <= r.maxCol; ++col) {
         if (!world.inside(col, row) || obs.reachable[static_cast<size_t>(row * world.width() + col)] == 0) continue;
         ++reachable;
-        if (beliefAt(m, merged, col, row) == CellState::Free) ++mapped;
+        if (beliefAt(h.houseFrame, merged, col, row) == CellState::Free) ++mapped;
       }
     }
     if (reachable == 0) continue;

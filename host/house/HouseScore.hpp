@@ -19,7 +19,18 @@ struct HouseScore {
   double agreementPct() const { return observable == 0 ? 100.0 : 100.0 * agree / observable; }
 };
 
+// A mapped house and the world it was mapped in: the house frame (room 0's) in world cells, the
+// start cell, and the robot's sonar geometry (what a reachable cell can observe).
+struct HouseInWorld {
+  const network::HouseNetwork* network = nullptr;
+  const sim::World* world = nullptr;
+  mapping::FrameTransform houseFrame{0, 0, sim::Heading::N};
+  int startCol = 0, startRow = 0;
+  RangeGeometry geometry;
+};
+
 HouseScore scoreHouse(const HouseMapper& mapper);
+HouseScore scoreHouse(const HouseInWorld& house);
 
 // Plan rooms (room boxes) whose reachable free cells the merged map holds as free to at least
 // `minPct` percent; rooms with no reachable cell are not counted in `reachable`.
@@ -29,6 +40,7 @@ struct PlanCoverage {
   int covered = 0;    // ... mapped to at least minPct
 };
 PlanCoverage planCoverage(const HouseMapper& mapper, const HousePlan& plan, double minPct = 90.0);
+PlanCoverage planCoverage(const HouseInWorld& house, const HousePlan& plan, double minPct = 90.0);
 
 // Names the mapped rooms after the plan: each plan room box whose centre (or nearest free cell
 // to it) is a free cell of a room map gets a label there, the category in lower case ("kitchen",

@@ -62,15 +62,19 @@ void Session::uploadMap(const Bounds& window, const std::vector<CellState>& rowM
   if (window.empty() || window.width() > 128 || window.height() > 128 || rowMajor.size() != total) {
     throw std::invalid_argument("a map to upload must be 1..128 cells on each side, one state per cell");
   }
-  const uint16_t chunks = static_cast<uint16_t>((total + kChunkCells - 1) / kChunkCells);
+  // A damaged link loses long packets far more often than short ones (each byte is a chance): once
+  // commands have needed resending or noise was skipped, the map goes in short chunks.
+  const bool damaged = counters_.commandRetries > 0 || decoder_.counters().skipped > 0;
+  const size_t per = damaged ? kDamagedLinkChunkCells : kChunkCells;
+  const uint16_t chunks = static_cast<uint16_t>((total + per - 1) / per);
   for (uint16_t k = 0; k < chunks; ++k) {
     MapChunkMsg m;
     m.transferId = transferId;
     m.chunkIndex = k;
     m.chunkCount = chunks;
     m.window = window;
-    m.offset = static_cast<uint16_t>(k * kChunkCells);
-    m.count = static_cast<uint16_t>(std::min<size_t>(kChunkCells, total - m.offset));
+    m.offset = static_cast<uint16_t>(k * per);
+    m.count = static_cast<uint16_t>(std::min<size_t>(per, total - m.offset));
     for (uint16_t i = 0; i < m.count; ++i) m.setState(i, rowMajor[m.offset + i]);
     Payload p;
     encodeMapChunk(m, p);
@@ -231,6 +235,7 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
       StatusMsg s;
       if (decodeStatus(v.payload, v.payloadSize, s)) {
         status_ = s;
+        ++statuses_;
         noteRoom(s.roomId);
         setPoseFromBrick(s.pose);
         poseRoom_ = s.roomId;

@@ -61,6 +61,8 @@ struct RoomChange {
 
 class Session {
  public:
+  // Cells per MapChunk on a link that damages bytes (a frame of about 40 bytes; kChunkCells otherwise).
+  static constexpr size_t kDamagedLinkChunkCells = 48;
   explicit Session(const SessionConfig& config = {});
 
   void receive(const uint8_t* data, size_t size, uint32_t nowMs);
@@ -100,6 +102,8 @@ class Session {
 
   const MirrorMap& map() const { return map_; }
   const std::optional<protocol::StatusMsg>& status() const { return status_; }
+  // Statuses received so far (to tell a status sent after some event from an older one).
+  uint64_t statusesReceived() const { return statuses_; }
   const std::optional<protocol::CountersMsg>& brickCounters() const { return brickCounters_; }
   const std::optional<Pose>& pose() const { return pose_; }
   const std::optional<protocol::PathProgressMsg>& pathProgress() const { return path_; }
@@ -165,6 +169,7 @@ class Session {
   std::optional<protocol::PathProgressMsg> path_;
   std::optional<protocol::NewRoomMsg> room_;
   std::optional<protocol::RoomExitsMsg> roomExits_;
+  uint64_t statuses_ = 0;
   std::optional<uint16_t> battery_;
   std::optional<uint16_t> legoBattery_;
   std::optional<protocol::HelloReplyMsg> hello_;

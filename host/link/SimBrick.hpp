@@ -55,6 +55,8 @@ class SimBrick {
   void newRoom();
 
   const RoomGrid& grid() const { return stack_.map().grid(); }
+  const sim::World& world() const { return world_; }  // the truth on the robot's grid
+  const ExplorerConfig& explorerConfig() const { return stack_.config(); }
   protocol::BrickMode mode() const { return mode_; }
   const protocol::BrickLink& link() const { return link_; }
   // The current run's explorer counters (zero before the first Explore), as the brick reports them.
@@ -68,6 +70,8 @@ class SimBrick {
   const protocol::PathProgressMsg& path() const { return path_; }
   uint32_t mapChunks() const { return mapChunks_; }
   uint16_t roomId() const { return roomId_; }
+  // The house commands' state (rooms started, the room's exits, ...).
+  const HouseBrick& house() const { return house_; }
   // The robot's true cell in the world, and the world cell of a cell of the brick's map.
   void trueCell(int& col, int& row) const;
   void toWorld(Cell c, int& col, int& row) const { frame_.toWorld(c, col, row); }

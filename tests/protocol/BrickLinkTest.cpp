@@ -107,9 +107,10 @@ TEST_F(BrickLinkTest, HelloOpensASessionAndTheWholeStateFollows) {
   EXPECT_EQ(reply.gridWidthLog2, 6);
   EXPECT_EQ(reply.mapEpoch, link.mapEpoch());
   EXPECT_TRUE(reply.freshSession);
-  for (Op op : {Op::NewRoom, Op::Status, Op::Counters, Op::MapDelta}) EXPECT_EQ(r.count(op), 1u);
+  for (Op op : {Op::Status, Op::Counters, Op::MapDelta}) EXPECT_EQ(r.count(op), 1u);
   EXPECT_EQ(r.count(Op::Pose), 2u);  // at the Hello and again with the first Status
   EXPECT_EQ(r.count(Op::PathProgress), 2u);
+  EXPECT_EQ(r.count(Op::NewRoom), 2u);
   EXPECT_TRUE(mirror.equals(o.grid));
   // Quiet until the next status period; then Status with pose and path again, Counters every other time.
   EXPECT_TRUE(collect(100).headers.empty());
@@ -117,6 +118,7 @@ TEST_F(BrickLinkTest, HelloOpensASessionAndTheWholeStateFollows) {
   EXPECT_EQ(period.count(Op::Status), 1u);
   EXPECT_EQ(period.count(Op::Pose), 1u);
   EXPECT_EQ(period.count(Op::PathProgress), 1u);
+  EXPECT_EQ(period.count(Op::NewRoom), 1u);  // the room's frame, repeated like the pose (a lost one matters)
   EXPECT_EQ(period.count(Op::Counters), 0u);
   EXPECT_EQ(collect(1000).count(Op::Counters), 1u);
   // Pose changes are reported at once.
@@ -277,6 +279,68 @@ TEST_F(BrickLinkTest, MailboxMessagesReachTheFirmware) {
   Mailboxes::Message m;
   ASSERT_TRUE(link.mailboxes().read(1, true, m));
   EXPECT_STREQ(reinterpret_cast<const char*>(m.bytes), "stop");
+}
+
+}  // namespace
+}  // namespace nxtmap::protocol
+
+namespace nxtmap::protocol {
+namespace {
+
+// The house commands: each decoded into its command, run once; a malformed one acknowledged and never run.
+TEST_F(BrickLinkTest, HouseCommandsAreDecodedIntoTheirCommands) {
+  hello(9);
+  collect(0);
+  Payload explore, go, enter, badEnter;
+  encodeExplore(ExploreMsg{ExploreStrategy::Propagation, true}, explore);
+  encodeGoTo(GoToMsg{7, Cell{-3, 12}}, go);
+  EnterRoomMsg m;
+  m.roomId = 4;
+  m.door = DoorwayMsg{Cell{-1, 5}, 4, 1, true};
+  m.outward = Dir::North;
+  m.inside = Cell{0, 4};
+  encodeEnterRoom(m, enter);
+  badEnter = enter;
+  badEnter.bytes[10] = static_cast<uint8_t>(Dir::East);  // outward East does not cross an along-x doorway
+  feed(test::pcPacket(Op::Explore, 1, received, &explore));
+  feed(test::pcPacket(Op::GoTo, 2, received, &go));
+  std::vector<Command> cmds = commands();
+  feed(test::pcPacket(Op::EnterRoom, 3, received, &enter));
+  feed(test::pcPacket(Op::EnterRoom, 4, received, &badEnter));
+  const std::vector<Command> more = commands();
+  cmds.insert(cmds.end(), more.begin(), more.end());
+  ASSERT_EQ(cmds.size(), 3u);
+  EXPECT_EQ(cmds[0].kind, CommandKind::Explore);
+  EXPECT_TRUE(cmds[0].explore.confine);
+  EXPECT_EQ(cmds[0].explore.strategy, ExploreStrategy::Propagation);
+  EXPECT_EQ(cmds[1].kind, CommandKind::GoTo);
+  EXPECT_EQ(cmds[1].goTo.goalId, 7);
+  EXPECT_EQ(cmds[1].goTo.target, (Cell{-3, 12}));
+  EXPECT_EQ(cmds[2].kind, CommandKind::EnterRoom);
+  EXPECT_EQ(cmds[2].enterRoom.roomId, 4);
+  EXPECT_EQ(cmds[2].enterRoom.inside, (Cell{0, 4}));
+  EXPECT_EQ(link.counters().commandsRun, 3u);
+}
+
+// RoomExits tells the room's end only once the PC holds every cell of the map.
+TEST_F(BrickLinkTest, ARoomsEndIsToldOnlyOnceThePcHoldsTheWholeMap) {
+  RoomExitsMsg exits;
+  exits.roomId = 2;
+  exits.end = ExplorerEnd::Complete;
+  report.exits = &exits;
+  hello(11);
+  ASSERT_TRUE(o.grid.set(Cell{0, 0}, CellState::Free));
+  Received first = collect(0);  // the map delta goes out, not yet acknowledged
+  ASSERT_NE(first.last(Op::RoomExits), nullptr);
+  RoomExitsMsg told;
+  ASSERT_TRUE(decodeRoomExits(first.last(Op::RoomExits)->data(), first.last(Op::RoomExits)->size(), told));
+  EXPECT_EQ(told.end, ExplorerEnd::Running);
+  feed(test::pcPacket(Op::Ack, 0, received));  // the PC acknowledges the delta
+  const Received later = collect(600);
+  ASSERT_NE(later.last(Op::RoomExits), nullptr);
+  ASSERT_TRUE(decodeRoomExits(later.last(Op::RoomExits)->data(), later.last(Op::RoomExits)->size(), told));
+  EXPECT_EQ(told.end, ExplorerEnd::Complete);
+  EXPECT_EQ(told.roomId, 2);
 }
 
 }  // namespace
