@@ -51,6 +51,7 @@ CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& o) {
   c->add_option("--heading", o.heading, "initial heading N, E, S or W (default N)");
   addRangeOption(*c, o.run);
   addWorldRunOptions(*c, o.run);
+  addGridOption(*c, o.run);
   c->add_option("--seed", o.seed, "random seed of the noise (default 1)");
   c->add_option("--strategy", o.strategy,
                 "exploration strategy per room: propagation, frontier (default frontier: fewer turns, so the pose "
@@ -70,6 +71,7 @@ int runSimHouse(const SimHouseOptions& o) {
   config.noise = parseNoise(o.run.noise);
   config.seed = parseSeed(o.seed);
   config.strategy = parseStrategy(o.strategy);
+  config.grid = gridOf(o.run);
   std::optional<house::HousePlan> plan;
   if (endsWith(o.world, ".json")) {  // the plan's rooms label the mapped ones and score the coverage
     house::HousePlanLoad l = house::loadHouseExpo(o.world);
@@ -100,7 +102,8 @@ int runSimHouse(const SimHouseOptions& o) {
   out << "house            " << (plan ? plan->id : world.name()) << " " << world.width() << "x" << world.height()
       << ", robot " << robot.name << " (" << robot.cellCm << " cm cells), start " << mapper.config().startCol << ","
       << mapper.config().startRow << " heading " << o.heading << ", strategy " << mapping::strategyName(config.strategy)
-      << ", noise " << config.noise.name << ", seed " << config.seed << "\n";
+      << ", noise " << config.noise.name << ", seed " << config.seed
+      << (config.grid.isBrick() ? std::string() : ", grid " + config.grid.describe()) << "\n";
   for (const network::RoomNode& r : mapper.network().rooms()) {
     out << "  " << r.name << "  " << r.map.width() << "x" << r.map.height() << " cells, "
         << r.map.count(CellState::Free) << " free, origin at house cell " << r.toHouse.x() << "," << r.toHouse.y()

@@ -184,9 +184,10 @@ std::string Console::pollHouse() {
   // The planner's house becomes the console's; the brick gets the room it stands in, in its frame.
   const int room = exploration_.roomOfRobot();
   if (room < 0) return out;
-  const network::HouseNetwork& h = exploration_.planner().network();
+  network::HouseNetwork h = exploration_.planner().network();
   const network::RoomTransform toRoom = h.rooms()[static_cast<size_t>(room)].toHouse.inverse();
   const Pose b = exploration_.planner().belief();
+  h.rooms()[0].labels["start"] = Cell{0, 0};  // where the robot was set down (room 0's origin)
   house_.useHouse(h, 0.10, room);
   out += house_.enterHouseRoom();
   runner_.with([&](link::Session& s) { return s.setPose(Pose{toRoom.apply(b.cell), toRoom.apply(b.heading)}); });

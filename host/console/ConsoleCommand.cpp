@@ -27,7 +27,8 @@ void expectArgs(const std::vector<std::string>& w, size_t n, const char* form) {
 
 const char* consoleHelp() {
   return "explore              start (or resume) exploring\n"
-         "explore house        map the whole house by itself: room by room, through every exit\n"
+         "explore house        map the whole house by itself: room by room, through every exit (the\n"
+         "                     start is labelled 'start')\n"
          "stop                 stop the robot\n"
          "goto C R             drive to map cell column C, row R (as the map shows them)\n"
          "goto near LABEL      drive next to a labelled cell\n"
