@@ -42,6 +42,7 @@ DriveAction HouseBrick::explore(const protocol::ExploreMsg& how, const Pose& her
   resetExits();
   const DriveAction a = session_.exploreRoom(strategyOf(how.strategy), Pose{}, nullptr);
   roomsSeen_ = session_.roomsStarted();
+  if (a.kind == DriveAction::Kind::Done) updateExits();  // nothing to map: the room is done at once
   return a;
 }
 

@@ -57,36 +57,8 @@ std::string HouseExploration::send(link::Session& s, const house::HouseOrder& o)
       s.explore(protocol::ExploreMsg{protocol::ExploreStrategy::Frontier, true});
       wait_ = Wait::Room;
       return "the brick maps the room it stands in\n";
-    case Kind::Travel: {
-      std::vector<CellState> cells;
-      for (int y = o.map.minY(); y <= o.map.maxY(); ++y) {
-        for (int x = o.map.minX(); x <= o.map.maxX(); ++x)
-          cells.push_back(o.map.at(Cell{static_cast<int16_t>(x), static_cast<int16_t>(y)}));
-      }
-      const Bounds window{static_cast<int16_t>(o.map.minX()), static_cast<int16_t>(o.map.minY()),
-                          static_cast<int16_t>(o.map.maxX()), static_cast<int16_t>(o.map.maxY())};
-      ++goalId_;
-      s.uploadMap(window, cells, transferId_++);
-      s.setPose(Pose{});
-      s.goTo(goalId_, o.target);
-      wait_ = Wait::Goal;
-      return "";
-    }
-    case Kind::Cross: {
-      ++room_;
-      protocol::EnterRoomMsg m;
-      m.roomId = room_;
-      m.strategy = protocol::ExploreStrategy::Frontier;
-      m.door = doorwayMessage(o.exit.door);
-      m.outward = o.exit.outward;
-      m.inside = o.exit.inside;
-      s.setPose(o.at);
-      enterSeq_ = s.enterRoom(m);
-      statusesAtAck_ = 0;
-      wait_ = Wait::Cross;
-      crossSinceS_ = nowS_;
-      return "";
-    }
+    case Kind::Travel: sendTravel(s, o); return "";
+    case Kind::Cross: sendCross(s, o); return "";
     case Kind::Scan:  // never asked for: relocaliseCells is 0 over the link
     case Kind::Finished: break;
   }
@@ -96,64 +68,101 @@ std::string HouseExploration::send(link::Session& s, const house::HouseOrder& o)
   return "the house is mapped: " + progress() + "\n";
 }
 
-house::HouseReport HouseExploration::roomReport(link::Session& s) const {
-  {
-    house::HouseReport r;
-    r.kind = house::HouseReport::Kind::RoomMapped;
-    r.pose = s.status()->pose;
-    const Bounds b = s.map().bounds();
-    r.map = network::RoomMap(b.minX, b.minY, b.width(), b.height());
-    s.map().forEach([&](Cell c, CellState st) { r.map.set(c, st); });
-    const protocol::RoomExitsMsg& m = *s.roomExits();
-    for (uint8_t i = 0; i < m.count; ++i)
-      r.exits.push_back(RoomExit{doorwayOf(m.exits[i].door), m.exits[i].inside, m.exits[i].outward});
-    if (s.room() && s.room()->roomId == room_) r.crossedAt = Pose{s.room()->origin, s.room()->heading};
-    return r;
+// The known house around the leg goes to the brick, the robot at its origin, then the goal.
+void HouseExploration::sendTravel(link::Session& s, const house::HouseOrder& o) {
+  std::vector<CellState> cells;
+  for (int y = o.map.minY(); y <= o.map.maxY(); ++y) {
+    for (int x = o.map.minX(); x <= o.map.maxX(); ++x)
+      cells.push_back(o.map.at(Cell{static_cast<int16_t>(x), static_cast<int16_t>(y)}));
   }
+  const Bounds window{static_cast<int16_t>(o.map.minX()), static_cast<int16_t>(o.map.minY()),
+                      static_cast<int16_t>(o.map.maxX()), static_cast<int16_t>(o.map.maxY())};
+  ++goalId_;
+  s.uploadMap(window, cells, transferId_++);
+  s.setPose(Pose{});
+  s.goTo(goalId_, o.target);
+  wait_ = Wait::Goal;
+}
+
+void HouseExploration::sendCross(link::Session& s, const house::HouseOrder& o) {
+  ++room_;
+  protocol::EnterRoomMsg m;
+  m.roomId = room_;
+  m.strategy = protocol::ExploreStrategy::Frontier;
+  m.door = doorwayMessage(o.exit.door);
+  m.outward = o.exit.outward;
+  m.inside = o.exit.inside;
+  s.setPose(o.at);
+  enterSeq_ = s.enterRoom(m);
+  statusesAtAck_ = 0;
+  wait_ = Wait::Cross;
+  crossSinceS_ = nowS_;
+}
+
+house::HouseReport HouseExploration::roomReport(link::Session& s) const {
+  house::HouseReport r;
+  r.kind = house::HouseReport::Kind::RoomMapped;
+  r.pose = s.status()->pose;
+  const Bounds b = s.map().bounds();
+  r.map = network::RoomMap(b.minX, b.minY, b.width(), b.height());
+  s.map().forEach([&](Cell c, CellState st) { r.map.set(c, st); });
+  const protocol::RoomExitsMsg& m = *s.roomExits();
+  for (uint8_t i = 0; i < m.count; ++i)
+    r.exits.push_back(RoomExit{doorwayOf(m.exits[i].door), m.exits[i].inside, m.exits[i].outward});
+  if (s.room() && s.room()->roomId == room_) r.crossedAt = Pose{s.room()->origin, s.room()->heading};
+  return r;
 }
 
 std::optional<house::HouseReport> HouseExploration::arrived(link::Session& s) {
   if (wait_ == Wait::Cross) {
-    const bool entered = (s.status() && s.status()->roomId == room_) || (s.room() && s.room()->roomId == room_);
-    if (statusesAtAck_ == 0 && s.acknowledged(enterSeq_)) {
-      statusesAtAck_ = s.statusesReceived() + 1;
-      crossSinceS_ = nowS_;
-    }
-    // Blocked: the brick says it is idle in its old room, in statuses sent after it ran EnterRoom
-    // (the second after the acknowledgement: the first may have left before), a while after.
-    const bool idleSince =
-        statusesAtAck_ != 0 && s.statusesReceived() > statusesAtAck_ && s.status()->mode == protocol::BrickMode::Idle;
-    if (entered) wait_ = Wait::Room;
-    if (!entered && idleSince && nowS_ - crossSinceS_ > kCrossBlockedS) {
-      house::HouseReport r;
-      r.kind = house::HouseReport::Kind::CrossBlocked;
-      r.pose = s.status()->pose;
-      --room_;
-      return r;
-    }
+    if (std::optional<house::HouseReport> blocked = crossBlocked(s)) return blocked;
   }
-  if (wait_ == Wait::Room) {
-    // The room's end (its whole map held here) and a Status of the brick done in that room (its pose).
-    // After a crossing, also the new room's frame (NewRoom, repeated with every Status).
-    const auto& st = s.status();
-    const bool framed = roomsMapped_ == 0 || (s.room() && s.room()->roomId == room_);
-    if (s.roomExits() && s.roomExits()->roomId == room_ && s.roomExits()->end != ExplorerEnd::Running && st &&
-        st->roomId == room_ && st->mode == protocol::BrickMode::Done && framed)
-      return roomReport(s);
-  }
-  if (wait_ == Wait::Goal) {
-    // The goal's end and the pose it ended at, from one Status (a Pose message may be older).
-    const auto& st = s.status();
-    if (!s.commandsDone() || !st || st->path.pathId != goalId_) return std::nullopt;
-    if (st->path.state != protocol::PathState::Reached && st->path.state != protocol::PathState::Blocked)
-      return std::nullopt;
-    house::HouseReport r;
-    r.kind = st->path.state == protocol::PathState::Reached ? house::HouseReport::Kind::Arrived
-                                                            : house::HouseReport::Kind::NotArrived;
-    r.pose = st->pose;
-    return r;
-  }
+  if (wait_ == Wait::Room) return roomDone(s);
+  if (wait_ == Wait::Goal) return goalDone(s);
   return std::nullopt;
+}
+
+// Through the doorway: the brick reports the new room (then the room's end is awaited). Blocked: it
+// says it is idle in its old room, in statuses sent after it ran EnterRoom (the second after the
+// acknowledgement: the first may have left before), a while after.
+std::optional<house::HouseReport> HouseExploration::crossBlocked(link::Session& s) {
+  const bool entered = (s.status() && s.status()->roomId == room_) || (s.room() && s.room()->roomId == room_);
+  if (statusesAtAck_ == 0 && s.acknowledged(enterSeq_)) {
+    statusesAtAck_ = s.statusesReceived() + 1;
+    crossSinceS_ = nowS_;
+  }
+  const bool idleSince =
+      statusesAtAck_ != 0 && s.statusesReceived() > statusesAtAck_ && s.status()->mode == protocol::BrickMode::Idle;
+  if (entered) wait_ = Wait::Room;
+  if (entered || !idleSince || nowS_ - crossSinceS_ <= kCrossBlockedS) return std::nullopt;
+  house::HouseReport r;
+  r.kind = house::HouseReport::Kind::CrossBlocked;
+  r.pose = s.status()->pose;
+  --room_;
+  return r;
+}
+
+// The room's end (its whole map held here) and a Status of the brick done in that room (its pose);
+// after a crossing, also the new room's frame (NewRoom, repeated with every Status).
+std::optional<house::HouseReport> HouseExploration::roomDone(link::Session& s) const {
+  const auto& st = s.status();
+  const bool framed = roomsMapped_ == 0 || (s.room() && s.room()->roomId == room_);
+  const bool ended = s.roomExits() && s.roomExits()->roomId == room_ && s.roomExits()->end != ExplorerEnd::Running;
+  if (!ended || !st || st->roomId != room_ || st->mode != protocol::BrickMode::Done || !framed) return std::nullopt;
+  return roomReport(s);
+}
+
+// The goal's end and the pose it ended at, from one Status (a Pose message may be older).
+std::optional<house::HouseReport> HouseExploration::goalDone(link::Session& s) const {
+  const auto& st = s.status();
+  if (!s.commandsDone() || !st || st->path.pathId != goalId_) return std::nullopt;
+  if (st->path.state != protocol::PathState::Reached && st->path.state != protocol::PathState::Blocked)
+    return std::nullopt;
+  house::HouseReport r;
+  r.kind = st->path.state == protocol::PathState::Reached ? house::HouseReport::Kind::Arrived
+                                                          : house::HouseReport::Kind::NotArrived;
+  r.pose = st->pose;
+  return r;
 }
 
 std::string HouseExploration::poll(link::Session& s, double nowS) {

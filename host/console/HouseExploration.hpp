@@ -40,8 +40,13 @@ class HouseExploration {
  private:
   enum class Wait { Nothing, Room, Goal, Cross };
   std::string send(link::Session& s, const house::HouseOrder& o);
+  void sendTravel(link::Session& s, const house::HouseOrder& o);
+  void sendCross(link::Session& s, const house::HouseOrder& o);
   // The report the brick gave for the current order, once it is complete.
   std::optional<house::HouseReport> arrived(link::Session& s);
+  std::optional<house::HouseReport> crossBlocked(link::Session& s);
+  std::optional<house::HouseReport> roomDone(link::Session& s) const;
+  std::optional<house::HouseReport> goalDone(link::Session& s) const;
   house::HouseReport roomReport(link::Session& s) const;
 
   std::optional<house::HousePlanner> planner_;
