@@ -7,24 +7,6 @@ Strategy strategyOf(protocol::ExploreStrategy s) {
   return s == protocol::ExploreStrategy::Propagation ? Strategy::Propagation : Strategy::Frontier;
 }
 
-Doorway doorwayOf(const protocol::DoorwayMsg& m) {
-  Doorway d;
-  d.alongX = m.alongX;
-  d.first = m.first;
-  d.width = m.width;
-  d.depth = m.depth;
-  return d;
-}
-
-protocol::DoorwayMsg messageOf(const Doorway& d) {
-  protocol::DoorwayMsg m;
-  m.alongX = d.alongX;
-  m.first = d.first;
-  m.width = static_cast<uint8_t>(d.width);
-  m.depth = static_cast<uint8_t>(d.depth);
-  return m;
-}
-
 }  // namespace
 
 HouseBrick::HouseBrick(ExplorerStack& stack, RoomConfinement& confinement, const PilotConfig& pilot)
@@ -65,7 +47,7 @@ DriveAction HouseBrick::enterRoom(const protocol::EnterRoomMsg& m, const Pose& h
   pendingRoom_ = m.roomId;
   session_.setPose(Pose{m.inside, here.heading});
   RoomExit exit;
-  exit.door = doorwayOf(m.door);
+  exit.door = protocol::doorwayOf(m.door);
   exit.inside = m.inside;
   exit.outward = m.outward;
   roomsSeen_ = session_.roomsStarted();
@@ -117,7 +99,7 @@ void HouseBrick::updateExits() {
   for (uint8_t i = 0; i < confinement_.exitCount() && exits_.count < protocol::kMaxRoomExits; ++i) {
     const RoomExit& x = confinement_.exit(i);
     protocol::RoomExitMsg& m = exits_.exits[exits_.count++];
-    m.door = messageOf(x.door);
+    m.door = protocol::doorwayMessage(x.door);
     m.inside = x.inside;
     m.outward = x.outward;
   }

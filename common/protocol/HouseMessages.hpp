@@ -4,6 +4,7 @@
 
 #include "common/explore/Explorer.hpp"
 #include "common/grid/Cell.hpp"
+#include "common/interpret/Doorway.hpp"
 #include "common/protocol/Payload.hpp"
 
 // The payloads that map a house room by room: the PC chooses (Explore, GoTo, EnterRoom), the
@@ -32,6 +33,24 @@ struct DoorwayMsg {
   }
 };
 constexpr uint8_t kMaxDoorwayWidth = 32;
+
+// The same doorway as the core's nxtmap::Doorway (common/interpret), both ways.
+inline Doorway doorwayOf(const DoorwayMsg& m) {
+  Doorway d;
+  d.alongX = m.alongX;
+  d.first = m.first;
+  d.width = m.width;
+  d.depth = m.depth;
+  return d;
+}
+inline DoorwayMsg doorwayMessage(const Doorway& d) {
+  DoorwayMsg m;
+  m.alongX = d.alongX;
+  m.first = d.first;
+  m.width = static_cast<uint8_t>(d.width);
+  m.depth = static_cast<uint8_t>(d.depth);
+  return m;
+}
 constexpr uint8_t kMaxDoorwayDepth = 8;
 
 // How a room is explored (a byte).

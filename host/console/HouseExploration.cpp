@@ -19,24 +19,6 @@ house::HousePlannerConfig linkPlanner() {
   return c;
 }
 
-protocol::DoorwayMsg doorwayMessage(const Doorway& d) {
-  protocol::DoorwayMsg m;
-  m.first = d.first;
-  m.width = static_cast<uint8_t>(d.width);
-  m.depth = static_cast<uint8_t>(d.depth);
-  m.alongX = d.alongX;
-  return m;
-}
-
-Doorway doorwayOf(const protocol::DoorwayMsg& m) {
-  Doorway d;
-  d.first = m.first;
-  d.width = m.width;
-  d.depth = m.depth;
-  d.alongX = m.alongX;
-  return d;
-}
-
 }  // namespace
 
 std::string HouseExploration::start(link::Session& s, double nowS) {
@@ -89,7 +71,7 @@ void HouseExploration::sendCross(link::Session& s, const house::HouseOrder& o) {
   protocol::EnterRoomMsg m;
   m.roomId = room_;
   m.strategy = protocol::ExploreStrategy::Frontier;
-  m.door = doorwayMessage(o.exit.door);
+  m.door = protocol::doorwayMessage(o.exit.door);
   m.outward = o.exit.outward;
   m.inside = o.exit.inside;
   s.setPose(o.at);
@@ -108,7 +90,7 @@ house::HouseReport HouseExploration::roomReport(link::Session& s) const {
   s.map().forEach([&](Cell c, CellState st) { r.map.set(c, st); });
   const protocol::RoomExitsMsg& m = *s.roomExits();
   for (uint8_t i = 0; i < m.count; ++i)
-    r.exits.push_back(RoomExit{doorwayOf(m.exits[i].door), m.exits[i].inside, m.exits[i].outward});
+    r.exits.push_back(RoomExit{protocol::doorwayOf(m.exits[i].door), m.exits[i].inside, m.exits[i].outward});
   if (s.room() && s.room()->roomId == room_) r.crossedAt = Pose{s.room()->origin, s.room()->heading};
   return r;
 }

@@ -29,10 +29,6 @@ HouseConfig placedConfig(const sim::RobotPlacement& placed, HouseConfig c) {
   return c;
 }
 
-Strategy strategyOf(mapping::Strategy s) {
-  return s == mapping::Strategy::Propagation ? Strategy::Propagation : Strategy::Frontier;
-}
-
 PilotConfig pilotFor(const HouseConfig& c) {
   PilotConfig p;
   p.correct = c.poseCorrection;
@@ -98,7 +94,7 @@ HouseReport HouseMapper::carryOut(const HouseOrder& o) {
   switch (o.kind) {
     case HouseOrder::Kind::ExploreFirstRoom:
       stack_.map().clear();
-      drive(session_.exploreRoom(strategyOf(config_.strategy), Pose{}, nullptr));
+      drive(session_.exploreRoom(config_.strategy, Pose{}, nullptr));
       break;
     case HouseOrder::Kind::Travel:
       load(o.map);
@@ -106,7 +102,7 @@ HouseReport HouseMapper::carryOut(const HouseOrder& o) {
       break;
     case HouseOrder::Kind::Cross:
       session_.setPose(o.at);
-      drive(session_.cross(o.exit, strategyOf(config_.strategy)));
+      drive(session_.cross(o.exit, config_.strategy));
       break;
     case HouseOrder::Kind::Scan: drive(session_.scan()); break;
     case HouseOrder::Kind::Finished: break;
