@@ -24,7 +24,9 @@ CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
                 "start cell COL,ROW of a raster world (col right, row down from the top-left); for a world file "
                 "X,Y[,YAW] in its metres (default: the file's own start)");
   c->add_option("--heading", o.heading, "initial heading N, E, S or W (default N)");
-  c->add_option("--firmware", o.firmware, "firmware ELF (default build/firmware/nxtmap.elf, see make firmware)");
+  c->add_option("--firmware", o.firmware,
+                "firmware ELF, or a raw flash image FILE.bin (e.g. LEGO's); default build/firmware/nxtmap.elf, see "
+                "make firmware");
   c->add_option("--listen", o.listen, "PC side of the Bluetooth link: tcp:127.0.0.1:PORT or pty");
   c->add_option("--lcd", o.lcd, "write the LCD picture as PNG at the end");
   c->add_option("--speed", o.speed, "max (as fast as possible) or realtime (default max)");
@@ -85,6 +87,13 @@ int runEmulate(const EmulateOptions& o) {
     run.brick.link = link.get();
   }
 
+  // A firmware without our symbols (a raw .bin, another firmware's ELF) runs; what needs them is not measured.
+  const bool ours = load.image->symbol("g_explorerDone").has_value();
+  if (!ours)
+    std::cout << "note             " << o.firmware
+              << " has no nxtmap symbols: it runs to the time limit, without the measurements that need them "
+                 "(exploration done, sensor updates, static RAM)\n"
+              << std::flush;
   emu::EmulatedRun emulated(*load.image, site, run);
   const emu::EmulatedRunReport r = emulated.run();
 

@@ -1,4 +1,4 @@
-// `nxtmap emulate WORLD --start C,R [--firmware FILE.elf] [--listen tcp:127.0.0.1:PORT|pty] [--lcd FILE.png]
+// `nxtmap emulate WORLD --start C,R [--firmware FILE.elf|FILE.bin] [--listen tcp:127.0.0.1:PORT|pty] [--lcd FILE.png]
 //  [--speed max|realtime] [--noise P] [--seed N]`: the real firmware image, instruction by instruction, in
 // the emulated brick driving the simulated robot; the PC console connects to the listening end as it would
 // to a brick over Bluetooth. Prints the run's measurements at the end.

@@ -1,5 +1,7 @@
-// Adc: the A/D converter (0xFFFD8000, ID 4). Channel 6 carries the BlueCore's CMD signal (0x3FF while
-// its stream is open, 0 otherwise); the other channels read 0x3FF (pulled up). A START converts every
+// Adc: the A/D converter (0xFFFD8000, ID 4), as a brick on batteries without a USB cable reads it. Channel 6
+// carries the BlueCore's CMD signal (0x3FF while its stream is open, 0 otherwise); channel 4 is USB VBUS
+// through a divider (0: no cable); the other channels (sensor pins 1 of ports 1-4 on channels 1, 2, 3, 7)
+// read 0x3FF (pulled up, nothing plugged in). A START converts every
 // enabled channel at once (conversion time not modelled).
 #pragma once
 
@@ -13,6 +15,7 @@ class Adc : public IoDevice {
  public:
   static constexpr uint32_t kBase = 0xFFFD8000;
   static constexpr uint32_t kSize = 0x200;
+  static constexpr uint32_t kUsbVbus = 4;
   explicit Adc(std::function<bool()> bc4Cmd) : bc4Cmd_(std::move(bc4Cmd)) {}
   const char* name() const override { return "ADC"; }
   bool read(uint32_t off, uint32_t& v) override {
@@ -58,7 +61,7 @@ class Adc : public IoDevice {
   void convert() {
     for (uint32_t ch = 0; ch < 8; ++ch) {
       if (!(chsr_ & (1u << ch))) continue;
-      cdr_[ch] = ch == 6 ? (bc4Cmd_() ? 0x3FFu : 0u) : 0x3FFu;
+      cdr_[ch] = ch == 6 ? (bc4Cmd_() ? 0x3FFu : 0u) : ch == kUsbVbus ? 0u : 0x3FFu;
       lcdr_ = cdr_[ch];
       sr_ |= (1u << ch) | (1u << 16);
     }

@@ -15,7 +15,8 @@ class Aic : public IoDevice {
  public:
   static constexpr uint32_t kBase = 0xFFFFF000;
   static constexpr uint32_t kSize = 0x200;
-  static constexpr int kIdSys = 1, kIdPioa = 2, kIdAdc = 4, kIdSpi = 5, kIdUs0 = 6, kIdUs1 = 7, kIdTwi = 9;
+  static constexpr int kIdSys = 1, kIdPioa = 2, kIdAdc = 4, kIdSpi = 5, kIdUs0 = 6, kIdUs1 = 7, kIdSsc = 8, kIdTwi = 9,
+                       kIdPwm = 10, kIdUdp = 11;
 
   const char* name() const override { return "AIC"; }
   bool read(uint32_t offset, uint32_t& value) override;

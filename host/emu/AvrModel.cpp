@@ -9,9 +9,10 @@ constexpr char kCopyright[] = "Let's samba nxt arm in arm, (c)LEGO System A/S"; 
 }
 
 void AvrModel::receive(const std::vector<uint8_t>& f) {
-  if (!f.empty() && f[0] == 0xCC) {
+  if (f.empty()) return;  // an address alone: nothing for the AVR to do
+  if (f[0] == 0xCC) {     // the copyright string follows; bytes after it are not looked at
     const size_t n = sizeof kCopyright - 1;
-    if (f.size() == n + 1 && std::memcmp(f.data() + 1, kCopyright, n) == 0) {
+    if (f.size() >= n + 1 && std::memcmp(f.data() + 1, kCopyright, n) == 0) {
       handshake_ = true;
       ++good_;
     } else {
@@ -19,17 +20,21 @@ void AvrModel::receive(const std::vector<uint8_t>& f) {
     }
     return;
   }
-  if (f.size() != 9) {
+  if (f.size() < kCommandBytes) {  // too short: nothing is taken
     ++bad_;
     return;
   }
-  unsigned sum = 0;
-  for (uint8_t b : f) sum += b;
-  if ((sum & 0xFF) != 0xFF || !handshake_) {
+  unsigned sum = 0;  // the first kCommandBytes bytes sum to 0xFF; any bytes after them are not looked at
+  for (size_t i = 0; i < kCommandBytes; ++i) sum += f[i];
+  if ((sum & 0xFF) != 0xFF) {
     ++bad_;
     return;
   }
   ++good_;
+  apply(f);
+}
+
+void AvrModel::apply(const std::vector<uint8_t>& f) {
   if (f[0] == 0x5A || (f[0] == 0xA5 && f[1] == 0x5A)) powerDown_ = true;
   for (size_t m = 0; m < 4; ++m) {
     int p = static_cast<int8_t>(f[2 + m]);

@@ -33,6 +33,8 @@ Brick::Brick(const ElfImage& image, const sim::Site& site, const BrickConfig& c)
       spi_(machine_.clock(), machine_, pioa_, lcd_),
       adc_([this] { return bc4_.cmdSignal(); }),
       tc_(machine_.clock()),
+      pwm_(machine_.clock()),
+      ssc_(machine_.clock(), machine_),
       buttons_(avr_, c.pressEnterAtS < 0 ? kNever : static_cast<uint64_t>(c.pressEnterAtS * kMckHz),
                cyclesFromMs(300)) {
   machine_.attach(Pioa::kBase, Pioa::kSize, pioa_);
@@ -41,6 +43,9 @@ Brick::Brick(const ElfImage& image, const sim::Site& site, const BrickConfig& c)
   machine_.attach(Spi::kBase, Spi::kSize, spi_);
   machine_.attach(Adc::kBase, Adc::kSize, adc_);
   machine_.attach(TimerCounter::kBase, TimerCounter::kSize, tc_);
+  machine_.attach(Pwm::kBase, Pwm::kSize, pwm_);
+  machine_.attach(Ssc::kBase, Ssc::kSize, ssc_);
+  machine_.attach(Udp::kBase, Udp::kSize, udp_);
   machine_.addTimeSource(drive_);
   machine_.addTimeSource(bc4_);
   machine_.addTimeSource(buttons_);
@@ -50,6 +55,8 @@ Brick::Brick(const ElfImage& image, const sim::Site& site, const BrickConfig& c)
   aic.connect(Aic::kIdUs1, [this] { return usart_.irqLine(); });
   aic.connect(Aic::kIdSpi, [this] { return spi_.irqLine(); });
   aic.connect(Aic::kIdAdc, [this] { return adc_.irqLine(); });
+  aic.connect(Aic::kIdSsc, [this] { return ssc_.irqLine(); });
+  aic.connect(Aic::kIdPwm, [this] { return pwm_.irqLine(); });
   for (int ch = 0; ch < 3; ++ch) aic.connect(12 + ch, [this, ch] { return tc_.irqLine(ch); });
   for (int p = 0; p < 4; ++p)
     sensors_[static_cast<size_t>(p)] = std::make_unique<UltrasonicSensor>(

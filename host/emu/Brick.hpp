@@ -12,10 +12,13 @@
 #include "host/emu/Lcd.hpp"
 #include "host/emu/Machine.hpp"
 #include "host/emu/Pioa.hpp"
+#include "host/emu/Pwm.hpp"
 #include "host/emu/Spi.hpp"
+#include "host/emu/Ssc.hpp"
 #include "host/emu/TestPort.hpp"
 #include "host/emu/TimerCounter.hpp"
 #include "host/emu/Twi.hpp"
+#include "host/emu/Udp.hpp"
 #include "host/emu/UltrasonicSensor.hpp"
 #include "host/emu/Usart.hpp"
 #include "host/sim/NoiseProfile.hpp"
@@ -65,6 +68,7 @@ class Brick {
   const Twi& twi() const { return twi_; }
   const Usart& usart() const { return usart_; }
   const Pioa& pioa() const { return pioa_; }
+  const Ssc& ssc() const { return ssc_; }
   const UltrasonicSensor& sensor(int port) const { return *sensors_[static_cast<size_t>(port)]; }
   TestPort* testPort() { return testPort_.get(); }
 
@@ -87,6 +91,9 @@ class Brick {
   Spi spi_;
   Adc adc_;
   TimerCounter tc_;
+  Pwm pwm_;
+  Ssc ssc_;
+  Udp udp_;
   ButtonScript buttons_;
   std::array<std::unique_ptr<UltrasonicSensor>, 4> sensors_;
   std::unique_ptr<TestPort> testPort_;

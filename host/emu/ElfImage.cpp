@@ -18,6 +18,28 @@ bool readAt(const std::vector<uint8_t>& file, uint64_t offset, T& out) {
 }  // namespace
 
 struct ElfLoader {
+  static bool isBinName(const std::string& path) {
+    return path.size() > 4 && path.compare(path.size() - 4, 4, ".bin") == 0;
+  }
+
+  // A raw flash image: its bytes at kFlashBase, the rest erased (0xFF); it starts at the reset vector.
+  static ElfLoad raw(const std::string& path, const std::vector<uint8_t>& file) {
+    ElfLoad result;
+    if (file.empty() || file.size() > kFlashSize) {
+      result.error = path + ": a raw flash image must hold 1.." + std::to_string(kFlashSize) + " bytes, not " +
+                     std::to_string(file.size());
+      return result;
+    }
+    ElfImage img;
+    img.path_ = path;
+    img.raw_ = true;
+    std::memcpy(img.flash_.data(), file.data(), file.size());
+    img.flashUsed_ = static_cast<uint32_t>(file.size());
+    img.entry_ = kFlashBase;
+    result.image = std::move(img);
+    return result;
+  }
+
   static ElfLoad run(const std::string& path) {
     ElfLoad result;
     auto fail = [&](const std::string& why) {
@@ -31,6 +53,7 @@ struct ElfLoader {
       return result;
     }
     const std::vector<uint8_t> file(bytes->begin(), bytes->end());
+    if (isBinName(path)) return raw(path, file);
     Elf32_Ehdr eh{};
     if (!readAt(file, 0, eh) || std::memcmp(eh.e_ident, ELFMAG, SELFMAG) != 0) return fail("not an ELF file");
     if (eh.e_ident[EI_CLASS] != ELFCLASS32 || eh.e_ident[EI_DATA] != ELFDATA2LSB || eh.e_machine != EM_ARM)

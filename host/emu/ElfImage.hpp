@@ -1,5 +1,7 @@
 // ElfImage: a firmware ELF32 (ARM, little-endian) loaded as the chip would hold it: every PT_LOAD segment
 // at its load address (LMA), so .data's initial image sits in flash. Symbols from .symtab by name.
+// A file named *.bin is a raw flash image for kFlashBase instead (at most kFlashSize bytes, no symbols):
+// what users have for LEGO's and other firmwares.
 #pragma once
 
 #include <cstddef>
@@ -38,6 +40,7 @@ class ElfImage {
   // The first of the names that exists.
   std::optional<uint32_t> firstSymbol(std::initializer_list<const char*> names) const;
   const std::string& path() const { return path_; }
+  bool rawFlash() const { return raw_; }  // loaded from a raw .bin image: no symbols
 
  private:
   std::string path_;
@@ -46,6 +49,7 @@ class ElfImage {
   std::vector<std::pair<uint32_t, uint32_t>> ramSegments_;
   uint32_t flashUsed_ = 0;
   uint32_t entry_ = 0;
+  bool raw_ = false;
   std::map<std::string, uint32_t> symbols_;
   friend struct ElfLoader;
 };

@@ -48,6 +48,13 @@ std::string hex(uint32_t v) {
 struct Machine::Hooks {
   static void block(uc_engine* uc, uint64_t address, uint32_t size, void* user) {
     auto* m = static_cast<Machine*>(user);
+    if (!m->flashRestore_.empty()) m->restoreFlash();
+    if (m->efc_.busy() && m->inFlash(static_cast<uint32_t>(address))) {
+      m->setFault(FaultKind::BadMemory, static_cast<uint32_t>(address),
+                  "instruction fetch from flash while the flash controller programs it (FRDY 0)");
+      uc_emu_stop(uc);
+      return;
+    }
     if (m->timedReturn_ != 0 && static_cast<uint32_t>(address) == m->timedReturn_) {
       m->maxTimed_ = std::max(m->maxTimed_, m->clock_.now - m->timedStart_);
       ++m->timedCalls_;
@@ -101,9 +108,17 @@ struct Machine::Hooks {
     }
   }
 
-  static bool badMemory(uc_engine* uc, uc_mem_type type, uint64_t address, int size, int64_t, void* user) {
+  static bool badMemory(uc_engine* uc, uc_mem_type type, uint64_t address, int size, int64_t value, void* user) {
     auto* m = static_cast<Machine*>(user);
     const auto a = static_cast<uint32_t>(address);
+    if (type == UC_MEM_WRITE_PROT && m->inFlash(a)) {  // the EFC latch (the store itself is undone)
+      const uint32_t off = (a >= kFlashBase ? a - kFlashBase : a) & ~3u;
+      FlashWord w{off, {}};
+      std::memcpy(w.bytes, m->flash_ + off, 4);
+      m->flashRestore_.push_back(w);
+      m->efc_.latchWrite(a >= kFlashBase ? a - kFlashBase : a, static_cast<uint32_t>(value), size);
+      return true;
+    }
     uint32_t sp = 0;
     uc_reg_read(uc, UC_ARM_REG_SP, &sp);
     const char* what = "access";
@@ -186,14 +201,13 @@ Machine::Machine(const ElfImage& image, const MachineOptions& options)
         maxBusy_ = std::max(maxBusy_, clock_.now - busyStart_);
         clock_.poke();
       }),
-      mc_([this] { applyRemap(); }) {  // immediate, as on the chip (safe inside the MMIO callback)
+      mc_([this] { applyRemap(); }, efc_) {  // remap immediate, as on the chip (safe inside the MMIO callback)
   // Debugging aid: NXTMAP_EMU_TRACE logs every block (area "emu", level debug, which it turns on).
   trace_ = std::getenv("NXTMAP_EMU_TRACE") != nullptr;
   if (trace_ && !log::enabled(log::Level::Debug)) log::setLevel(log::Level::Debug);
   if (std::getenv("NXTMAP_EMU_NOALIGN")) options_.checkAlignment = false;
   if (std::getenv("NXTMAP_EMU_SLOW_STORES")) setUnicornFastStores(false);
-  flash_ = static_cast<uint8_t*>(std::aligned_alloc(4096, kFlashSize));
-  ram_ = static_cast<uint8_t*>(std::aligned_alloc(4096, kRamSize));
+  flashRestore_.reserve(64);
   if (!flash_ || !ram_) throw std::bad_alloc();
   std::memcpy(flash_, image.flash().data(), kFlashSize);
   std::memset(ram_, kPaint, kRamSize);  // stack painting for the high-water mark
@@ -221,6 +235,8 @@ Machine::Machine(const ElfImage& image, const MachineOptions& options)
   attach(VoltageRegulator::kBase, 0x10, vreg_);
   attach(MemoryController::kBase, MemoryController::kSize, mc_);
   aic_.connect(Aic::kIdSys, [this] { return pit_.irqLine(); });
+  aic_.connect(Aic::kIdSys, [this] { return efc_.irqLine(); });
+  devices_.push_back(&efc_);
 
   uc_hook h{};
   check(uc_hook_add(uc_, &h, UC_HOOK_BLOCK, reinterpret_cast<void*>(&Hooks::block), this, 1, 0), "block hook");
@@ -296,6 +312,25 @@ int Machine::modeSlot(uint32_t a) const {
   if (a - kFlashBase < kFlashSize) return static_cast<int>((kFlashSize + (a - kFlashBase)) >> 1);
   if (a - kRamBase < kRamSize) return static_cast<int>((2 * kFlashSize + (a - kRamBase)) >> 1);
   return -1;
+}
+
+bool Machine::inFlash(uint32_t a) const {
+  return (a >= kFlashBase && a - kFlashBase < kFlashSize) || (!remapped_ && a < kFlashSize);
+}
+
+void Machine::restoreFlash() {
+  for (const FlashWord& w : flashRestore_) std::memcpy(flash_ + w.offset, w.bytes, 4);
+  flashRestore_.clear();
+}
+
+void Machine::flashProgrammed(uint32_t offset, uint32_t bytes) {
+  // Code translated from the old contents must not run again.
+  uc_ctl_remove_cache(uc_, kFlashBase + offset, kFlashBase + offset + bytes);
+  std::fill(modes_.begin() + (kFlashSize + offset) / 2, modes_.begin() + (kFlashSize + offset + bytes) / 2, 0);
+  if (!remapped_) {
+    uc_ctl_remove_cache(uc_, offset, offset + bytes);
+    std::fill(modes_.begin() + offset / 2, modes_.begin() + (offset + bytes) / 2, 0);
+  }
 }
 
 void Machine::applyRemap() {
@@ -378,6 +413,10 @@ bool Machine::run(uint64_t until, const std::function<bool()>& stop) {
   if (wallOrigin_ < 0.0) wallOrigin_ = wallStart - secondsFromCycles(clock_.now);
   while (!fault_) {
     advanceModels();
+    if (!efc_.misuse().empty()) {
+      setFault(FaultKind::BadMemory, kFlashBase + efc_.misuseOffset(), efc_.misuse());
+      break;
+    }
     if (wdt_.expired()) {
       setFault(FaultKind::Reset, 0, "watchdog timeout (WDT not disabled or restarted)");
       break;
@@ -424,6 +463,7 @@ bool Machine::run(uint64_t until, const std::function<bool()>& stop) {
     stoppedAt_ = 0;
     ++slices_;
     const uc_err e = uc_emu_start(uc_, begin, 0xFFFFFFF0ull, 0, 0);
+    restoreFlash();
     if (stoppedAt_ != 0 && !fault_) {
       // Stopped by the block hook before that block ran. Unicorn 2.0.1 sometimes leaves PC past the
       // block's first instructions (seen on a chained Thumb cmp/beq block); the block did not execute,

@@ -10,6 +10,7 @@
 #include "host/emu/Clock.hpp"
 #include "host/emu/ElfImage.hpp"
 #include "host/emu/EmuFault.hpp"
+#include "host/emu/FlashController.hpp"
 #include "host/emu/IoDevice.hpp"
 #include "host/emu/MemoryController.hpp"
 #include "host/emu/Pit.hpp"
@@ -17,6 +18,7 @@
 #include "host/emu/ResetController.hpp"
 #include "host/emu/Watchdog.hpp"
 
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -65,6 +67,7 @@ class Machine : public GuestMemory {
   Clock& clock() { return clock_; }
   Aic& aic() { return aic_; }
   Pmc& pmc() { return pmc_; }
+  const FlashController& flash() const { return efc_; }
   const ElfImage& image() const { return image_; }
 
   // Attaches a board peripheral at [base, base+size) (a multiple of 16 bytes, inside the MMIO window).
@@ -98,13 +101,23 @@ class Machine : public GuestMemory {
   uint64_t nextEvent() const;
   void takeIrq();
   void paceToWall();
+  void restoreFlash();
+  void flashProgrammed(uint32_t offset, uint32_t bytes);
 
   const ElfImage& image_;
   MachineOptions options_;
   uc_struct* uc_ = nullptr;
-  uint8_t* flash_ = nullptr;
-  uint8_t* ram_ = nullptr;
+  uint8_t* flash_ = static_cast<uint8_t*>(std::aligned_alloc(4096, kFlashSize));
+  uint8_t* ram_ = static_cast<uint8_t*>(std::aligned_alloc(4096, kRamSize));
   Clock clock_;
+  FlashController efc_{clock_, flash_, [this](uint32_t offset, uint32_t bytes) { flashProgrammed(offset, bytes); }};
+  // A CPU store into flash fills the EFC latch; Unicorn also writes it into the flash buffer, so the words it
+  // overwrote are put back at the next block boundary (flash offset, the 4 bytes before the store).
+  struct FlashWord {
+    uint32_t offset;
+    uint8_t bytes[4];
+  };
+  std::vector<FlashWord> flashRestore_;
   Aic aic_;
   Pit pit_{clock_};
   Pmc pmc_;
@@ -131,6 +144,7 @@ class Machine : public GuestMemory {
   // its state; self-modifying code that switches state at an address is not supported.
   std::vector<uint8_t> modes_ = std::vector<uint8_t>((2 * kFlashSize + kRamSize) / 2, 0);
   int modeSlot(uint32_t address) const;  // index into modes_, -1 outside
+  bool inFlash(uint32_t address) const;  // flash, or its mirror at 0 before the remap
   uint32_t stoppedAt_ = 0;               // block at which the block hook stopped the CPU (0 = none)
   uint32_t guardLow_ = 0, stackLimit_ = 0;
   uint32_t timedEntry_ = 0;

@@ -1,8 +1,9 @@
-// MemoryController: MC (0xFFFFFF00) with the remap command and the embedded flash controller registers.
-// RCB in MC_RCR toggles what appears at address 0 (flash mirror after reset, RAM after remap); the machine
-// applies it at the next block boundary. Flash programming commands are not modelled and stop the run.
+// MemoryController: MC (0xFFFFFF00) with the remap command, the abort status, and the embedded flash
+// controller's registers (FMR/FCR/FSR at 0x60..0x68, modelled by FlashController). RCB in MC_RCR toggles
+// what appears at address 0 (flash mirror after reset, RAM after remap), applied at once.
 #pragma once
 
+#include "host/emu/FlashController.hpp"
 #include "host/emu/IoDevice.hpp"
 
 #include <functional>
@@ -13,15 +14,16 @@ class MemoryController : public IoDevice {
  public:
   static constexpr uint32_t kBase = 0xFFFFFF00;
   static constexpr uint32_t kSize = 0x100;
-  explicit MemoryController(std::function<void()> onRemapToggle) : onRemap_(std::move(onRemapToggle)) {}
+  MemoryController(std::function<void()> onRemapToggle, FlashController& efc)
+      : onRemap_(std::move(onRemapToggle)), efc_(efc) {}
   const char* name() const override { return "MC"; }
-  bool writeReplans(uint32_t) const override { return false; }
+  bool writeReplans(uint32_t off) const override { return off == 0x60 || off == 0x64; }
   bool read(uint32_t off, uint32_t& v) override {
     switch (off) {
       case 0x04:
       case 0x08: v = 0; return true;  // ASR, AASR: no abort
-      case 0x60: v = fmr_; return true;
-      case 0x68: v = 1; return true;  // FSR: FRDY, nothing locked, no error
+      case 0x60:
+      case 0x68: return efc_.read(off, v);
       default: return false;
     }
   }
@@ -30,14 +32,15 @@ class MemoryController : public IoDevice {
       case 0x00:
         if (v & 1) onRemap_();
         return true;
-      case 0x60: fmr_ = v; return true;
-      default: return false;  // FCR (flash commands) and others: not modelled
+      case 0x60:
+      case 0x64: return efc_.write(off, v);
+      default: return false;
     }
   }
 
  private:
   std::function<void()> onRemap_;
-  uint32_t fmr_ = 0;
+  FlashController& efc_;
 };
 
 }  // namespace nxtmap::emu

@@ -24,9 +24,15 @@ bool Pdc::write(uint32_t off, uint32_t v) {
     case 0x08: tpr_ = v; return true;
     case 0x0C: tcr_ = v & 0xFFFF; return true;
     case 0x10: rnpr_ = v; return true;
-    case 0x14: rncr_ = v & 0xFFFF; return true;
+    case 0x14:
+      rncr_ = v & 0xFFFF;
+      if (rcr_ == 0) chainRx();
+      return true;
     case 0x18: tnpr_ = v; return true;
-    case 0x1C: tncr_ = v & 0xFFFF; return true;
+    case 0x1C:
+      tncr_ = v & 0xFFFF;
+      if (tcr_ == 0) chainTx();
+      return true;
     case 0x20:
       if (v & 1) rxEn_ = true;
       if (v & 2) rxEn_ = false;
@@ -37,25 +43,43 @@ bool Pdc::write(uint32_t off, uint32_t v) {
   }
 }
 
+void Pdc::chainTx() {
+  if (tncr_ == 0) return;
+  tpr_ = tnpr_;
+  tcr_ = tncr_;
+  tncr_ = 0;
+}
+
+void Pdc::chainRx() {
+  if (rncr_ == 0) return;
+  rpr_ = rnpr_;
+  rcr_ = rncr_;
+  rncr_ = 0;
+}
+
 bool Pdc::takeTx(uint8_t& b) {
   if (!mem_.readByte(tpr_, b)) return false;
   ++tpr_;
-  if (--tcr_ == 0 && tncr_ > 0) {
-    tpr_ = tnpr_;
-    tcr_ = tncr_;
-    tncr_ = 0;
+  if (--tcr_ == 0) chainTx();
+  return true;
+}
+
+bool Pdc::takeTxUnit(uint32_t& v, unsigned bytes) {
+  v = 0;
+  for (unsigned i = 0; i < bytes; ++i) {
+    uint8_t b = 0;
+    if (!mem_.readByte(tpr_ + i, b)) return false;
+    v |= static_cast<uint32_t>(b) << (8 * i);
   }
+  tpr_ += bytes;
+  if (--tcr_ == 0) chainTx();
   return true;
 }
 
 bool Pdc::putRx(uint8_t b) {
   if (!mem_.writeByte(rpr_, b)) return false;
   ++rpr_;
-  if (--rcr_ == 0 && rncr_ > 0) {
-    rpr_ = rnpr_;
-    rcr_ = rncr_;
-    rncr_ = 0;
-  }
+  if (--rcr_ == 0) chainRx();
   return true;
 }
 

@@ -37,7 +37,7 @@ TEST(EmulateCli, FirmwareFaultEndsWithTheReportAndExitCode1) {
   const RunOutput r = runCli("emulate " + kRoom + " --start 1,20 --firmware " + probe("unmodelled"));
   EXPECT_EQ(r.exitCode, 1) << r.err;
   EXPECT_NE(r.err.find("unmodelled peripheral register at pc=0x"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("address=0xfffb001c"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("address=0xfffff240"), std::string::npos) << r.err;
   EXPECT_NE(r.out.find("end              FAULT"), std::string::npos) << r.out;
 }
 

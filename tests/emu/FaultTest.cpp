@@ -29,7 +29,7 @@ TEST(Faults, UnmodelledRegisterIsCaughtWithItsAddress) {
   ASSERT_FALSE(r.ok);
   const EmuFault& f = r.brick->machine().fault();
   EXPECT_EQ(f.kind, FaultKind::UnmodelledIo) << f.describe();
-  EXPECT_EQ(f.address, 0xFFFB001Cu);
+  EXPECT_EQ(f.address, 0xFFFFF240u);
   const uint32_t main = symbolOf(r, "main");
   EXPECT_GE(f.pc, main);
   EXPECT_LT(f.pc, main + 64);
