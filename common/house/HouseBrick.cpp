@@ -21,10 +21,12 @@ DriveAction HouseBrick::explore(const protocol::ExploreMsg& how, const Pose& her
   origin_ = here;
   active_ = true;
   goal_ = protocol::PathProgressMsg{};
+  readings_.scanId = 0;  // a new house: no scan in it yet
   resetExits();
   const DriveAction a = session_.exploreRoom(strategyOf(how.strategy), Pose{}, nullptr);
   roomsSeen_ = session_.roomsStarted();
   if (a.kind == DriveAction::Kind::Done) updateExits();  // nothing to map: the room is done at once
+  updateReadings();
   return a;
 }
 
@@ -38,6 +40,7 @@ DriveAction HouseBrick::goTo(const protocol::GoToMsg& goal, const Pose& here) {
                                                                       : protocol::PathState::Blocked;
     goal_.at = session_.pose().cell;
   }
+  updateReadings();
   return a;
 }
 
@@ -51,13 +54,30 @@ DriveAction HouseBrick::enterRoom(const protocol::EnterRoomMsg& m, const Pose& h
   exit.inside = m.inside;
   exit.outward = m.outward;
   roomsSeen_ = session_.roomsStarted();
-  return session_.cross(exit, strategyOf(m.strategy));
+  const DriveAction a = session_.cross(exit, strategyOf(m.strategy));
+  updateReadings();
+  return a;
+}
+
+DriveAction HouseBrick::scan(const protocol::ScanMsg& m, const Pose& here) {
+  abort();
+  active_ = true;
+  session_.setPose(here);
+  scanId_ = m.scanId;
+  const DriveAction a = session_.scan();
+  updateReadings();
+  return a;
 }
 
 DriveAction HouseBrick::step(const DriveEvent& e) {
   const DriveAction a = session_.step(e);
   if (session_.roomsStarted() != roomsSeen_) noteNewRoom();
-  if (a.kind != DriveAction::Kind::Done) return a;
+  if (a.kind == DriveAction::Kind::Done) over();
+  updateReadings();
+  return a;
+}
+
+void HouseBrick::over() {
   switch (session_.outcome()) {
     case RoomSession::Outcome::Arrived:
     case RoomSession::Outcome::NotArrived:
@@ -68,7 +88,6 @@ DriveAction HouseBrick::step(const DriveEvent& e) {
     case RoomSession::Outcome::RoomMapped: updateExits(); break;
     default: break;
   }
-  return a;
 }
 
 void HouseBrick::abort() {
@@ -105,6 +124,23 @@ void HouseBrick::updateExits() {
   }
 }
 
+void HouseBrick::updateReadings() {
+  protocol::ReadingsMsg& m = readings_;
+  if (scanId_ != 0 && session_.outcome() == RoomSession::Outcome::Scanned) {
+    m.scanId = scanId_;
+    m.scanPose = session_.pose();
+    for (int i = 0; i < kSensorCount; ++i) m.scan[i] = session_.scanReading(static_cast<Sensor>(i));
+    scanId_ = 0;
+  }
+  m.roomId = roomId_;
+  m.startDone = exits_.end != ExplorerEnd::Running;
+  m.startCount = session_.startReadingCount();
+  for (uint8_t i = 0; i < m.startCount; ++i) {
+    m.start[i].dir = session_.startReadings()[i].dir;
+    m.start[i].reading = session_.startReadings()[i].reading;
+  }
+}
+
 bool HouseBrick::takeMapRestart() {
   const bool r = mapRestart_;
   mapRestart_ = false;
@@ -128,6 +164,7 @@ void HouseBrick::fill(protocol::BrickReport& r) const {
   r.roomEntry = Cell{0, 0};
   if (goal_.state != protocol::PathState::None) r.path = goal_;
   r.exits = &exits_;
+  r.readings = &readings_;
 }
 
 }  // namespace nxtmap

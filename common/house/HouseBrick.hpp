@@ -1,8 +1,9 @@
 // HouseBrick: the house commands as the brick carries them out, shared by the firmware's mode
 // machine and the stand-in brick: a confined Explore (map the room the robot stands in), GoTo (drive
-// to a cell of the map held) and EnterRoom (cross a doorway into the next room and map it), each run
-// by the RoomSession, and what the brick reports of them (room ids, the new room's frame, the goal's
-// progress, the room's exits). Events in, actions out; the caller carries the actions out.
+// to a cell of the map held), EnterRoom (cross a doorway into the next room and map it) and Scan
+// (read the four sensors standing), each run by the RoomSession, and what the brick reports of them
+// (room ids, the new room's frame, the goal's progress, the room's exits, the last scan and the
+// room's start readings). Events in, actions out; the caller carries the actions out.
 #pragma once
 #include <cstdint>
 
@@ -21,6 +22,7 @@ class HouseBrick {
   DriveAction explore(const protocol::ExploreMsg& how, const Pose& here, uint16_t roomId);
   DriveAction goTo(const protocol::GoToMsg& goal, const Pose& here);
   DriveAction enterRoom(const protocol::EnterRoomMsg& m, const Pose& here);
+  DriveAction scan(const protocol::ScanMsg& m, const Pose& here);
   DriveAction step(const DriveEvent& e);
   // Stops the command (Stop, a fault, another command): the robot stands where it is believed.
   void abort();
@@ -34,15 +36,17 @@ class HouseBrick {
   bool takeMapRestart();
   // The mode the brick reports while a house command is active.
   protocol::BrickMode mode() const;
-  // Room ids, the new room's frame, the goal's progress and the room's exits, into `r`.
+  // Room ids, the new room's frame, the goal's progress, the room's exits and the readings, into `r`.
   void fill(protocol::BrickReport& r) const;
   uint16_t roomId() const { return roomId_; }
   const RoomSession& session() const { return session_; }
 
  private:
   void noteNewRoom();
-  void resetExits();   // a new room: no exits yet, running
-  void updateExits();  // the room is mapped: its exits and how its run ended
+  void over();            // the command is over: the goal's end, or the room's exits
+  void resetExits();      // a new room: no exits yet, running
+  void updateExits();     // the room is mapped: its exits and how its run ended
+  void updateReadings();  // after every start and step: the scan (when over) and the start readings
 
   ExplorerStack& stack_;
   RoomConfinement& confinement_;
@@ -54,6 +58,9 @@ class HouseBrick {
   uint16_t roomsSeen_ = 0;
   protocol::PathProgressMsg goal_{};
   protocol::RoomExitsMsg exits_{};
+  uint16_t scanId_ = 0;  // the Scan command running (0: none)
+  protocol::ReadingsMsg readings_{};
 };
+static_assert(protocol::kMaxStartReadings == RoomSession::kMaxStartReadings, "every start reading goes on the wire");
 
 }  // namespace nxtmap

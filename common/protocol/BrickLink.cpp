@@ -60,7 +60,8 @@ void BrickLink::handlePacket(const Telegram& t) {
     case Op::MapChunk:
     case Op::SetPose:
     case Op::GoTo:
-    case Op::EnterRoom: handleCommand(v.header, v.payload, v.payloadSize); break;
+    case Op::EnterRoom:
+    case Op::Scan: handleCommand(v.header, v.payload, v.payloadSize); break;
     case Op::BatteryRequest: batteryDue_ = true; break;
     default: break;  // Ack (already applied) and anything the brick does not take
   }
@@ -115,6 +116,10 @@ void BrickLink::handleCommand(const PacketHeader& h, const uint8_t* p, size_t n)
     case Op::EnterRoom:
       c.kind = CommandKind::EnterRoom;
       valid = decodeEnterRoom(p, n, *new (&c.enterRoom) EnterRoomMsg());
+      break;
+    case Op::Scan:
+      c.kind = CommandKind::Scan;
+      valid = decodeScan(p, n, *new (&c.scan) ScanMsg());
       break;
     case Op::Stop: c.kind = CommandKind::Stop; break;
     case Op::RequestMap:
@@ -259,6 +264,7 @@ bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out) 
     countersPhase_ = !countersPhase_;
     countersDue_ = countersPhase_;
     exitsDue_ = report.exits != nullptr;
+    readingsDue_ = report.readings != nullptr;
     StatusMsg s;
     s.mode = report.mode;
     s.pose = report.pose;
@@ -281,6 +287,11 @@ bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out) 
     if (sync_.pending() || sync_.inFlight() > 0) m.end = ExplorerEnd::Running;
     encodeRoomExits(m, p);
     return send(Op::RoomExits, false, p, out);
+  }
+  if (readingsDue_ && report.readings != nullptr) {
+    readingsDue_ = false;
+    encodeReadings(*report.readings, p);
+    return send(Op::Readings, false, p, out);
   }
   if (scanNow_ || nowMs - lastScanMs_ >= config_.deltaPeriodMs) {
     lastScanMs_ = nowMs;

@@ -29,6 +29,9 @@ struct BrickReport {
   // Mapping a house: the exits of the room being mapped (nullptr: not mapping a house). Its `end`
   // goes out as Running until the PC holds every cell of the room's map (see BrickLink::transmit).
   const RoomExitsMsg* exits = nullptr;
+  // Mapping a house: the last standing scan and the room's start readings (nullptr: none), sent
+  // every status period after the exits.
+  const ReadingsMsg* readings = nullptr;
 };
 
 struct BrickLinkConfig {
@@ -112,7 +115,8 @@ class BrickLink {
   uint32_t lastScanMs_ = 0;
   bool statusSent_ = false;
   bool countersDue_ = false, countersPhase_ = false;
-  bool exitsDue_ = false;  // RoomExits, every status period while mapping a house
+  bool exitsDue_ = false;     // RoomExits, every status period while mapping a house
+  bool readingsDue_ = false;  // Readings, likewise
   uint32_t lastStatusMs_ = 0;
   bool stateDue_ = false;
   bool posePending_ = false, pathPending_ = false, roomPending_ = false;

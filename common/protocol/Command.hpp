@@ -15,6 +15,7 @@ enum class CommandKind : uint8_t {
   SetPose,     // the robot stands at `pose` on the map it holds (e.g. a room just uploaded); stop first
   GoTo,        // drive to `goTo.target` over the map held; report PathProgress with pathId = goalId
   EnterRoom,   // cross `enterRoom.door` and map the room beyond it, confined
+  Scan,        // read the four sensors where the robot stands; report Readings with scanId = `scan.scanId`
 };
 
 struct Command {
@@ -29,6 +30,7 @@ struct Command {
     ExploreMsg explore;      // Explore
     GoToMsg goTo;            // GoTo
     EnterRoomMsg enterRoom;  // EnterRoom
+    ScanMsg scan;            // Scan
   };
   Command() : path() {}
 };

@@ -6,9 +6,11 @@
 #include "common/grid/Cell.hpp"
 #include "common/interpret/Doorway.hpp"
 #include "common/protocol/Payload.hpp"
+#include "common/sensing/RangeFilter.hpp"
+#include "common/sensing/RangeReading.hpp"
 
-// The payloads that map a house room by room: the PC chooses (Explore, GoTo, EnterRoom), the
-// brick reports (RoomExits, NewRoom). Cells are room-map cells (int16 x, y) in the frame of the
+// The payloads that map a house room by room: the PC chooses (Explore, GoTo, EnterRoom, Scan), the
+// brick reports (RoomExits, NewRoom, Readings). Cells are room-map cells (int16 x, y) in the frame of the
 // room named; Dir on the wire is a byte 0 N (+y), 1 E (+x), 2 S, 3 W. Codecs behave as in
 // Messages.hpp: encoders write what they are given, decoders refuse anything out of range.
 namespace nxtmap::protocol {
@@ -87,6 +89,14 @@ struct EnterRoomMsg {
 size_t encodeEnterRoom(const EnterRoomMsg& m, Payload& out);
 bool decodeEnterRoom(const uint8_t* p, size_t n, EnterRoomMsg& out);
 
+// Scan (2 bytes): read the four sensors where the robot stands (a standing scan, for the PC to
+// tell where the robot is when it seems lost); the brick's Readings echo `scanId` once it is done.
+struct ScanMsg {
+  uint16_t scanId = 0;  // chosen by the PC, 1..65535 (0: no scan)
+};
+size_t encodeScan(const ScanMsg& m, Payload& out);
+bool decodeScan(const uint8_t* p, size_t n, ScanMsg& out);
+
 // ---- brick -> PC -------------------------------------------------------------------------
 
 // One exit of a room (12 bytes): as EnterRoomMsg's doorway, outward and inside.
@@ -120,5 +130,35 @@ struct NewRoomMsg {
 };
 size_t encodeNewRoom(const NewRoomMsg& m, Payload& out);
 bool decodeNewRoom(const uint8_t* p, size_t n, NewRoomMsg& out);
+
+// One filtered reading (embedded, 2 bytes): cm (0..255: a sonar byte or the mean of some), then
+// status (RangeStatus 0..4) in the low nibble and samples (0..RangeFilter::kMaxSamples; 0: never
+// read) in the high nibble.
+constexpr int16_t kMaxReadingCm = 255;
+
+// One start reading (embedded, 3 bytes): the direction in the room's frame, then the reading.
+struct StartReadingMsg {
+  Dir dir = Dir::North;
+  RangeReading reading{};
+};
+constexpr uint8_t kMaxStartReadings = 8;  // as RoomSession::kMaxStartReadings
+
+// Readings (19 + 3 per start reading, at most 43 bytes): what the brick read standing still, sent
+// again and again while it maps a house (an absolute state, like RoomExits).
+//  - The last standing scan: `scanId` of the Scan command it answered (0: none yet), the pose it was
+//    taken at (the brick's current room frame) and its readings Front, Right, Back, Left.
+//  - The start readings of room `roomId` (those taken where its run started, before the robot
+//    first drove or turned), `startDone` once no more can come (the room's run is over).
+struct ReadingsMsg {
+  uint16_t scanId = 0;
+  Pose scanPose{};
+  RangeReading scan[kSensorCount] = {};
+  uint16_t roomId = 0;
+  bool startDone = false;
+  uint8_t startCount = 0;  // 0..kMaxStartReadings
+  StartReadingMsg start[kMaxStartReadings] = {};
+};
+size_t encodeReadings(const ReadingsMsg& m, Payload& out);
+bool decodeReadings(const uint8_t* p, size_t n, ReadingsMsg& out);
 
 }  // namespace nxtmap::protocol

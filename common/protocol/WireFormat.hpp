@@ -17,7 +17,7 @@
 //    ack/ackMask: ack = newest reliable seq received, bit i of ackMask = seq (ack - 1 - i) received.
 namespace nxtmap::protocol {
 
-constexpr uint8_t kProtocolVersion = 2;
+constexpr uint8_t kProtocolVersion = 3;  // 3: Scan and Readings (a house's standing scan, start readings)
 
 // Sizes (bytes). LEGO's Bluetooth input buffer holds 128 bytes per message.
 constexpr size_t kLengthPrefix = 2;
@@ -70,6 +70,7 @@ enum class Op : uint8_t {
                           // (sent after a MapChunk upload: the pose in the uploaded map's frame)
   GoTo = 0x0A,            // reliable command; GoToMsg: drive to a cell of the brick's map
   EnterRoom = 0x0B,       // reliable command; EnterRoomMsg: cross a doorway, start the room beyond it
+  Scan = 0x0C,            // reliable command; ScanMsg: read the four sensors where the robot stands
   // brick -> PC:
   HelloReply = 0x41,    // unreliable; HelloReplyMsg
   Status = 0x42,        // unreliable, periodic; StatusMsg
@@ -80,6 +81,7 @@ enum class Op : uint8_t {
   Battery = 0x47,       // unreliable; BatteryMsg
   Counters = 0x48,      // unreliable, periodic; CountersMsg
   RoomExits = 0x49,     // unreliable, periodic while mapping a house; RoomExitsMsg (absolute state)
+  Readings = 0x4A,      // unreliable, periodic while mapping a house; ReadingsMsg (absolute state)
 };
 
 constexpr uint8_t kFlagReliable = 0x01;

@@ -28,7 +28,7 @@ __attribute__((noinline)) DriveAction nxtmapSensorUpdate(ExplorerStack* stack, c
 namespace {
 bool isHouseCommand(const protocol::Command& c) {
   return c.kind == protocol::CommandKind::GoTo || c.kind == protocol::CommandKind::EnterRoom ||
-         (c.kind == protocol::CommandKind::Explore && c.explore.confine);
+         c.kind == protocol::CommandKind::Scan || (c.kind == protocol::CommandKind::Explore && c.explore.confine);
 }
 }  // namespace
 
@@ -42,7 +42,8 @@ void ModeMachine::carryOut(const protocol::Command& c, uint32_t nowMs) {
     case protocol::CommandKind::MapChunk: takeMapChunk(c.chunk); break;
     case protocol::CommandKind::SetPose: restAt(c.pose); break;
     case protocol::CommandKind::GoTo:  // houseCommand
-    case protocol::CommandKind::EnterRoom: break;
+    case protocol::CommandKind::EnterRoom:
+    case protocol::CommandKind::Scan: break;
   }
 }
 
@@ -60,6 +61,8 @@ void ModeMachine::houseCommand(const protocol::Command& c, uint32_t nowMs) {
       first = house_->explore(c.explore, here, roomId_);  // a new room: the map is cleared
     else if (c.kind == protocol::CommandKind::GoTo)
       first = house_->goTo(c.goTo, here);
+    else if (c.kind == protocol::CommandKind::Scan)
+      first = house_->scan(c.scan, here);
     else
       first = house_->enterRoom(c.enterRoom, here);
     afterHouseStep(first, nowMs);

@@ -26,7 +26,7 @@ inline constexpr bool kHouseCommands = true;
 // (protocol::Command) and from the buttons (Enter: explore with the published method, Right: explore
 // with the frontier explorer, Exit: stop, Left: new room). Exploring feeds the ActionRunner the
 // ExplorerStack's actions; following a path feeds it the PathFollower's. Mapping a house (a confined
-// Explore, GoTo, EnterRoom from the PC) feeds it the HouseBrick's: while that is active, the mode,
+// Explore, GoTo, EnterRoom, Scan from the PC) feeds it the HouseBrick's: while that is active, the mode,
 // pose, room and report are the house's; any other command or button, and a fault, aborts it and
 // leaves the robot resting where the house believed it. Owns the follower and the robot's resting
 // pose; the stack, house, runner, link, safety and tachometers are BrickApp's (`house` may be
@@ -91,7 +91,7 @@ class ModeMachine {
   void stop();
   void newRoom();
   void stepExplorer(const DriveEvent& e, uint32_t nowMs);
-  // A confined Explore, GoTo or EnterRoom: started by the HouseBrick from where the robot stands.
+  // A confined Explore, GoTo, EnterRoom or Scan: started by the HouseBrick from where the robot stands.
   void houseCommand(const protocol::Command& c, uint32_t nowMs);
   // After each house step: the map restart goes to the link, the room id follows, the next action runs.
   void afterHouseStep(const DriveAction& next, uint32_t nowMs);

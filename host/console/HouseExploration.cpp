@@ -11,11 +11,12 @@ namespace {
 using Kind = house::HouseOrder::Kind;
 constexpr double kCrossBlockedS = 3.0;  // an EnterRoom run, and the brick still idle in its room: blocked
 
-// The planner without a scan over the link (see the header).
-house::HousePlannerConfig linkPlanner() {
+// The planner as `sim-house` configures it, for the brick at the other end: its pilot's pose range
+// and its grid (from its HelloReply).
+house::HousePlannerConfig linkPlanner(const link::Session& s) {
   house::HousePlannerConfig c;
-  c.relocaliseCells = 0;
-  c.anchorStart = false;
+  c.poseRangeCm = PilotConfig{}.poseRangeCm;
+  if (s.hello()) c.gridCells = 1 << s.hello()->gridWidthLog2;
   return c;
 }
 
@@ -23,7 +24,7 @@ house::HousePlannerConfig linkPlanner() {
 
 std::string HouseExploration::start(link::Session& s, double nowS) {
   if (active_) throw ConsoleError("explore house: the house is being mapped already (wait house)");
-  planner_.emplace(linkPlanner(), RangeGeometry{});
+  planner_.emplace(linkPlanner(s), geometry_);
   active_ = true;
   done_ = false;
   roomsMapped_ = 0;
@@ -41,7 +42,11 @@ std::string HouseExploration::send(link::Session& s, const house::HouseOrder& o)
       return "the brick maps the room it stands in\n";
     case Kind::Travel: sendTravel(s, o); return "";
     case Kind::Cross: sendCross(s, o); return "";
-    case Kind::Scan:  // never asked for: relocaliseCells is 0 over the link
+    case Kind::Scan:
+      scanId_ = static_cast<uint16_t>(scanId_ == 0xFFFF ? 1 : scanId_ + 1);
+      s.scan(scanId_);
+      wait_ = Wait::Scan;
+      return "";
     case Kind::Finished: break;
   }
   wait_ = Wait::Nothing;
@@ -92,6 +97,8 @@ house::HouseReport HouseExploration::roomReport(link::Session& s) const {
   for (uint8_t i = 0; i < m.count; ++i)
     r.exits.push_back(RoomExit{protocol::doorwayOf(m.exits[i].door), m.exits[i].inside, m.exits[i].outward});
   if (s.room() && s.room()->roomId == room_) r.crossedAt = Pose{s.room()->origin, s.room()->heading};
+  const protocol::ReadingsMsg& k = *s.readings();
+  for (uint8_t i = 0; i < k.startCount; ++i) r.startReadings.push_back({k.start[i].dir, k.start[i].reading});
   return r;
 }
 
@@ -101,6 +108,7 @@ std::optional<house::HouseReport> HouseExploration::arrived(link::Session& s) {
   }
   if (wait_ == Wait::Room) return roomDone(s);
   if (wait_ == Wait::Goal) return goalDone(s);
+  if (wait_ == Wait::Scan) return scanDone(s);
   return std::nullopt;
 }
 
@@ -125,13 +133,26 @@ std::optional<house::HouseReport> HouseExploration::crossBlocked(link::Session& 
 }
 
 // The room's end (its whole map held here) and a Status of the brick done in that room (its pose);
-// after a crossing, also the new room's frame (NewRoom, repeated with every Status).
+// after a crossing, also the new room's frame (NewRoom, repeated with every Status); and all of the
+// room's start readings.
 std::optional<house::HouseReport> HouseExploration::roomDone(link::Session& s) const {
   const auto& st = s.status();
   const bool framed = roomsMapped_ == 0 || (s.room() && s.room()->roomId == room_);
   const bool ended = s.roomExits() && s.roomExits()->roomId == room_ && s.roomExits()->end != ExplorerEnd::Running;
-  if (!ended || !st || st->roomId != room_ || st->mode != protocol::BrickMode::Done || !framed) return std::nullopt;
+  const bool read = s.readings() && s.readings()->roomId == room_ && s.readings()->startDone;
+  if (!ended || !read || !st || st->roomId != room_ || st->mode != protocol::BrickMode::Done || !framed)
+    return std::nullopt;
   return roomReport(s);
+}
+
+// The scan's readings and the pose it was taken at, once the brick reports this scan's id.
+std::optional<house::HouseReport> HouseExploration::scanDone(link::Session& s) const {
+  if (!s.readings() || s.readings()->scanId != scanId_) return std::nullopt;
+  house::HouseReport r;
+  r.kind = house::HouseReport::Kind::Scanned;
+  r.pose = s.readings()->scanPose;
+  for (int i = 0; i < kSensorCount; ++i) r.scan[i] = s.readings()->scan[i];
+  return r;
 }
 
 // The goal's end and the pose it ended at, from one Status (a Pose message may be older).

@@ -3,12 +3,12 @@
 // the planner takes the room's map (the PC's copy, complete once the brick reports the room's end)
 // and its exits, picks the next unexplored exit, uploads the known house around the way there and
 // sends the brick to the exit (GoTo), then through it into the next room (EnterRoom); until no exit
-// is left. Every order is a reliable command, run once by the brick. Progress is reported as lines
-// (rooms done, exits left, time). The link may drop and come back in between: the orders wait.
+// is left. A robot that seems lost is told to scan standing (Scan; the four readings come back in
+// Readings) and the first room's start readings (also in Readings) anchor the house's start, as in
+// `sim-house`. Every order is a reliable command, run once by the brick. Progress is reported as
+// lines (rooms done, exits left, time). The link may drop and come back in between: the orders wait.
 // Works on the PC's Session directly (the console calls it under the link runner's lock); times are
 // seconds of the caller's clock.
-// Relocalisation by a standing scan and the start anchor are the simulator's only for now (the link
-// carries no scan yet).
 #pragma once
 #include <optional>
 #include <string>
@@ -20,7 +20,8 @@ namespace nxtmap::console {
 
 class HouseExploration {
  public:
-  HouseExploration() = default;
+  // `geometry`: how the brick's sensors read (for matching its scans and start readings to the map).
+  explicit HouseExploration(const RangeGeometry& geometry = RangeGeometry{}) : geometry_(geometry) {}
 
   // Starts mapping the house from the room the brick stands in. Returns what to print.
   std::string start(link::Session& s, double nowS);
@@ -38,7 +39,7 @@ class HouseExploration {
   int roomsMapped() const { return roomsMapped_; }
 
  private:
-  enum class Wait { Nothing, Room, Goal, Cross };
+  enum class Wait { Nothing, Room, Goal, Cross, Scan };
   std::string send(link::Session& s, const house::HouseOrder& o);
   void sendTravel(link::Session& s, const house::HouseOrder& o);
   void sendCross(link::Session& s, const house::HouseOrder& o);
@@ -47,13 +48,16 @@ class HouseExploration {
   std::optional<house::HouseReport> crossBlocked(link::Session& s);
   std::optional<house::HouseReport> roomDone(link::Session& s) const;
   std::optional<house::HouseReport> goalDone(link::Session& s) const;
+  std::optional<house::HouseReport> scanDone(link::Session& s) const;
   house::HouseReport roomReport(link::Session& s) const;
 
+  RangeGeometry geometry_;
   std::optional<house::HousePlanner> planner_;
   bool active_ = false, done_ = false;
   Wait wait_ = Wait::Nothing;
   uint16_t room_ = 0;  // the brick's id of the room being mapped (or entered)
   uint16_t goalId_ = 0, transferId_ = 0x4000;
+  uint16_t scanId_ = 0;         // the last Scan's id (1..65535)
   uint16_t enterSeq_ = 0;       // the EnterRoom command's sequence number
   uint64_t statusesAtAck_ = 0;  // statuses received when it was acknowledged (0: not yet)
   double startedS_ = 0, crossSinceS_ = 0, nowS_ = 0;

@@ -38,6 +38,11 @@ uint16_t Session::enterRoom(const EnterRoomMsg& m) {
   if (encodeEnterRoom(m, p) == 0) throw std::invalid_argument("the doorway does not fit a packet");
   return enqueue(Op::EnterRoom, p);
 }
+uint16_t Session::scan(uint16_t scanId) {
+  Payload p;
+  if (encodeScan(ScanMsg{scanId}, p) == 0 || scanId == 0) throw std::invalid_argument("a scan's id is 1..65535");
+  return enqueue(Op::Scan, p);
+}
 uint16_t Session::stop() { return enqueue(Op::Stop, Payload{}); }
 uint16_t Session::requestMap() { return enqueue(Op::RequestMap, Payload{}); }
 
@@ -277,6 +282,11 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
     case Op::RoomExits: {
       RoomExitsMsg m;
       if (decodeRoomExits(v.payload, v.payloadSize, m)) roomExits_ = m;
+      break;
+    }
+    case Op::Readings: {
+      ReadingsMsg m;
+      if (decodeReadings(v.payload, v.payloadSize, m)) readings_ = m;
       break;
     }
     case Op::Battery: {

@@ -79,6 +79,9 @@ class Session {
   // message cannot be encoded.
   uint16_t goTo(uint16_t goalId, Cell target);
   uint16_t enterRoom(const protocol::EnterRoomMsg& m);
+  // A standing scan (the brick's Readings echo `scanId`, 1..65535, once it is done). Throws
+  // std::invalid_argument for scanId 0.
+  uint16_t scan(uint16_t scanId);
   uint16_t stop();
   // A path of 8-neighbour cells (cell 0 = the robot's cell), at most kMaxPathCells cells.
   // Throws std::invalid_argument for an empty, too long or broken path.
@@ -110,6 +113,8 @@ class Session {
   const std::optional<protocol::NewRoomMsg>& room() const { return room_; }
   // The exits of the room the brick maps as part of a house, as last reported.
   const std::optional<protocol::RoomExitsMsg>& roomExits() const { return roomExits_; }
+  // The last standing scan and the start readings of the room mapped as part of a house, as last reported.
+  const std::optional<protocol::ReadingsMsg>& readings() const { return readings_; }
   // The brick's room counter as last reported (none before the first report).
   const std::optional<uint16_t>& roomId() const { return roomId_; }
   // Room changes since the last call, oldest first.
@@ -169,6 +174,7 @@ class Session {
   std::optional<protocol::PathProgressMsg> path_;
   std::optional<protocol::NewRoomMsg> room_;
   std::optional<protocol::RoomExitsMsg> roomExits_;
+  std::optional<protocol::ReadingsMsg> readings_;
   uint64_t statuses_ = 0;
   std::optional<uint16_t> battery_;
   std::optional<uint16_t> legoBattery_;

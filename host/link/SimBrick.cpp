@@ -202,6 +202,8 @@ void SimBrick::houseCommand(const Command& c) {
     pending_ = house_.explore(c.explore, here, roomId_);
   } else if (c.kind == CommandKind::GoTo) {
     pending_ = house_.goTo(c.goTo, here);
+  } else if (c.kind == CommandKind::Scan) {
+    pending_ = house_.scan(c.scan, here);
   } else {
     pending_ = house_.enterRoom(c.enterRoom, here);
   }
@@ -213,7 +215,7 @@ void SimBrick::houseCommand(const Command& c) {
 void SimBrick::carryOut(const Command& c) {
   executed_.push_back(c.seq);
   const bool houseCommand = c.kind == CommandKind::GoTo || c.kind == CommandKind::EnterRoom ||
-                            (c.kind == CommandKind::Explore && c.explore.confine);
+                            c.kind == CommandKind::Scan || (c.kind == CommandKind::Explore && c.explore.confine);
   if (houseCommand) return this->houseCommand(c);
   if (house_.active()) {  // any other command ends the house command and its reports
     house_.abort();
@@ -247,7 +249,8 @@ void SimBrick::carryOut(const Command& c) {
     case CommandKind::MapChunk: takeMapChunk(c.chunk); break;
     case CommandKind::SetPose: setPose(c.pose); break;
     case CommandKind::GoTo:
-    case CommandKind::EnterRoom: break;  // houseCommand
+    case CommandKind::EnterRoom:
+    case CommandKind::Scan: break;  // houseCommand
   }
 }
 

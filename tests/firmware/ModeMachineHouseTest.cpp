@@ -1,6 +1,6 @@
-// The house commands in the brick's mode machine, from outside: a confined Explore, GoTo and
-// EnterRoom from the PC in; the mode, room ids, the new room's frame, the goal's progress and the
-// room's exits (what BrickLink reports) out, with the robot of ModeMachineRig driving (an open floor).
+// The house commands in the brick's mode machine, from outside: a confined Explore, GoTo, EnterRoom
+// and Scan from the PC in; the mode, room ids, the new room's frame, the goal's progress, the room's
+// exits and the readings (what BrickLink reports) out, with the robot of ModeMachineRig driving (an open floor).
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -158,6 +158,60 @@ TEST(ModeMachineHouse, EnterRoomCrossesAndReportsTheNewRoomWithItsFrame) {
     ASSERT_NE(r.exits, nullptr) << c.name;
     EXPECT_EQ(r.exits->roomId, 7) << c.name;
     EXPECT_NE(b.link.mapEpoch(), epoch) << c.name << ": the map restarts for the PC";
+  }
+}
+
+// A standing scan: the four sensors read where the robot stands, Front, Right, Back, Left, reported
+// with the PC's scan id and the pose; the robot does not move. The room's start readings go with it.
+TEST(ModeMachineHouse, ScanReadsTheFourSensorsStandingAndReportsThemWithItsId) {
+  struct Case {
+    std::string name;
+    Pose at;
+    uint8_t rawCm[kSensorCount];  // what the sensor on Front, Right, Back, Left reads
+    RangeStatus status[kSensorCount];
+  };
+  const Case cases[] = {
+      {"walls all round",
+       Pose{Cell{1, 2}, Dir::East},
+       {40, 61, 22, 90},
+       {RangeStatus::Good, RangeStatus::Good, RangeStatus::Good, RangeStatus::Good}},
+      {"open behind, too near ahead",
+       Pose{Cell{-2, 0}, Dir::South},
+       {3, 50, Brick::kNoEchoCm, 150},
+       {RangeStatus::TooNear, RangeStatus::Good, RangeStatus::NoEcho, RangeStatus::TooFar}},
+  };
+  for (const Case& c : cases) {
+    Brick b;
+    b.modes.carryOut(confinedExplore(), b.now);  // the house's room 1 (its start readings: no echo)
+    ASSERT_TRUE(b.runUntil([&] { return !b.house.running(); }, kDriveLimitMs)) << c.name;
+    for (int i = 0; i < kSensorCount; ++i) b.sensors[b.config.sensorPorts[i]].regs[0x42] = c.rawCm[i];
+    b.modes.carryOut(setPose(c.at), b.now);
+    protocol::Command scan = commandOf(protocol::CommandKind::Scan);
+    scan.scan.scanId = 9;
+    b.modes.carryOut(scan, b.now);
+    EXPECT_EQ(b.modes.mode(), Mode::Exploring) << c.name << ": reading";
+    ASSERT_NE(b.modes.report(7400).readings, nullptr) << c.name;
+    EXPECT_EQ(b.modes.report(7400).readings->scanId, 0) << c.name << ": not before it is done";
+    ASSERT_TRUE(b.runUntil([&] { return !b.modes.moving(); }, kDriveLimitMs)) << c.name;
+    const protocol::BrickReport r = b.modes.report(7400);
+    EXPECT_EQ(r.mode, Mode::Idle) << c.name;
+    EXPECT_EQ(r.pose.cell, c.at.cell) << c.name << ": it did not move";
+    EXPECT_EQ(r.pose.heading, c.at.heading) << c.name;
+    ASSERT_NE(r.readings, nullptr) << c.name;
+    EXPECT_EQ(r.readings->scanId, 9) << c.name;
+    EXPECT_EQ(r.readings->scanPose.cell, c.at.cell) << c.name;
+    EXPECT_EQ(r.readings->scanPose.heading, c.at.heading) << c.name;
+    for (int i = 0; i < kSensorCount; ++i) {
+      EXPECT_EQ(r.readings->scan[i].status, c.status[i]) << c.name << ", sensor " << i;
+      if (c.status[i] == RangeStatus::Good) {
+        EXPECT_EQ(r.readings->scan[i].cm, c.rawCm[i]) << c.name << ", sensor " << i;
+      }
+      EXPECT_GT(r.readings->scan[i].samples, 0) << c.name << ", sensor " << i;
+    }
+    EXPECT_EQ(r.readings->roomId, 1) << c.name;
+    EXPECT_TRUE(r.readings->startDone) << c.name;
+    EXPECT_GT(r.readings->startCount, 0) << c.name << ": read before the robot first moved";
+    EXPECT_FALSE(b.modes.wheelsDriven()) << c.name;
   }
 }
 

@@ -322,6 +322,65 @@ TEST_F(BrickLinkTest, HouseCommandsAreDecodedIntoTheirCommands) {
   EXPECT_EQ(link.counters().commandsRun, 3u);
 }
 
+// Scan: run once however often it arrives (its acknowledgement lost); a scan id 0 acknowledged, never run.
+TEST_F(BrickLinkTest, AScanRunsOnceEvenWhenItArrivesTwice) {
+  struct Case {
+    const char* name;
+    uint16_t scanId;
+    int copies;
+    size_t runs;
+  };
+  const Case cases[] = {{"once", 5, 1, 1}, {"twice", 6, 2, 1}, {"three times", 0xFFFF, 3, 1}, {"scan id 0", 0, 2, 0}};
+  uint16_t seq = 0;
+  hello(12);
+  collect(0);
+  for (const Case& c : cases) {
+    Payload p;
+    ASSERT_EQ(encodeScan(ScanMsg{c.scanId}, p), 2u) << c.name;
+    const Bytes scan = test::pcPacket(Op::Scan, ++seq, received, &p);
+    for (int i = 0; i < c.copies; ++i) feed(scan);
+    const Received r = collect(seq * 10u);
+    const std::vector<Command> cmds = commands();
+    ASSERT_EQ(cmds.size(), c.runs) << c.name;
+    if (c.runs == 1) {
+      EXPECT_EQ(cmds[0].kind, CommandKind::Scan) << c.name;
+      EXPECT_EQ(cmds[0].scan.scanId, c.scanId) << c.name;
+    }
+    ASSERT_FALSE(r.headers.empty()) << c.name;
+    EXPECT_TRUE(acknowledges(r.headers.back().ack, r.headers.back().ackMask, seq)) << c.name;
+  }
+  EXPECT_EQ(link.counters().duplicates, 1u + 2u + 1u);
+  EXPECT_EQ(link.counters().commandsRun, 3u);
+}
+
+// Readings go out with every status period while the brick reports them, as they are; none otherwise.
+TEST_F(BrickLinkTest, ReadingsGoOutEveryStatusPeriodWhileMappingAHouse) {
+  hello(13);
+  EXPECT_EQ(collect(0).count(Op::Readings), 0u) << "not mapping a house";
+  ReadingsMsg m;
+  m.scanId = 2;
+  m.scanPose = Pose{Cell{4, -1}, Dir::South};
+  m.scan[3] = RangeReading{RangeStatus::Good, 77, 3};
+  m.roomId = 3;
+  m.startCount = 1;
+  m.start[0] = StartReadingMsg{Dir::East, RangeReading{RangeStatus::TooFar, 180, 3}};
+  report.readings = &m;
+  for (uint32_t period = 1; period <= 3; ++period) {
+    const Received r = collect(period * 500);
+    ASSERT_EQ(r.count(Op::Readings), 1u) << period;
+    ReadingsMsg told;
+    ASSERT_TRUE(decodeReadings(r.last(Op::Readings)->data(), r.last(Op::Readings)->size(), told));
+    EXPECT_EQ(told.scanId, 2);
+    EXPECT_EQ(told.scanPose.cell, (Cell{4, -1}));
+    EXPECT_EQ(told.scan[3].cm, 77);
+    EXPECT_EQ(told.roomId, 3);
+    ASSERT_EQ(told.startCount, 1);
+    EXPECT_EQ(told.start[0].dir, Dir::East);
+    EXPECT_EQ(told.start[0].reading.cm, 180);
+    EXPECT_EQ(collect(period * 500 + 10).count(Op::Readings), 0u) << period << ": once a period";
+  }
+}
+
 // RoomExits tells the room's end only once the PC holds every cell of the map.
 TEST_F(BrickLinkTest, ARoomsEndIsToldOnlyOnceThePcHoldsTheWholeMap) {
   RoomExitsMsg exits;
