@@ -12,7 +12,7 @@ ARM_DIR   := $(BUILD)/arm-common
 FW_DIR    := $(BUILD)/firmware
 CMAKE_GEN := -G Ninja
 
-.PHONY: all deps host host-san arm-common firmware size test demo bench clean help fuzz format
+.PHONY: all deps host host-san host-e2e arm-common firmware size test demo bench clean help fuzz format
 
 all: host
 
@@ -53,6 +53,11 @@ size: firmware
 host: deps $(HOST_DIR)/build.ninja
 	cmake --build $(HOST_DIR) -j $(JOBS)
 
+# make test's Release pass runs only the end-to-end and adversarial suites: build just what they need.
+E2E_TARGETS := nxtmap test_adversarial test_emu test_link
+host-e2e: deps $(HOST_DIR)/build.ninja
+	cmake --build $(HOST_DIR) -j $(JOBS) --target $(E2E_TARGETS)
+
 host-san: deps $(SAN_DIR)/build.ninja
 	cmake --build $(SAN_DIR) -j $(JOBS)
 
@@ -60,7 +65,7 @@ arm-common: deps $(ARM_DIR)/build.ninja
 	cmake --build $(ARM_DIR) -j $(JOBS)
 	@echo "common/ cross-compiled for the ARM7TDMI (-mcpu=arm7tdmi -mthumb, freestanding): OK"
 
-test: host-san arm-common size host
+test: host-san arm-common size host-e2e
 	cd $(SAN_DIR) && ctest --output-on-failure -j $(JOBS)
 	@# The emulated brick's 18-room acceptance runs at full speed from the Release build (skipped under ASan);
 	@# the adversarial suite runs in both builds (a bad input must be refused the same way without sanitizers).

@@ -5,7 +5,8 @@
 namespace nxtmap::fw {
 
 // Run-end markers for the emulator: g_explorerDone turns 1 when the explorer reports Done, after
-// (in the NXTMAP_SIM_GEOMETRY image) the final map was copied to g_mapExport.
+// (in the NXTMAP_SIM_GEOMETRY image) the final map was copied to g_mapExport; a house command's end
+// copies the map held then as well.
 extern "C" {
 volatile uint8_t g_explorerDone = 0;
 #if defined(NXTMAP_SIM_GEOMETRY)
@@ -75,7 +76,13 @@ void ModeMachine::afterHouseStep(const DriveAction& next, uint32_t nowMs) {
     roomId_ = house_->roomId();
     mapChanged();
     pending_ = next;
-    if (house_->running()) runner_.begin(next, wheels(), nowMs);
+    if (house_->running()) {
+      runner_.begin(next, wheels(), nowMs);
+      return;
+    }
+#if defined(NXTMAP_SIM_GEOMETRY)
+    g_mapExport.fill(grid());
+#endif
   }
 }
 

@@ -21,24 +21,6 @@ namespace {
 bool endsWith(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
-// Moves the plan's room boxes from its raster's cells onto the robot's grid `frame` (whose cell (0, 0) is
-// centred on frame.originCm): possible when the grid has the raster's cells, is square to it and its cell
-// centres are the raster's. False otherwise.
-bool movePlanOntoGrid(house::HousePlan& plan, const sim::World& truth, const sim::GridFrame& frame) {
-  const double cell = plan.world.resolutionM() * 100.0;
-  if (std::fabs(truth.resolutionM() * 100.0 - cell) > 1e-9 || frame.headingDeg != 0.0) return false;
-  const double dx = frame.originCm.x() / cell - 0.5, dy = frame.originCm.y() / cell - 0.5;
-  if (std::fabs(dx - std::round(dx)) > 1e-6 || std::fabs(dy - std::round(dy)) > 1e-6) return false;
-  const int shiftCol = -static_cast<int>(std::lround(dx)), shiftRow = -static_cast<int>(std::lround(dy));
-  for (house::PlanRoom& r : plan.rooms) {
-    r.minCol += shiftCol;
-    r.maxCol += shiftCol;
-    r.minRow += shiftRow;
-    r.maxRow += shiftRow;
-  }
-  return true;
-}
-
 }  // namespace
 
 CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& o) {
@@ -88,7 +70,7 @@ int runSimHouse(const SimHouseOptions& o) {
   const sim::World& world = mapper.world();
   // The plan's room boxes are cells of its raster: they move onto the robot's grid when that grid has the
   // raster's cells and is square to it (the robot set down square on a cell centre).
-  if (plan && !movePlanOntoGrid(*plan, mapper.world(), mapper.robot().frame())) {
+  if (plan && !house::movePlanOntoGrid(*plan, mapper.world(), mapper.robot().frame())) {
     std::cout << "(the plan's rooms are on its own " << plan->world.resolutionM() * 100.0
               << " cm grid, not the robot's: rooms are not labelled from the plan, plan coverage not scored)\n";
     plan.reset();

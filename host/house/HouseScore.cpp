@@ -111,4 +111,19 @@ void labelRoomsFromPlan(HouseMapper& m, const HousePlan& plan) {
   }
 }
 
+bool movePlanOntoGrid(HousePlan& plan, const sim::World& truth, const sim::GridFrame& frame) {
+  const double cell = plan.world.resolutionM() * 100.0;
+  if (std::fabs(truth.resolutionM() * 100.0 - cell) > 1e-9 || frame.headingDeg != 0.0) return false;
+  const double dx = frame.originCm.x() / cell - 0.5, dy = frame.originCm.y() / cell - 0.5;
+  if (std::fabs(dx - std::round(dx)) > 1e-6 || std::fabs(dy - std::round(dy)) > 1e-6) return false;
+  const int shiftCol = -static_cast<int>(std::lround(dx)), shiftRow = -static_cast<int>(std::lround(dy));
+  for (PlanRoom& r : plan.rooms) {
+    r.minCol += shiftCol;
+    r.maxCol += shiftCol;
+    r.minRow += shiftRow;
+    r.maxRow += shiftRow;
+  }
+  return true;
+}
+
 }  // namespace nxtmap::house

@@ -42,6 +42,11 @@ struct PlanCoverage {
 PlanCoverage planCoverage(const HouseMapper& mapper, const HousePlan& plan, double minPct = 90.0);
 PlanCoverage planCoverage(const HouseInWorld& house, const HousePlan& plan, double minPct = 90.0);
 
+// Moves the plan's room boxes from its raster's cells onto the robot's grid `frame` (whose cell (0, 0) is
+// centred on frame.originCm): possible when the grid has the raster's cells, is square to it and its cell
+// centres are the raster's (the robot set down square on a cell centre). False otherwise (plan unchanged).
+bool movePlanOntoGrid(HousePlan& plan, const sim::World& truth, const sim::GridFrame& frame);
+
 // Names the mapped rooms after the plan: each plan room box whose centre (or nearest free cell
 // to it) is a free cell of a room map gets a label there, the category in lower case ("kitchen",
 // "kitchen_2" for a second one). The user's naming of rooms, in the simulator.
