@@ -217,6 +217,7 @@ bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out) 
     m.freshSession = freshSession_;
     m.gridWidthLog2 = sync_.widthLog2();
     m.gridHeightLog2 = sync_.heightLog2();
+    m.geometry = config_.geometry;
     encodeHelloReply(m, p);
     return send(Op::HelloReply, false, p, out);
   }

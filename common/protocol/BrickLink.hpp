@@ -40,6 +40,8 @@ struct BrickLinkConfig {
   uint32_t statusPeriodMs = 500;  // Status every this often while a PC is connected
   uint32_t sleepLimitMs = 0;      // KEEP_ALIVE answer (0 = the brick never sleeps)
   uint32_t deltaPeriodMs = 20;    // look for changed cells this often (a scan of the grid; batches changes)
+  // How the brick's sensors read (rangeGeometryMsgOf its explorer's geometry), told to the PC in HelloReply.
+  RangeGeometryMsg geometry{};
 };
 
 // The brick's end of the radio link: the one object the firmware (and the emulator's stand-ins)

@@ -63,12 +63,28 @@ struct Layout<MapChunkMsg> {
            io.check([&] { return chunkOk(m); });
   }
 };
+// Five bytes in a loop (the brick's encoder stays small), then the ranges.
+template <>
+struct Layout<RangeGeometryMsg> {
+  template <class Io, class M>
+  static bool fields(Io& io, M& m) {
+    using G = RangeGeometryMsg;
+    static constexpr uint8_t G::*kOrder[] = {&G::cellCm, &G::minCm, &G::maxCm, &G::mountCm, &G::sureCm};
+    for (uint8_t G::*f : kOrder) {
+      if (!io.u8(m.*f)) return false;
+    }
+    return io.check([&] {
+      return m.cellCm >= 1 && m.minCm < m.maxCm && m.mountCm <= 50 &&
+             (m.sureCm == 0 || (m.sureCm >= m.minCm && m.sureCm <= m.maxCm));
+    });
+  }
+};
 template <>
 struct Layout<HelloReplyMsg> {
   template <class Io, class M>
   static bool fields(Io& io, M& m) {
     return io.u8(m.version) && io.u32(m.session) && io.nibbles(m.gridWidthLog2, m.gridHeightLog2, 1, 7) &&
-           io.u16(m.mapEpoch) && io.u16In(m.maxPathCells, 2, 0xFFFF) && io.flag(m.freshSession);
+           io.u16(m.mapEpoch) && io.u16In(m.maxPathCells, 2, 0xFFFF) && io.flag(m.freshSession) && io.part(m.geometry);
   }
 };
 template <>

@@ -10,6 +10,7 @@
 #include "common/protocol/MapDelta.hpp"
 #include "common/protocol/Payload.hpp"
 #include "common/protocol/WireFormat.hpp"
+#include "common/sensing/RangeGeometry.hpp"
 
 // The payloads of nxtmap packets, each with an encoder and a validating decoder, both driven by
 // one list of the message's fields (its Layout, FieldIo.hpp). Encoders write explicit
@@ -70,6 +71,33 @@ bool decodeMapChunk(const uint8_t* p, size_t n, MapChunkMsg& out);
 
 // ---- brick -> PC -------------------------------------------------------------------------
 
+// How the brick's range sensors read (its explorer's RangeGeometry), one byte each, in whole
+// centimetres: cellCm 1..255 (the simulator's worlds go up to 169 cm cells), 0 <= minCm < maxCm
+// (maxCm <= 255: ranges up to 2.54 m), mountCm 0..50, sureCm 0 (= up to maxCm) or minCm..maxCm.
+// The defaults are RangeGeometry{}'s (the published robot: 10 cm cells, 5 cm .. 1 m, centred).
+struct RangeGeometryMsg {
+  uint8_t cellCm = static_cast<uint8_t>(RangeGeometry{}.cellCm);
+  uint8_t minCm = static_cast<uint8_t>(RangeGeometry{}.minCm);
+  uint8_t maxCm = static_cast<uint8_t>(RangeGeometry{}.maxCm);
+  uint8_t mountCm = static_cast<uint8_t>(RangeGeometry{}.mountCm);
+  uint8_t sureCm = static_cast<uint8_t>(RangeGeometry{}.sureCm);
+};
+// The two forms, converted in one place. A geometry outside the wire's ranges is the brick's
+// configuration error; its HelloReply is then refused by the PC.
+constexpr RangeGeometryMsg rangeGeometryMsgOf(const RangeGeometry& g) {
+  return RangeGeometryMsg{static_cast<uint8_t>(g.cellCm), static_cast<uint8_t>(g.minCm), static_cast<uint8_t>(g.maxCm),
+                          static_cast<uint8_t>(g.mountCm), static_cast<uint8_t>(g.sureCm)};
+}
+constexpr RangeGeometry rangeGeometryOf(const RangeGeometryMsg& m) {
+  RangeGeometry g;
+  g.cellCm = m.cellCm;
+  g.minCm = m.minCm;
+  g.maxCm = m.maxCm;
+  g.mountCm = m.mountCm;
+  g.sureCm = m.sureCm;
+  return g;
+}
+
 struct HelloReplyMsg {
   uint8_t version = kProtocolVersion;
   uint32_t session = 0;       // the PC's session, echoed
@@ -80,6 +108,7 @@ struct HelloReplyMsg {
   // The session is new to the brick (it restarted, or another PC's session came between): the
   // PC clears its copy, and does not resend a command it sent before (it may have run).
   bool freshSession = false;
+  RangeGeometryMsg geometry;  // how the brick's sensors read: the PC plans and matches scans with it
 };
 size_t encodeHelloReply(const HelloReplyMsg& m, Payload& out);
 bool decodeHelloReply(const uint8_t* p, size_t n, HelloReplyMsg& out);

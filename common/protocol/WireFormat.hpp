@@ -17,7 +17,9 @@
 //    ack/ackMask: ack = newest reliable seq received, bit i of ackMask = seq (ack - 1 - i) received.
 namespace nxtmap::protocol {
 
-constexpr uint8_t kProtocolVersion = 3;  // 3: Scan and Readings (a house's standing scan, start readings)
+// 3: Scan and Readings (a house's standing scan, start readings); 4: HelloReply carries the
+// brick's range geometry (cell size, trusted range, sensor mount).
+constexpr uint8_t kProtocolVersion = 4;
 
 // Sizes (bytes). LEGO's Bluetooth input buffer holds 128 bytes per message.
 constexpr size_t kLengthPrefix = 2;

@@ -29,6 +29,13 @@ constexpr IrqRoute kIrqRoutes[] = {
     {reg::kIdTwi, 7, nxtmapIsrTwi}, {reg::kIdSys, 6, nxtmapIsrSystem},    {reg::kIdPioa, 6, nxtmapIsrPio},
     {reg::kIdTc0, 5, nxtmapIsrTc0}, {reg::kIdUsart1, 4, nxtmapIsrUsart1},
 };
+
+// The link as the brick runs it, telling the PC how its sensors read (HelloReply).
+protocol::BrickLinkConfig linkConfigFor(const RangeGeometry& geometry) {
+  protocol::BrickLinkConfig c;
+  c.geometry = protocol::rangeGeometryMsgOf(geometry);
+  return c;
+}
 }  // namespace
 
 BrickApp::BrickApp()
@@ -43,7 +50,7 @@ BrickApp::BrickApp()
                    stack_.config().geometry.hitCells()),
       house_(stack_, confinement_, PilotConfig{}),
 #endif
-      link_(stack_.map().grid(), shadow_, protocol::BrickLinkConfig{}),
+      link_(stack_.map().grid(), shadow_, linkConfigFor(stack_.config().geometry)),
       runner_(motion_, sonar_, config_.drive, stack_.config().geometry, config_.sensorPorts),
       modes_(stack_, houseBrick(), runner_, link_, safety_, tacho_, avr_.command(), config_),
       radio_(bt_, link_, modes_, avr_),

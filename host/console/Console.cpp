@@ -188,7 +188,8 @@ std::string Console::pollHouse() {
   const network::RoomTransform toRoom = h.rooms()[static_cast<size_t>(room)].toHouse.inverse();
   const Pose b = exploration_.planner().belief();
   h.rooms()[0].labels["start"] = Cell{0, 0};  // where the robot was set down (room 0's origin)
-  house_.useHouse(h, 0.10, room);
+  // The brick's cell size (its HelloReply), for save.
+  house_.useHouse(h, exploration_.geometry().cellCm / 100.0, room);
   out += house_.enterHouseRoom();
   runner_.with([&](link::Session& s) { return s.setPose(Pose{toRoom.apply(b.cell), toRoom.apply(b.heading)}); });
   return out;

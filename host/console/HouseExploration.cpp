@@ -12,11 +12,11 @@ using Kind = house::HouseOrder::Kind;
 constexpr double kCrossBlockedS = 3.0;  // an EnterRoom run, and the brick still idle in its room: blocked
 
 // The planner as `sim-house` configures it, for the brick at the other end: its pilot's pose range
-// and its grid (from its HelloReply).
+// and its grid (from its HelloReply, which start() requires).
 house::HousePlannerConfig linkPlanner(const link::Session& s) {
   house::HousePlannerConfig c;
   c.poseRangeCm = PilotConfig{}.poseRangeCm;
-  if (s.hello()) c.gridCells = 1 << s.hello()->gridWidthLog2;
+  c.gridCells = 1 << s.hello()->gridWidthLog2;
   return c;
 }
 
@@ -24,6 +24,9 @@ house::HousePlannerConfig linkPlanner(const link::Session& s) {
 
 std::string HouseExploration::start(link::Session& s, double nowS) {
   if (active_) throw ConsoleError("explore house: the house is being mapped already (wait house)");
+  if (!s.hello())
+    throw ConsoleError("explore house: the brick has not answered yet (its grid and sensor geometry are unknown)");
+  geometry_ = protocol::rangeGeometryOf(s.hello()->geometry);
   planner_.emplace(linkPlanner(s), geometry_);
   active_ = true;
   done_ = false;

@@ -20,10 +20,9 @@ namespace nxtmap::console {
 
 class HouseExploration {
  public:
-  // `geometry`: how the brick's sensors read (for matching its scans and start readings to the map).
-  explicit HouseExploration(const RangeGeometry& geometry = RangeGeometry{}) : geometry_(geometry) {}
-
-  // Starts mapping the house from the room the brick stands in. Returns what to print.
+  // Starts mapping the house from the room the brick stands in, planning with the brick's grid
+  // and range geometry as its HelloReply gave them (ConsoleError before the brick answered).
+  // Returns what to print.
   std::string start(link::Session& s, double nowS);
   // Follows the brick; returns progress lines ("" when nothing new).
   std::string poll(link::Session& s, double nowS);
@@ -37,6 +36,8 @@ class HouseExploration {
   int roomOfRobot() const;
   std::string progress() const;
   int roomsMapped() const { return roomsMapped_; }
+  // How the brick's sensors read (cell size, trusted range, mount), as of the last start().
+  const RangeGeometry& geometry() const { return geometry_; }
 
  private:
   enum class Wait { Nothing, Room, Goal, Cross, Scan };
@@ -51,7 +52,7 @@ class HouseExploration {
   std::optional<house::HouseReport> scanDone(link::Session& s) const;
   house::HouseReport roomReport(link::Session& s) const;
 
-  RangeGeometry geometry_;
+  RangeGeometry geometry_;  // the brick's, from its HelloReply at start()
   std::optional<house::HousePlanner> planner_;
   bool active_ = false, done_ = false;
   Wait wait_ = Wait::Nothing;

@@ -189,13 +189,16 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
   PacketView v;
   if (!parsePacket(t, v)) return;
   if (v.header.op == Op::HelloReply) {
-    HelloReplyMsg reply;
-    if (!decodeHelloReply(v.payload, v.payloadSize, reply)) return;
-    if (reply.version != kProtocolVersion) {
-      error_ = "the brick speaks protocol version " + std::to_string(reply.version) + ", this console " +
+    // A HelloReply starts with its version in every protocol version; the rest of another
+    // version's reply need not decode as ours.
+    const uint8_t version = v.payloadSize > 0 ? v.payload[0] : v.header.version;
+    if (version != kProtocolVersion) {
+      error_ = "the brick speaks protocol version " + std::to_string(version) + ", this console " +
                std::to_string(kProtocolVersion) + ": flash the matching firmware";
       return;
     }
+    HelloReplyMsg reply;
+    if (!decodeHelloReply(v.payload, v.payloadSize, reply)) return;
     if (reply.session != config_.session || connected_) return;
     if (reply.freshSession) {
       map_.clear();  // the brick does not know us: whatever we hold may be stale

@@ -19,6 +19,12 @@ ExplorerConfig explorerConfigFor(const sim::World& world, const mapping::RunConf
   return e;
 }
 
+// The link as configured, telling the PC the explorer's geometry (HelloReply).
+BrickLinkConfig linkConfigFor(BrickLinkConfig link, const RangeGeometry& geometry) {
+  link.geometry = rangeGeometryMsgOf(geometry);
+  return link;
+}
+
 // World heading (N, E, S, W) as a sim::Heading step.
 sim::Heading headingOf(int quarters) { return static_cast<sim::Heading>(((quarters % 4) + 4) % 4); }
 
@@ -76,7 +82,7 @@ SimBrick::SimBrick(sim::RobotPlacement placed, const SimBrickConfig& config)
                return p;
              }()),
       shadow_(packedBytes(stack_.map().grid().capacityWidth(), stack_.map().grid().capacityHeight(), 2)),
-      link_(stack_.map().grid(), shadow_.data(), config.link) {}
+      link_(stack_.map().grid(), shadow_.data(), linkConfigFor(config.link, stack_.config().geometry)) {}
 
 SimBrick::~SimBrick() = default;
 

@@ -100,7 +100,7 @@ Outcome mapOverLink(const Plan& p, uint64_t seed, bool faults) {
   link::LinkHarness h(brick, pc, hc);
   Outcome o;
   EXPECT_TRUE(h.runUntil([&] { return pc.connected() && pc.status().has_value(); }, 30000));
-  HouseExploration x(brick.explorerConfig().geometry);  // the console told the robot's sensing
+  HouseExploration x;  // the brick's sensing, from its HelloReply
   x.start(pc, 0.0);
   bool disconnected = !faults;
   const bool done = h.runUntil(

@@ -267,6 +267,51 @@ TEST_F(BrickLinkTest, AHelloOfAnotherVersionGetsOurVersionAndNoSession) {
   EXPECT_FALSE(link.connected());
 }
 
+// The HelloReply a brick configured with `geometry` gives a Hello.
+HelloReplyMsg helloReplyOf(const RangeGeometry& geometry) {
+  test::OwnedGrid<> o;
+  BrickLinkConfig config;
+  config.geometry = rangeGeometryMsgOf(geometry);
+  BrickLink link{o.grid, o.shadow, config};
+  SeqWindow received;
+  Payload p;
+  encodeHello(HelloMsg{kProtocolVersion, 9, false}, p);
+  for (uint8_t b : test::pcPacket(Op::Hello, 0, received, &p)) link.receive(b);
+  Frame f;
+  EXPECT_TRUE(link.transmit(0, BrickReport{}, f));
+  FrameDecoder d;
+  for (uint8_t i = 0; i < f.size; ++i) d.push(f.bytes[i]);
+  Telegram t;
+  PacketView v;
+  HelloReplyMsg reply;
+  EXPECT_TRUE(d.pop(t) && parsePacket(t, v) && v.header.op == Op::HelloReply);
+  EXPECT_TRUE(decodeHelloReply(v.payload, v.payloadSize, reply));
+  return reply;
+}
+
+TEST(BrickLinkGeometry, TheHelloReplyTellsTheConfiguredRangeGeometry) {
+  struct Case {
+    const char* what;
+    RangeGeometry g;
+  };
+  RangeGeometry brick;  // firmware/app/BrickConfig.hpp
+  brick.cellCm = 20;
+  brick.minCm = 7;
+  brick.maxCm = 120;
+  brick.mountCm = 6;
+  RangeGeometry sure;
+  sure.sureCm = 28;
+  for (const Case& c :
+       {Case{"default (published)", RangeGeometry{}}, Case{"the NXT brick", brick}, Case{"a sure-hit limit", sure}}) {
+    const RangeGeometry got = rangeGeometryOf(helloReplyOf(c.g).geometry);
+    EXPECT_EQ(got.cellCm, c.g.cellCm) << c.what;
+    EXPECT_EQ(got.minCm, c.g.minCm) << c.what;
+    EXPECT_EQ(got.maxCm, c.g.maxCm) << c.what;
+    EXPECT_EQ(got.mountCm, c.g.mountCm) << c.what;
+    EXPECT_EQ(got.sureCm, c.g.sureCm) << c.what;
+  }
+}
+
 TEST_F(BrickLinkTest, MailboxMessagesReachTheFirmware) {
   Frame f;
   ASSERT_TRUE(encodeMessageWrite(1, "stop", f));
