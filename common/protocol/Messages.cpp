@@ -68,11 +68,7 @@ template <>
 struct Layout<RangeGeometryMsg> {
   template <class Io, class M>
   static bool fields(Io& io, M& m) {
-    using G = RangeGeometryMsg;
-    static constexpr uint8_t G::*kOrder[] = {&G::cellCm, &G::minCm, &G::maxCm, &G::mountCm, &G::sureCm};
-    for (uint8_t G::*f : kOrder) {
-      if (!io.u8(m.*f)) return false;
-    }
+    if (!(io.u8(m.cellCm) && io.u8(m.minCm) && io.u8(m.maxCm) && io.u8(m.mountCm) && io.u8(m.sureCm))) return false;
     return io.check([&] {
       return m.cellCm >= 1 && m.minCm < m.maxCm && m.mountCm <= 50 &&
              (m.sureCm == 0 || (m.sureCm >= m.minCm && m.sureCm <= m.maxCm));
