@@ -98,8 +98,12 @@ constexpr uint32_t kUs1Idr = 0xFFFC400C;
 constexpr uint32_t kUs1Csr = 0xFFFC4014;
 constexpr uint32_t kUs1Rhr = 0xFFFC4018;
 constexpr uint32_t kUs1Brgr = 0xFFFC4020;
+constexpr uint32_t kUs1Rpr = 0xFFFC4100;
+constexpr uint32_t kUs1Rcr = 0xFFFC4104;
 constexpr uint32_t kUs1Tpr = 0xFFFC4108;
 constexpr uint32_t kUs1Tcr = 0xFFFC410C;
+constexpr uint32_t kUs1Rnpr = 0xFFFC4110;
+constexpr uint32_t kUs1Rncr = 0xFFFC4114;
 constexpr uint32_t kUs1Ptcr = 0xFFFC4120;
 constexpr uint32_t kUsCsrRxrdy = 1u << 0, kUsCsrOvre = 1u << 5, kUsCsrEndtx = 1u << 4, kUsCsrTxempty = 1u << 9;
 

@@ -4,6 +4,7 @@
 #include "firmware/board/At91sam7s.hpp"
 #include "firmware/drivers/BlueCoreFrame.hpp"
 #include "firmware/drivers/ByteRing.hpp"
+#include "firmware/drivers/UsartRxDma.hpp"
 
 namespace nxtmap::fw {
 
@@ -21,8 +22,9 @@ namespace nxtmap::fw {
 // Command-mode messages come back to back (36 bytes at most: 0.8 ms); a partial message that gets no
 // byte for kMessageGapMs is noise (e.g. the tail of a message cut by the switch from stream mode) and
 // the parser starts over at the next byte, so it never swallows the messages after it.
-// Received bytes arrive in the USART1 interrupt (onInterrupt, one RXRDY per byte) into a ring;
-// transmission uses the USART1 PDC from a transmit ring. poll() runs in the main loop.
+// Received bytes arrive through the USART1 receive PDC (UsartRxDma: with hardware handshaking the
+// chip holds RTS high unless a PDC receive buffer is free) and are read from its buffers in the main
+// loop; transmission uses the USART1 PDC from a transmit ring. poll() runs in the main loop.
 // Bus: read(addr), write(addr, value), address(pointer) = the bus address a PDC takes.
 template <class Bus>
 class BlueCore {
@@ -52,9 +54,9 @@ class BlueCore {
     bus_.write(kUs1Mr, 2u | (3u << 6) | (4u << 9) | (1u << 19));        // HW handshake, 8 bit, no parity, 1 stop, OVER
     bus_.write(kUs1Brgr, mck / 8 / 460800);
     bus_.write(kUs1Ptcr, (1u << 1) | (1u << 9));  // RX/TX PDC off
-    bus_.write(kUs1Idr, ~0u);
+    bus_.write(kUs1Idr, ~0u);                     // polled: no USART interrupt
+    rx_.start();
     bus_.write(kUs1Cr, (1u << 4) | (1u << 6));  // RXEN TXEN
-    bus_.write(kUs1Ier, kUsCsrRxrdy);
     // ADC channel 6 reads the BC4 CMD line.
     bus_.write(kAdcCr, 1u);                                    // SWRST
     bus_.write(kAdcMr, (4u << 8) | (12u << 16) | (2u << 24));  // 5 MHz, 20 us startup, 600 ns S/H
@@ -64,16 +66,10 @@ class BlueCore {
 
   State state() const { return state_; }
   bool streaming() const { return state_ == State::Stream; }
-  uint32_t rxDropped() const { return rx_.dropped(); }
   uint32_t badMessages() const { return parser_.badMessages(); }
 
-  // USART1 interrupt: moves received bytes into the ring.
-  void onInterrupt() {
-    using namespace reg;
-    const uint32_t csr = bus_.read(kUs1Csr);
-    if (csr & kUsCsrOvre) bus_.write(kUs1Cr, 1u << 8);  // RSTSTA
-    if (csr & kUsCsrRxrdy) rx_.push(static_cast<uint8_t>(bus_.read(kUs1Rhr)));
-  }
+  // USART1 interrupt: none is enabled (reception is polled from the PDC buffers).
+  void onInterrupt() {}
 
   // Main loop: runs the connection state machine (command mode: drains received bytes into the
   // command parser) and feeds the transmitter.
@@ -85,7 +81,7 @@ class BlueCore {
       if (cmd < kCmdThreshold) leaveStream(nowMs);
       return;
     }
-    if (rx_.size() != 0) {
+    if (rx_.pending() != 0) {
       lastRxMs_ = nowMs;
     } else if (nowMs - lastRxMs_ >= kMessageGapMs) {
       parser_.reset();  // a partial message that stopped is noise
@@ -107,8 +103,8 @@ class BlueCore {
     return true;
   }
   uint16_t txSpace() const { return tx_.space(); }
-  // Received bytes wait in the ring.
-  bool rxPending() const { return rx_.size() != 0; }
+  // Received bytes wait in the PDC buffers.
+  bool rxPending() const { return rx_.pending() != 0; }
   // Counts stream sessions that ended (the PC must be treated as gone).
   uint32_t linkEpoch() const { return linkEpoch_; }
 
@@ -223,7 +219,7 @@ class BlueCore {
   }
 
   Bus& bus_;
-  ByteRing<256> rx_;
+  UsartRxDma<Bus> rx_{bus_};
   ByteRing<512> tx_;
   BcParser parser_;
   uint32_t linkEpoch_ = 0;

@@ -103,7 +103,7 @@ void BlueCore::command(const std::vector<uint8_t>& f) {
 }
 
 bool BlueCore::hasByteForArm() const {
-  if (!running_) return false;
+  if (!running_ || rtsHigh_) return false;
   return dataMode() ? streamOpen_ && !pcIn_.empty() : !toArm_.empty();
 }
 

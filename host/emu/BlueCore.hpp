@@ -9,6 +9,7 @@
 // the module's messages do. So when the PC hangs up (the CMD signal drops, CLOSE_CONNECTION_RESULT is
 // queued) the message waits until the ARM has lowered ARM7_CMD, and the ARM's last stream bytes are
 // never taken for a command. The PC's bytes not yet delivered go with the link.
+// Flow control: no byte is started towards the ARM while the ARM's RTS (the module's CTS) is high.
 // Input bound: at most kPcInputBytes from the PC wait here (the module's buffer plus the radio's
 // window); beyond that the transport is not read, so its own flow control holds the PC back.
 #pragma once
@@ -33,6 +34,7 @@ class BlueCore : public SerialPeer, public IoDevice {
   void fromArm(uint8_t byte) override;
   bool hasByteForArm() const override;
   uint8_t takeByteForArm() override;
+  void armRts(bool high) override { rtsHigh_ = high; }  // CTS: high = hold back
 
   // Time source (not on the bus): polls the PC side every millisecond, boot delay after reset.
   const char* name() const override { return "BC4"; }
@@ -63,6 +65,7 @@ class BlueCore : public SerialPeer, public IoDevice {
   Pioa& pio_;
   LinkEndpoint* link_;
   bool running_ = false;        // RESET released
+  bool rtsHigh_ = false;        // the ARM's RTS: while high no byte is started towards the ARM
   uint64_t bootAt_ = kNever;    // RESET_INDICATION due
   std::vector<uint8_t> frame_;  // command-mode bytes from the ARM being assembled
   std::deque<uint8_t> toArm_;

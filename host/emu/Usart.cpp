@@ -24,12 +24,20 @@ uint32_t Usart::status() const {
   return s;
 }
 
-bool Usart::canReceive() const {
-  if (!rxEn_ || bitCycles() == 0) return false;
+bool Usart::rtsHigh() const {
   const bool handshake = (mr_ & 0xF) == 2;
-  if (pdc_.rxEnabled()) return pdc_.rxActive() || !handshake;
-  return !handshake || !rxrdy_;
+  return handshake && (!rxEn_ || pdc_.rxBufferFull());
 }
+
+void Usart::syncRts() {
+  const bool high = rtsHigh();
+  if (high == rtsToldHigh_) return;
+  rtsToldHigh_ = high;
+  peer_.armRts(high);
+  if (!high) clock_.poke();  // the peer may start a byte now
+}
+
+bool Usart::canReceive() const { return rxEn_ && bitCycles() != 0; }
 
 void Usart::refillThr() {
   if (!thrFull_ && txEn_ && pdc_.txActive()) {
@@ -78,6 +86,7 @@ void Usart::advanceTo(uint64_t now) {
         ++received_;
         if (pdc_.rxActive()) {
           if (!pdc_.putRx(b)) dmaFault_ = true;
+          syncRts();
         } else {
           if (rxrdy_) ovre_ = true;
           rhr_ = b;
@@ -107,7 +116,6 @@ bool Usart::read(uint32_t off, uint32_t& v) {
     case 0x14: v = status(); return true;
     case 0x18:
       v = rhr_;
-      if (rxrdy_ && (mr_ & 0xF) == 2 && peer_.hasByteForArm()) clock_.poke();  // handshake lets the next byte in
       rxrdy_ = false;
       return true;
     case 0x20: v = brgr_; return true;
@@ -121,6 +129,7 @@ bool Usart::write(uint32_t off, uint32_t v) {
   if (off >= 0x100) {
     if (!pdc_.write(off - 0x100, v)) return false;
     refillThr();
+    syncRts();
     return true;
   }
   switch (off) {
@@ -151,8 +160,12 @@ bool Usart::write(uint32_t off, uint32_t v) {
         rxSinceStart_ = true;
       }  // RETTO
       refillThr();
+      syncRts();
       return true;
-    case 0x04: mr_ = v; return true;
+    case 0x04:
+      mr_ = v;
+      syncRts();
+      return true;
     case 0x08: imr_ |= v; return true;
     case 0x0C: imr_ &= ~v; return true;
     case 0x1C:

@@ -1,6 +1,10 @@
 // Usart: USART1 (0xFFFC4000, ID 7) with its PDC at +0x100, asynchronous 8N1 at the rate set by BRGR/MR.OVER,
-// transmit holding + shift register, receive holding register or DMA, receive time-out (RTOR after STTTO),
-// hardware handshake (the peer holds back while the DMA buffers are full). The far end is a SerialPeer.
+// transmit holding + shift register, receive holding register or DMA, receive time-out (RTOR after STTTO).
+// Hardware handshaking (US_MR USMODE = 2), as the datasheet states it: RTS is high while the receiver is
+// disabled or the PDC's RXBUFF is set (RCR = RNCR = 0), whether or not the receive PDC is enabled, and low
+// otherwise; the SerialPeer is told (armRts) and does not send while it is high. Other modes: RTS low
+// (RTSEN/RTSDIS not modelled). A byte that arrives with the receive PDC idle goes to RHR (overrun if RXRDY
+// is still set). The far end is a SerialPeer.
 #pragma once
 
 #include "host/emu/IoDevice.hpp"
@@ -27,6 +31,8 @@ class Usart : public IoDevice {
   uint64_t bytesSent() const { return sent_; }
   uint64_t bytesReceived() const { return received_; }
   bool dmaFault() const { return dmaFault_; }
+  bool rtsHigh() const;  // the RTS pin as driven now
+  bool overrun() const { return ovre_; }
 
  private:
   static constexpr uint32_t kRxrdy = 1, kTxrdy = 2, kEndrx = 8, kEndtx = 16, kOvre = 32, kTimeout = 1u << 8,
@@ -35,6 +41,7 @@ class Usart : public IoDevice {
   uint64_t bitCycles() const;
   bool canReceive() const;
   void refillThr();
+  void syncRts();  // tells the peer when RTS changes
 
   Clock& clock_;
   Pdc pdc_;
@@ -53,6 +60,7 @@ class Usart : public IoDevice {
   bool rxSinceStart_ = false;
   uint64_t sent_ = 0, received_ = 0;
   bool dmaFault_ = false;
+  bool rtsToldHigh_ = false;  // RTS level the peer was last told (reset: normal mode, low)
 };
 
 }  // namespace nxtmap::emu

@@ -19,7 +19,10 @@ bool Watchdog::read(uint32_t off, uint32_t& v) {
 bool Watchdog::write(uint32_t off, uint32_t v) {
   switch (off) {
     case 0x0:
-      if ((v >> 24) == 0xA5 && (v & 1)) restartedAt_ = clock_.now;
+      if ((v >> 24) == 0xA5 && (v & 1)) {
+        if (clock_.now - restartedAt_ > longestGap_) longestGap_ = clock_.now - restartedAt_;
+        restartedAt_ = clock_.now;
+      }
       return true;
     case 0x4:
       if (!written_) {

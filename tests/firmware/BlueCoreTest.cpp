@@ -13,7 +13,9 @@ using namespace reg;
 // USART1 + PDC + the BC4 module at register level. The module answers OPEN_PORT, ACCEPT_CONNECTION
 // and OPEN_STREAM (raising its CMD line, read through ADC channel 6), checks the ARM's checksum rule,
 // and while the ARM holds ARM7_CMD high exchanges raw bytes (data mode). A PDC transfer may be held
-// (holdTx) to stand for bytes still on their way; TXTDIS abandons it.
+// (holdTx) to stand for bytes still on their way; TXTDIS abandons it. Bytes to the ARM go through the
+// receive PDC (RPR/RCR chained to RNPR/RNCR) and only while RTS is low: hardware handshaking holds RTS
+// high while the receiver is off or RCR = RNCR = 0 (deliver()).
 struct Bc4 {
   FakeBus bus;
   std::deque<uint8_t> toArm;
@@ -22,18 +24,14 @@ struct Bc4 {
   bool cmdLine = false, resetHeld = true, badChecksum = false, indicateReset = true, answerOpenPort = true;
   bool armCmd = false;  // ARM7_CMD (PA27): high = data mode
   bool holdTx = false;
+  bool rxPdc = false;           // receive PDC enabled (PTCR RXTEN)
   std::vector<uint8_t> heldTx;  // a PDC transfer not sent yet
   std::vector<uint8_t> pinAnswer;
 
   Bc4() {
     bus.onRead = [this](uint32_t a, uint32_t& v) {
       if (a == kUs1Csr) {
-        v = toArm.empty() ? 0u : kUsCsrRxrdy;
-        return true;
-      }
-      if (a == kUs1Rhr) {
-        v = toArm.front();
-        toArm.pop_front();
+        v = 0;
         return true;
       }
       if (a == kAdcCdr6) {
@@ -45,7 +43,14 @@ struct Bc4 {
     bus.onWrite = [this](uint32_t a, uint32_t v) {
       if (a == kPioSodr && (v & kPinBtArm7Cmd)) armCmd = true;
       if (a == kPioCodr && (v & kPinBtArm7Cmd)) armCmd = false;
-      if (a == kUs1Ptcr && (v & (1u << 9))) heldTx.clear();  // TXTDIS: the transfer is abandoned
+      if (a == kUs1Ptcr && (v & (1u << 9))) heldTx.clear();     // TXTDIS: the transfer is abandoned
+      if (a == kUs1Ptcr && (v & 1u)) rxPdc = true;              // RXTEN
+      if (a == kUs1Ptcr && (v & 2u)) rxPdc = false;             // RXTDIS
+      if (a == kUs1Rncr && v != 0 && bus.regs[kUs1Rcr] == 0) {  // the next buffer starts at once
+        bus.regs[kUs1Rpr] = bus.regs[kUs1Rnpr];
+        bus.regs[kUs1Rcr] = v;
+        bus.regs[kUs1Rncr] = 0;
+      }
       if (a == kPioCodr && (v & kPinBtReset)) resetHeld = true;
       if (a == kPioSodr && (v & kPinBtReset) && resetHeld) {
         resetHeld = false;
@@ -57,6 +62,25 @@ struct Bc4 {
         if (!holdTx) releaseTx();
       }
     };
+  }
+  // RTS as the USART drives it in hardware-handshaking mode.
+  bool rtsHigh() {
+    const bool handshake = (bus.regs[kUs1Mr] & 0xFu) == 2u;
+    return handshake && (!rxPdc || (bus.regs[kUs1Rcr] == 0 && bus.regs[kUs1Rncr] == 0));
+  }
+  // The module sends while RTS is low; each byte lands at RPR (the next buffer chained in at RCR 0).
+  void deliver() {
+    while (!toArm.empty() && !rtsHigh()) {
+      auto* p = const_cast<uint8_t*>(bus.pointer(bus.regs[kUs1Rpr]));
+      *p = toArm.front();
+      toArm.pop_front();
+      ++bus.regs[kUs1Rpr];
+      if (--bus.regs[kUs1Rcr] == 0 && bus.regs[kUs1Rncr] != 0) {
+        bus.regs[kUs1Rpr] = bus.regs[kUs1Rnpr];
+        bus.regs[kUs1Rcr] = bus.regs[kUs1Rncr];
+        bus.regs[kUs1Rncr] = 0;
+      }
+    }
   }
   void releaseTx() {
     const std::vector<uint8_t> bytes = std::move(heldTx);
@@ -109,7 +133,7 @@ struct Bc4 {
 template <class Bt>
 void runMs(Bc4& m, Bt& bt, uint32_t& now, uint32_t ms) {
   for (uint32_t i = 0; i < ms; ++i, ++now) {
-    while (!m.toArm.empty()) bt.onInterrupt();
+    m.deliver();
     bt.poll(now);
   }
 }
@@ -152,7 +176,7 @@ TEST(BlueCore, FromResetToStreamModeOnAnIncomingConnection) {
   ASSERT_TRUE(bt.write(hello, 4));
   EXPECT_EQ(m.fromArm, (std::vector<uint8_t>{0x02, 0x00, 0xAB, 0xCD}));
   m.toArm.insert(m.toArm.end(), {0x01, 0x00, 0x7E});
-  while (!m.toArm.empty()) bt.onInterrupt();
+  m.deliver();
   std::vector<uint8_t> got;
   uint8_t b;
   while (bt.readByte(b)) got.push_back(b);
@@ -177,6 +201,41 @@ void toStream(Bc4& m, Bt& bt, uint32_t& now) {
   m.requestConnection();
   runMs(m, bt, now, 10);
   ASSERT_TRUE(bt.streaming());
+}
+
+// With handshaking the module may send only while a receive buffer is free: the driver arms both PDC
+// buffers at init (RTS low), and in stream mode 1000 bytes pass in order though only 2 buffers fit at a time
+// (RTS high while both buffers are full, low again once a buffer is read and handed back).
+TEST(BlueCore, ReceivesThroughThePdcAndRtsLetsTheModuleSend) {
+  {
+    Bc4 fresh;
+    BlueCore<FakeBus> idle(fresh.bus);
+    idle.init(kMck, 0);
+    EXPECT_TRUE(fresh.rxPdc);
+    EXPECT_FALSE(fresh.rtsHigh());
+    EXPECT_EQ(fresh.bus.regs[kUs1Rcr], UsartRxDma<FakeBus>::kBufferBytes);
+    EXPECT_EQ(fresh.bus.regs[kUs1Rncr], UsartRxDma<FakeBus>::kBufferBytes);
+  }
+  Bc4 m;
+  BlueCore<FakeBus> bt(m.bus);
+  uint32_t now = 0;
+  toStream(m, bt, now);
+  ASSERT_TRUE(bt.streaming());
+  std::vector<uint8_t> sent, got;
+  for (int i = 0; i < 1000; ++i) sent.push_back(static_cast<uint8_t>(i * 7 + 3));
+  m.toArm.insert(m.toArm.end(), sent.begin(), sent.end());
+  for (int round = 0; round < 20 && got.size() < sent.size(); ++round) {
+    m.deliver();
+    if (round == 0) {
+      EXPECT_TRUE(m.rtsHigh());  // both buffers full: the module holds back
+      EXPECT_GE(m.toArm.size(), 1000u - 2u * UsartRxDma<FakeBus>::kBufferBytes);
+    }
+    uint8_t b;
+    for (int k = 0; k < 100 && bt.readByte(b); ++k) got.push_back(b);  // a partial read, then more
+    while (bt.readByte(b)) got.push_back(b);
+  }
+  EXPECT_EQ(got, sent);
+  EXPECT_FALSE(m.rtsHigh());
 }
 
 TEST(BlueCore, LosingTheLinkMidTransferSendsNoStreamByteAsACommand) {

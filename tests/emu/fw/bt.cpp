@@ -1,19 +1,24 @@
 // Probe: the Bluetooth module on USART1. Releases RESET (PA11), waits for RESET_INDICATION, opens the
 // port, accepts the PC's connection, opens the stream, waits for the CMD signal (ADC 6), raises
-// ARM7_CMD (PA27), then echoes 4 stream bytes + 1 back through the PDC.
+// ARM7_CMD (PA27), then echoes 4 stream bytes + 1 back through the PDC. With hardware handshaking the
+// USART holds RTS high unless a receive PDC buffer is set (RCR or RNCR non-zero), so even single bytes
+// are received through the PDC (a one-byte buffer each).
 #include "Probe.hpp"
 using namespace probe;
 
 namespace {
 constexpr uint32_t kUs = 0xFFFC4000;
-constexpr uint32_t kCr = kUs, kMr = kUs + 4, kCsr = kUs + 0x14, kRhr = kUs + 0x18, kThr = kUs + 0x1C,
-                   kBrgr = kUs + 0x20, kRpr = kUs + 0x100, kRcr = kUs + 0x104, kTpr = kUs + 0x108, kTcr = kUs + 0x10C,
-                   kPtcr = kUs + 0x120;
+constexpr uint32_t kCr = kUs, kMr = kUs + 4, kCsr = kUs + 0x14, kThr = kUs + 0x1C, kBrgr = kUs + 0x20,
+                   kRpr = kUs + 0x100, kRcr = kUs + 0x104, kTpr = kUs + 0x108, kTcr = kUs + 0x10C, kPtcr = kUs + 0x120;
 constexpr uint32_t kAdc = 0xFFFD8000;
 
+volatile uint8_t g_byte;
 uint8_t getByte() {
-  while (!(REG(kCsr) & 1)) {}
-  return static_cast<uint8_t>(REG(kRhr));
+  REG(kRpr) = reinterpret_cast<uint32_t>(&g_byte);
+  REG(kRcr) = 1;
+  REG(kPtcr) = 1;  // RXTEN
+  while (REG(kRcr) != 0) {}
+  return g_byte;
 }
 void putByte(uint8_t b) {
   while (!(REG(kCsr) & 2)) {}
