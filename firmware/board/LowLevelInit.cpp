@@ -14,7 +14,9 @@ void waitFor(uint32_t bits) {
 
 extern "C" void nxtmapLowLevelInit() {
   Mmio::write(reg::kMcFmr, (72u << 16) | (1u << 8));  // FMCN for 48 MHz, 1 wait state
-  // Watchdog (write-once): 250 ms (WDV = 64 at SLCK/128), reset on expiry, halted in debug.
+  // Watchdog (write-once): WDV = 64 at SLCK/128, reset on expiry, halted in debug. SLCK is the RC
+  // oscillator, 22..42 kHz: the period is 195..378 ms (250 ms only at the nominal 32.768 kHz). The
+  // system tick restarts it every 1 ms; the longest gap, boot to the first tick, is about 4 ms.
   Mmio::write(reg::kWdtMr, 64u | (0xFFFu << 16) | (1u << 13) | (1u << 28));
   Mmio::write(reg::kRstcRmr, 0xA5000401u);  // user reset enabled, 2^(4+1) slow clocks pulse
   Mmio::write(reg::kCkgrMor, 0x00000601u);  // main oscillator, 6 x 8 slow clocks start-up

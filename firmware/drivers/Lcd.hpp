@@ -7,16 +7,21 @@ namespace nxtmap::fw {
 
 // The 100 x 64 LCD (UC1601) on SPI: PA13 MOSI, PA14 SPCK (peripheral A), PA10 = NPCS2 chip select
 // (peripheral B), PA12 = A0 (PIO: low command, high data). 2 MHz, 8 bit, CPOL = 1.
-// Bring-up: wait 20 ms, 0xE2 (reset), wait 20 ms, then kInitSequence. Refresh: per page p (8 rows),
-// commands 0x00 0x10 0xB0|p (column 0, page p) then the page's 100 bytes through the SPI PDC; one
-// page per pump() so the main loop never waits long. Framebuffer: 8 pages x 100 columns, bit n of
+// Bring-up: wait 20 ms, 0xE2 (reset), wait 20 ms. Refresh: first the whole setting string kSettings
+// (as LEGO's firmware does before every refresh, so a controller upset by a glitch or a brown-out
+// recovers within one refresh), then per page p (8 rows) commands 0x00 0x10 0xB0|p (column 0, page p)
+// and the page's 100 bytes through the SPI PDC; one page per pump() so the main loop never waits long. Framebuffer: 8 pages x 100 columns, bit n of
 // [page][x] = row 8*page + n, row 0 at the top; owned by the caller.
 template <class Bus>
 class Lcd {
  public:
   static constexpr int kWidth = 100, kPages = 8;
   static constexpr uint8_t kReset = 0xE2;
-  static constexpr uint8_t kInitSequence[] = {0xEB, 0x81, 0x5C, 0x89, 0xC4, 0xAF};
+  // UC1601 settings: bias 1/9, power control (internal pump), all pixels normal, not inverse, scroll
+  // line 0, VBIAS potentiometer 0x5A (contrast), mapping MY, temperature compensation, power control
+  // (panel loading), line rate, RAM address control (column increment), multiplex 1:65, display on.
+  static constexpr uint8_t kSettings[] = {0xEB, 0x2F, 0xA4, 0xA6, 0x40, 0x81, 0x5A,
+                                          0xC4, 0x27, 0x29, 0xA0, 0x88, 0x23, 0xAF};
   static constexpr uint32_t kPowerMs = 20, kResetMs = 20;
   using Frame = uint8_t[kPages][kWidth];
 
@@ -56,7 +61,6 @@ class Lcd {
         return;
       case State::ResetWait:
         if (nowMs - sinceMs_ < kResetMs) return;
-        command(kInitSequence, sizeof(kInitSequence));
         state_ = State::Ready;
         dirty_ = true;
         return;
@@ -64,7 +68,10 @@ class Lcd {
     }
     if (!idle()) return;
     if (page_ == 0 && !dirty_) return;
-    if (page_ == 0) dirty_ = false;
+    if (page_ == 0) {
+      dirty_ = false;
+      command(kSettings, sizeof(kSettings));
+    }
     const uint8_t cmds[3] = {0x00, 0x10, static_cast<uint8_t>(0xB0 | page_)};
     command(cmds, 3);
     bus_.write(reg::kPioSodr, reg::kPinLcdA0);  // data

@@ -13,32 +13,66 @@ void Lcd::byte(bool data, uint8_t v) {
     ++dataBytes_;
     return;
   }
+  ++commandBytes_;
   if (expectArg_) {
     expectArg_ = false;
     return;
   }
-  if (v <= 0x0F)
-    column_ = (column_ & 0xF0) | v;
-  else if (v <= 0x1F)
-    column_ = (column_ & 0x0F) | ((v & 0x0F) << 4);
-  else if ((v & 0xF0) == 0xB0)
-    page_ = v & 0x0F;
-  else if (v == 0xAF)
-    on_ = true;
-  else if (v == 0xAE)
-    on_ = false;
-  else if (v == 0x81)
-    expectArg_ = true;  // contrast: one argument byte
-  else if (v == 0xE2) {
-    on_ = false;
-    column_ = 0;
-    page_ = 0;
+  if (!command(v) && fault_.empty()) {
+    static const char* const kHex = "0123456789ABCDEF";
+    fault_ = std::string("unknown UC1601 command 0x") + kHex[v >> 4] + kHex[v & 15];
   }
 }
 
+// The UC1601 command set (datasheet command table); two-byte commands take the next byte as argument.
+bool Lcd::command(uint8_t v) {
+  if (v <= 0x0F) {
+    column_ = (column_ & 0xF0) | v;  // column address LSB
+  } else if (v <= 0x1F) {
+    column_ = (column_ & 0x0F) | ((v & 0x0F) << 4);  // column address MSB
+  } else if (v <= 0x2F) {
+    // 0x20-0x23 multiplex rate, 0x24-0x27 temperature compensation, 0x28-0x2F power control
+  } else if (v == 0x30 || v == 0x31) {
+    expectArg_ = true;  // advanced program control
+  } else if (v <= 0x3F) {
+    return false;
+  } else if (v <= 0x7F) {
+    // scroll line
+  } else if (v == 0x81) {
+    expectArg_ = true;  // VBIAS potentiometer (contrast)
+  } else if (v == 0x84 || v == 0x85 || (v >= 0x88 && v <= 0xA3)) {
+    // partial display, RAM address control, fixed lines, line rate
+  } else if (v == 0xA4 || v == 0xA5) {
+    allOn_ = v & 1;
+  } else if (v == 0xA6 || v == 0xA7) {
+    inverse_ = v & 1;
+  } else if (v == 0xAE || v == 0xAF) {
+    on_ = v & 1;
+  } else if (v >= 0xB0 && v <= 0xB8) {
+    page_ = v & 0x0F;  // page 8 is the icon row: not shown
+  } else if (v >= 0xC0 && v <= 0xC7) {
+    // LCD mapping control
+  } else if (v == 0xC8 || v == 0xF1 || v == 0xF2 || v == 0xF3 || (v >= 0xF4 && v <= 0xF7)) {
+    expectArg_ = true;  // N-line inversion, COM end, partial display start/end, window
+  } else if (v >= 0xE8 && v <= 0xEB) {
+    // bias ratio
+  } else if (v == 0xE2) {
+    on_ = allOn_ = inverse_ = false;  // system reset
+    column_ = 0;
+    page_ = 0;
+  } else if (v == 0xE3 || v == 0xF8 || v == 0xF9) {
+    // NOP, window program mode
+  } else {
+    return false;
+  }
+  return true;
+}
+
 bool Lcd::pixel(int x, int y) const {
-  if (x < 0 || x >= kWidth || y < 0 || y >= kHeight) return false;
-  return (ram_[static_cast<size_t>(y / 8)][static_cast<size_t>(x)] >> (y % 8)) & 1u;
+  if (x < 0 || x >= kWidth || y < 0 || y >= kHeight || !on_) return false;
+  if (allOn_) return true;
+  const bool set = (ram_[static_cast<size_t>(y / 8)][static_cast<size_t>(x)] >> (y % 8)) & 1u;
+  return set != inverse_;
 }
 
 bool Lcd::savePng(const std::string& path, int scale, std::string& error) const {

@@ -1,7 +1,11 @@
 // Lcd: the UC1601 display controller (100x64 visible of 132 columns x 8 pages) on SPI. A0 (PA12) low =
-// command, high = data. Commands: column address low/high nibble, page address, reset; others are
-// accepted and recorded (on/off, bias, contrast...). Data bytes land at [page][column], column
-// auto-increments. The picture can be saved as PNG (1 = dark pixel; bit n = row 8*page+n).
+// command, high = data. Strict: the panel shows nothing (every pixel clear) until the display is enabled
+// (0xAF) and after a system reset (0xE2) until enabled again; all-pixels-on (0xA5) and inverse (0xA7)
+// change what it shows. Every command byte must be one of the UC1601's commands (the table in Lcd.cpp:
+// column/page address, temperature compensation, power control, scroll line, VBIAS potentiometer + its
+// argument, RAM address control, line rate, mapping, bias ratio, reset, NOP, ...); any other byte is a
+// fault (fault() names the first one). Data bytes land at [page][column], column auto-increments. The
+// picture can be saved as PNG (1 = dark pixel; bit n = row 8*page+n).
 #pragma once
 
 #include <array>
@@ -16,6 +20,9 @@ class Lcd {
   void byte(bool data, uint8_t value);
   bool pixel(int x, int y) const;  // x 0..99, y 0..63
   bool displayOn() const { return on_; }
+  // Empty, or the first command byte the UC1601 does not know ("unknown UC1601 command 0x..").
+  const std::string& fault() const { return fault_; }
+  uint64_t commandBytes() const { return commandBytes_; }
   uint64_t dataBytes() const { return dataBytes_; }
   // Writes a PNG (scale x scale pixels per LCD pixel, scale 1..16) whole or not at all (fileio::AtomicFile);
   // false with the path and the reason in error, `path` then untouched.
@@ -24,9 +31,11 @@ class Lcd {
  private:
   std::array<std::array<uint8_t, kColumns>, kPages> ram_{};
   int column_ = 0, page_ = 0;
-  bool on_ = false;
+  bool command(uint8_t v);  // false: not a UC1601 command
+  bool on_ = false, allOn_ = false, inverse_ = false;
   bool expectArg_ = false;  // the next command byte is an argument (e.g. after 0x81 contrast)
-  uint64_t dataBytes_ = 0;
+  uint64_t dataBytes_ = 0, commandBytes_ = 0;
+  std::string fault_;
 };
 
 }  // namespace nxtmap::emu

@@ -41,7 +41,9 @@ struct LcdWire {
   }
 };
 
-TEST(Lcd, BringUpWaitsThenResetsThenInitialises) {
+// The controller's settings go out in full before every refresh (LEGO's way: a controller upset by a
+// glitch recovers within one refresh), the first refresh right after the reset wait.
+TEST(Lcd, BringUpWaitsThenResetsThenSendsTheSettingsWithTheFirstRefresh) {
   LcdWire w;
   uint8_t frame[8][100] = {};
   Lcd<FakeBus> lcd(w.bus, frame);
@@ -55,8 +57,15 @@ TEST(Lcd, BringUpWaitsThenResetsThenInitialises) {
   lcd.pump(39);
   EXPECT_EQ(w.commands.size(), 1u);
   lcd.pump(40);
-  EXPECT_EQ(w.commands, (std::vector<uint8_t>{0xE2, 0xEB, 0x81, 0x5C, 0x89, 0xC4, 0xAF}));
   EXPECT_TRUE(lcd.ready());
+  EXPECT_EQ(w.commands.size(), 1u);
+  lcd.pump(41);
+  const std::vector<uint8_t> settings{0xEB, 0x2F, 0xA4, 0xA6, 0x40, 0x81, 0x5A,
+                                      0xC4, 0x27, 0x29, 0xA0, 0x88, 0x23, 0xAF};
+  std::vector<uint8_t> expected{0xE2};
+  expected.insert(expected.end(), settings.begin(), settings.end());
+  expected.insert(expected.end(), {0x00, 0x10, 0xB0});
+  EXPECT_EQ(w.commands, expected);
 }
 
 TEST(Lcd, RefreshSendsEachPageAfterItsAddressOnePagePerPump) {
@@ -71,19 +80,25 @@ TEST(Lcd, RefreshSendsEachPageAfterItsAddressOnePagePerPump) {
   w.commands.clear();
   for (int i = 0; i < 8; ++i) lcd.pump(41 + static_cast<uint32_t>(i));
   ASSERT_EQ(w.dataRuns.size(), 8u);
-  ASSERT_EQ(w.commands.size(), 24u);
+  const size_t settings = sizeof(Lcd<FakeBus>::kSettings);
+  ASSERT_EQ(w.commands.size(), settings + 24u);
+  EXPECT_EQ(w.commands.front(), 0xEB);
+  EXPECT_EQ(w.commands[settings - 1], 0xAF);  // display on, last
   for (int p = 0; p < 8; ++p) {
-    EXPECT_EQ(w.commands[3 * p], 0x00);
-    EXPECT_EQ(w.commands[3 * p + 1], 0x10);
-    EXPECT_EQ(w.commands[3 * p + 2], 0xB0 | p);
+    EXPECT_EQ(w.commands[settings + 3 * p], 0x00);
+    EXPECT_EQ(w.commands[settings + 3 * p + 1], 0x10);
+    EXPECT_EQ(w.commands[settings + 3 * p + 2], 0xB0 | p);
     ASSERT_EQ(w.dataRuns[p].size(), 100u);
     EXPECT_EQ(w.dataRuns[p][17], frame[p][17]);
   }
   lcd.pump(60);  // nothing new to show
   EXPECT_EQ(w.dataRuns.size(), 8u);
   lcd.refresh();
+  w.commands.clear();
   lcd.pump(61);
   EXPECT_EQ(w.dataRuns.size(), 9u);
+  EXPECT_EQ(w.commands.size(), settings + 3u);  // the settings again, then page 0
+  EXPECT_EQ(w.commands[settings - 1], 0xAF);
 }
 
 }  // namespace
