@@ -1,11 +1,13 @@
 #include "host/emu/Machine.hpp"
 
+#include "host/emu/StoreSite.hpp"
 #include "host/emu/UnicornFastPath.hpp"
 #include "host/log/Log.hpp"
 
 #include <unicorn/unicorn.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <ctime>
 #include <cstdio>
@@ -82,6 +84,8 @@ struct Machine::Hooks {
     m->clock_.now += n;
     m->executed_ += n;
     m->lastBlock_ = static_cast<uint32_t>(address);
+    m->lastBlockBytes_ = size;
+    m->blockWrites_ = 0;
   }
 
   static void timedEntry(uc_engine* uc, uint64_t, uint32_t, void* user) {
@@ -96,6 +100,7 @@ struct Machine::Hooks {
   static void memAccess(uc_engine* uc, uc_mem_type type, uint64_t address, int size, int64_t, void* user) {
     auto* m = static_cast<Machine*>(user);
     const auto a = static_cast<uint32_t>(address);
+    if (type == UC_MEM_WRITE) ++m->blockWrites_;
     if (m->options_.checkAlignment && (a & static_cast<uint32_t>(size - 1)) != 0) {
       m->setFault(FaultKind::Unaligned, a,
                   std::string(type == UC_MEM_WRITE ? "write" : "read") + " of " + std::to_string(size) + " bytes");
@@ -189,7 +194,10 @@ struct Machine::Hooks {
       uc_emu_stop(uc);
       return;
     }
-    if (s->device->writeReplans((a - s->base) & ~3u)) m->clock_.poke();  // re-plan at the next block
+    if (s->device->writeReplans((a - s->base) & ~3u)) {
+      m->clock_.poke();  // re-plan at the next block
+      m->irqAfterStore(a, size, static_cast<uint32_t>(value));
+    }
   }
 };
 
@@ -390,6 +398,50 @@ void Machine::takeIrq() {
   uint32_t cpsr = 0, pc = 0;
   uc_reg_read(uc_, UC_ARM_REG_CPSR, &cpsr);
   uc_reg_read(uc_, UC_ARM_REG_PC, &pc);
+  enterIrq(cpsr, pc);
+}
+
+void Machine::irqAfterStore(uint32_t address, unsigned bytes, uint32_t value) {
+  if (fault_ || idle_) return;
+  uint32_t cpsr = 0;
+  uc_reg_read(uc_, UC_ARM_REG_CPSR, &cpsr);
+  if (cpsr & kCpsrI) return;
+  aic_.sample();
+  if (!aic_.irqAsserted()) return;
+  static const int ids[15] = {UC_ARM_REG_R0,  UC_ARM_REG_R1,  UC_ARM_REG_R2,  UC_ARM_REG_R3, UC_ARM_REG_R4,
+                              UC_ARM_REG_R5,  UC_ARM_REG_R6,  UC_ARM_REG_R7,  UC_ARM_REG_R8, UC_ARM_REG_R9,
+                              UC_ARM_REG_R10, UC_ARM_REG_R11, UC_ARM_REG_R12, UC_ARM_REG_SP, UC_ARM_REG_LR};
+  std::array<uint32_t, 16> regs{};
+  for (int i = 0; i < 15; ++i) uc_reg_read(uc_, ids[i], &regs[static_cast<size_t>(i)]);
+  const bool thumb = (cpsr & kCpsrT) != 0;
+  const auto site = findStoreSite(*this, lastBlock_, lastBlockBytes_, thumb, regs, address, bytes, value, blockWrites_);
+  if (!site) {
+    ++lateIrqs_;  // taken at the block's end, as before
+    log::debug("emu",
+               "IRQ raised by a store to %08x in block %08x (+%u, write %u): store not found, taken at the block's end",
+               static_cast<unsigned>(address), static_cast<unsigned>(lastBlock_), lastBlockBytes_, blockWrites_);
+    return;
+  }
+  log::debug("emu", "IRQ raised by the store at %08x to %08x: taken before %08x", static_cast<unsigned>(site->pc),
+             static_cast<unsigned>(address), static_cast<unsigned>(site->next));
+  // The store was the last instruction to run: Unicorn leaves the block after it (a PC write stops the block
+  // and resumes at the new PC), so the base writeback and the rest of the block are not run or counted.
+  if (site->base >= 0) uc_reg_write(uc_, ids[site->base], &site->baseValue);
+  const uint64_t skipped = (lastBlock_ + lastBlockBytes_ - site->next) / (thumb ? 2 : 4);
+  clock_.now -= skipped;
+  executed_ -= skipped;
+  const uint32_t next = site->next | (thumb ? 1u : 0u);
+  uc_reg_write(uc_, UC_ARM_REG_PC, &next);  // resumes at `next`, where the block hook stops (clock poked)
+  stepBeforeIrq_ = true;
+}
+
+uint32_t Machine::instructionBytes(uint32_t pc, bool thumb) const {
+  if (!thumb) return 4;
+  uint8_t hi = 0;
+  return readByte(pc + 1, hi) && (hi >> 3) == 0x1E ? 4 : 2;  // a BL prefix translates with its suffix
+}
+
+void Machine::enterIrq(uint32_t cpsr, uint32_t pc) {
   const uint32_t irqCpsr = (cpsr & ~0x3Fu) | kCpsrI | 0x12;  // IRQ mode, ARM state, IRQs masked
   uc_reg_write(uc_, UC_ARM_REG_CPSR, &irqCpsr);              // banks SP/LR first
   uc_reg_write(uc_, UC_ARM_REG_SPSR, &cpsr);
@@ -448,21 +500,26 @@ bool Machine::run(uint64_t until, const std::function<bool()>& stop) {
 
     uint32_t cpsr = 0;
     uc_reg_read(uc_, UC_ARM_REG_CPSR, &cpsr);
+    const bool step = stepBeforeIrq_;  // one instruction after the store that raised the IRQ runs first
+    stepBeforeIrq_ = false;
     const bool irq = aic_.irqAsserted();
-    if (irq && !(cpsr & kCpsrI)) {
+    if (irq && !step && !(cpsr & kCpsrI)) {
       takeIrq();
       cpsr = (cpsr & ~0x3Fu) | kCpsrI | 0x12;
     }
     uint64_t stopAt = std::min(nextEvent(), until);
     if (irq && (cpsr & kCpsrI)) stopAt = std::min(stopAt, clock_.now + kMaskedPoll);
     if (options_.realtime) stopAt = std::min(stopAt, clock_.now + cyclesFromMs(1));
-    clock_.stopAt = std::max(stopAt, clock_.now + 1);
+    clock_.stopAt = step ? clock_.now + 1 : std::max(stopAt, clock_.now + 1);
     uint32_t pc = 0;
     uc_reg_read(uc_, UC_ARM_REG_PC, &pc);
     const uint64_t begin = pc | ((cpsr & kCpsrT) ? 1u : 0u);
     stoppedAt_ = 0;
     ++slices_;
-    const uc_err e = uc_emu_start(uc_, begin, 0xFFFFFFF0ull, 0, 0);
+    // The step translates afresh, so that Unicorn stops at `end`: a block cached at pc would run on past it.
+    if (step) uc_ctl_remove_cache(uc_, pc, pc + 1);
+    const uint64_t end = step ? pc + instructionBytes(pc, (cpsr & kCpsrT) != 0) : 0xFFFFFFF0ull;
+    const uc_err e = uc_emu_start(uc_, begin, end, 0, 0);
     restoreFlash();
     if (stoppedAt_ != 0 && !fault_) {
       // Stopped by the block hook before that block ran. Unicorn 2.0.1 sometimes leaves PC past the
@@ -486,6 +543,7 @@ MachineStats Machine::stats() const {
   s.cycles = clock_.now;
   s.executed = executed_;
   s.irqs = irqs_;
+  s.lateIrqs = lateIrqs_;
   s.slices = slices_;
   s.idles = pmc_.idleRequests();
   s.maxBusy = std::max(maxBusy_, idle_ ? 0 : clock_.now - busyStart_);

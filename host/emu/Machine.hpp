@@ -1,6 +1,7 @@
 // Machine: the AT91SAM7S256 core on Unicorn. ARMv4T CPU (TI925T model), 256 KiB flash at 0x100000 and
 // 64 KiB RAM at 0x200000 with the address-0 remap, one MMIO dispatcher for 0xFFFA0000..0xFFFFFFFF with a
-// model per peripheral, the instruction count as the clock, IRQs injected at block boundaries, and
+// model per peripheral, the instruction count as the clock, IRQs injected at block boundaries or, when a
+// store raised one, after the instruction that follows the store (StoreSite), and
 // fast-forward while the firmware has stopped the processor clock. The system controller models
 // (AIC, PIT, PMC, WDT, RSTC, VREG, MC) belong to the machine; board peripherals are attached.
 // Faults (unaligned access, unmodelled register, bad memory, stack overflow, exceptions) stop the run.
@@ -48,6 +49,7 @@ struct MachineStats {
   uint64_t cycles = 0;       // emulated cycles (= instructions executed + idle cycles skipped)
   uint64_t executed = 0;     // instructions executed
   uint64_t irqs = 0;         // IRQs entered
+  uint64_t lateIrqs = 0;     // IRQs a store made pending, taken at its block's end (the store not found)
   uint64_t slices = 0;       // times the CPU was (re)started: IRQs, events, pokes
   uint64_t idles = 0;        // times the processor clock was stopped
   uint64_t maxBusy = 0;      // longest stretch of instructions between two idles
@@ -100,6 +102,12 @@ class Machine : public GuestMemory {
   void advanceModels();
   uint64_t nextEvent() const;
   void takeIrq();
+  // A store of `value` (`bytes`) at MMIO `address` may have made an IRQ deliverable: if so (CPSR.I clear),
+  // the block stops after the store, the next instruction runs alone and then the IRQ is taken (one
+  // instruction of latency, as the ARM7's nIRQ synchroniser gives), instead of at the block's end.
+  void irqAfterStore(uint32_t address, unsigned bytes, uint32_t value);
+  uint32_t instructionBytes(uint32_t pc, bool thumb) const;
+  void enterIrq(uint32_t cpsr, uint32_t pc);  // IRQ mode, LR = pc + 4, PC = 0x18
   void paceToWall();
   void restoreFlash();
   void flashProgrammed(uint32_t offset, uint32_t bytes);
@@ -140,6 +148,10 @@ class Machine : public GuestMemory {
   uint64_t irqs_ = 0;
   uint64_t slices_ = 0;
   uint32_t lastBlock_ = 0;
+  uint32_t lastBlockBytes_ = 0;
+  uint32_t blockWrites_ = 0;  // memory writes made in the current block (0 = unknown: no memory hook)
+  uint64_t lateIrqs_ = 0;
+  bool stepBeforeIrq_ = false;  // run one instruction before taking the IRQ a store raised
   // Per halfword of code (address 0 window, flash, RAM): 0 unknown, 1 ARM, 2 Thumb. Code at an address keeps
   // its state; self-modifying code that switches state at an address is not supported.
   std::vector<uint8_t> modes_ = std::vector<uint8_t>((2 * kFlashSize + kRamSize) / 2, 0);

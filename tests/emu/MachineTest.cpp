@@ -50,6 +50,19 @@ TEST(Machine, TimesAFunctionFromEntryToReturn) {
   EXPECT_LT(s.maxTimed, 200u);
 }
 
+// A store that makes an interrupt pending with IRQs enabled: the handler runs one instruction later (before
+// the marker's next store), as on the ARM7; not at the end of Unicorn's block.
+TEST(Machine, TakesAnInterruptAtTheInstructionAfterTheStoreThatRaisedIt) {
+  ProbeRun r("irqlatency", BrickConfig{}, 1.0);
+  ASSERT_TRUE(r.ok) << r.fault();
+  EXPECT_EQ(r.port().text, "irq ok\n");
+  const auto& v = r.port().values;
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_EQ(v[0], 2u) << "AIC_ISCR: 1 = at once, 3 = at the block's end; 2 = one instruction later";
+  EXPECT_EQ(v[1], 5u) << "TWI_IER: 4 = at once, 6 = at the block's end; 5 = one instruction later";
+  EXPECT_EQ(r.brick->machine().stats().lateIrqs, 0u);
+}
+
 TEST(ElfImage, RejectsWhatIsNotAnArmElf) {
   const ElfLoad l = ElfImage::load(std::string(NXTMAP_SOURCE_DIR) + "/README.md");
   EXPECT_FALSE(l.image);
