@@ -133,12 +133,18 @@ void Session::noteRoom(uint16_t id) {
   c.toRoom = id;
   // The old room's map: the copy of the epoch the last Status from that room named, which a
   // new epoch's first delta may already have moved to the stash (then the copy is the new room's).
+  // A copy already of a later epoch than that Status named holds the new room's first cells, even
+  // when the old room had nothing to stash: it stays (those cells were acknowledged and are not sent
+  // again).
+  const bool copyIsNewer = roomEpoch_ && map_.hasEpoch() && map_.epoch() != *roomEpoch_;
   bool leftIsCopy = true;
   if (roomEpoch_ && map_.hasEpoch() && map_.epoch() == *roomEpoch_) {
     c.left = map_;
   } else if (stashRoom_ == *roomId_ && stash_.known() > 0) {
     c.left = stash_;
     leftIsCopy = false;
+  } else if (copyIsNewer) {
+    leftIsCopy = false;  // the old room left nothing known
   } else {
     c.left = map_;
   }
@@ -226,9 +232,12 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
       counters_.deltaBytes += kLengthPrefix + t.size;
       const uint64_t before = map_.changes();
       MapDeltaReader peek(v.payload, v.payloadSize);
-      if (peek.validate() && map_.hasEpoch() && peek.header().epoch != map_.epoch() && map_.known() > 0) {
-        stash_ = map_;  // a new epoch: keep the old copy until the room is known
-        stashRoom_ = roomId_;
+      if (peek.validate() && map_.hasEpoch() && peek.header().epoch != map_.epoch()) {
+        roomExits_.reset();  // a room's end told before the new epoch is not the end of this copy
+        if (map_.known() > 0) {
+          stash_ = map_;  // a new epoch: keep the old copy until the room is known
+          stashRoom_ = roomId_;
+        }
       }
       if (map_.applyDelta(v.payload, v.payloadSize)) {
         ++counters_.deltasApplied;
@@ -249,7 +258,9 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
         poseRoom_ = s.roomId;
         roomEpoch_ = s.mapEpoch;
         if (map_.hasEpoch() && s.mapEpoch != map_.epoch()) {
-          // A new epoch whose first delta has not arrived yet: the old copy is void.
+          // A new epoch whose first delta has not arrived yet: the old copy is void, and so is
+          // a room's end told before it (the brick holds the end back until the new copy is whole).
+          roomExits_.reset();
           if (map_.known() > 0) {
             stash_ = map_;
             stashRoom_ = roomId_;

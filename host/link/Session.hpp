@@ -111,7 +111,8 @@ class Session {
   const std::optional<Pose>& pose() const { return pose_; }
   const std::optional<protocol::PathProgressMsg>& pathProgress() const { return path_; }
   const std::optional<protocol::NewRoomMsg>& room() const { return room_; }
-  // The exits of the room the brick maps as part of a house, as last reported.
+  // The exits of the room the brick maps as part of a house, as last reported in the map epoch the
+  // copy holds (forgotten when a new epoch begins: its end then waits for the new copy to be whole).
   const std::optional<protocol::RoomExitsMsg>& roomExits() const { return roomExits_; }
   // The last standing scan and the start readings of the room mapped as part of a house, as last reported.
   const std::optional<protocol::ReadingsMsg>& readings() const { return readings_; }

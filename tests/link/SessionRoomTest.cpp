@@ -104,6 +104,20 @@ TEST_F(SessionRoomTest, ANewRoomDeltaOvertakingTheRoomReportLosesNeitherRoom) {
   EXPECT_EQ(pc.map().at(Cell{1, 0}), CellState::Occupied);
 }
 
+TEST_F(SessionRoomTest, ANewRoomDeltaOvertakingTheRoomReportAfterAnEmptyRoomKeepsItsCells) {
+  // The brick idle with an empty map (before `explore house`): nothing known in room 0.
+  status(0, 1, Pose{Cell{0, 0}, Dir::North});
+  // Room 1 starts: its first delta gets through, the Status naming room 1 comes after it.
+  delta(2, 0, 0, hall);
+  status(1, 2, Pose{Cell{0, 0}, Dir::North});
+  const std::vector<RoomChange> changes = pc.takeRoomChanges();
+  ASSERT_EQ(changes.size(), 1u);
+  EXPECT_EQ(changes[0].left.known(), 0u);
+  // The brick was told these cells arrived (acknowledged) and never sends them again.
+  EXPECT_EQ(pc.map().known(), 4u);
+  EXPECT_EQ(pc.map().at(Cell{3, 0}), CellState::Occupied);
+}
+
 TEST_F(SessionRoomTest, AnUploadInTheSameRoomIsNoRoomChange) {
   status(0, 1, Pose{Cell{1, 0}, Dir::North});
   delta(1, 0, 0, hall);
