@@ -84,6 +84,10 @@ struct LegoBrick {
 };
 
 TEST(LegoFirmwareEndToEnd, BootsToItsMainMenuKeepsTheAvrLinkAndFollowsTheButtons) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP()
+      << "LEGO's firmware never idles (0.4 x real time under ASan): make test runs this from the Release build";
+#endif
   if (!legoPresent()) GTEST_SKIP() << kLegoImage << " is absent (Debian package nxt-firmware, make deps)";
   ElfLoad l = ElfImage::load(kLegoImage);
   ASSERT_TRUE(l.image) << l.error;
@@ -120,6 +124,10 @@ TEST(LegoFirmwareEndToEnd, BootsToItsMainMenuKeepsTheAvrLinkAndFollowsTheButtons
 // line's THR write repeats byte 0 (the register it loaded) while the address goes out. Taken at the block's
 // end the handler sent byte 0 twice; taken at once the main line sent byte 1 first.
 TEST(LegoFirmwareEndToEnd, CompletesTheAvrHandshakeWithoutABadFrame) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP()
+      << "LEGO's firmware never idles (0.4 x real time under ASan): make test runs this from the Release build";
+#endif
   if (!legoPresent()) GTEST_SKIP() << kLegoImage << " is absent (Debian package nxt-firmware, make deps)";
   ElfLoad l = ElfImage::load(kLegoImage);
   ASSERT_TRUE(l.image) << l.error;
