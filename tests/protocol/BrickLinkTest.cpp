@@ -402,7 +402,8 @@ TEST_F(BrickLinkTest, AScanRunsOnceEvenWhenItArrivesTwice) {
 TEST_F(BrickLinkTest, ReadingsGoOutEveryStatusPeriodWhileMappingAHouse) {
   hello(13);
   EXPECT_EQ(collect(0).count(Op::Readings), 0u) << "not mapping a house";
-  ReadingsMsg m;
+  static ReadingsMsg m;  // the fixture's report points at it (static: it outlives the fixture)
+  m = ReadingsMsg{};
   m.scanId = 2;
   m.scanPose = Pose{Cell{4, -1}, Dir::South};
   m.scan[3] = RangeReading{RangeStatus::Good, 77, 3};
