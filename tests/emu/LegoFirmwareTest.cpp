@@ -83,12 +83,18 @@ struct LegoBrick {
   }
 };
 
-TEST(LegoFirmwareEndToEnd, BootsToItsMainMenuKeepsTheAvrLinkAndFollowsTheButtons) {
+// Why LEGO's firmware is not booted here (empty: it is).
+std::string whyNotBooted() {
 #if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP()
-      << "LEGO's firmware never idles (0.4 x real time under ASan): make test runs this from the Release build";
+  return "LEGO's firmware never idles (0.4 x real time under ASan): make test runs this from the Release build";
+#else
+  return legoPresent() ? std::string()
+                       : std::string(kLegoImage) + " is absent (Debian package nxt-firmware, make deps)";
 #endif
-  if (!legoPresent()) GTEST_SKIP() << kLegoImage << " is absent (Debian package nxt-firmware, make deps)";
+}
+
+TEST(LegoFirmwareEndToEnd, BootsToItsMainMenuKeepsTheAvrLinkAndFollowsTheButtons) {
+  if (const std::string why = whyNotBooted(); !why.empty()) GTEST_SKIP() << why;
   ElfLoad l = ElfImage::load(kLegoImage);
   ASSERT_TRUE(l.image) << l.error;
   LegoBrick b(std::move(*l.image));
@@ -124,11 +130,7 @@ TEST(LegoFirmwareEndToEnd, BootsToItsMainMenuKeepsTheAvrLinkAndFollowsTheButtons
 // line's THR write repeats byte 0 (the register it loaded) while the address goes out. Taken at the block's
 // end the handler sent byte 0 twice; taken at once the main line sent byte 1 first.
 TEST(LegoFirmwareEndToEnd, CompletesTheAvrHandshakeWithoutABadFrame) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP()
-      << "LEGO's firmware never idles (0.4 x real time under ASan): make test runs this from the Release build";
-#endif
-  if (!legoPresent()) GTEST_SKIP() << kLegoImage << " is absent (Debian package nxt-firmware, make deps)";
+  if (const std::string why = whyNotBooted(); !why.empty()) GTEST_SKIP() << why;
   ElfLoad l = ElfImage::load(kLegoImage);
   ASSERT_TRUE(l.image) << l.error;
   LegoBrick b(std::move(*l.image));
