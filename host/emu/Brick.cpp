@@ -31,7 +31,7 @@ Brick::Brick(const ElfImage& image, const sim::Site& site, const BrickConfig& c)
       bc4_(machine_.clock(), pioa_, c.link),
       usart_(machine_.clock(), machine_, bc4_),
       spi_(machine_.clock(), machine_, pioa_, lcd_),
-      adc_([this] { return bc4_.cmdSignal(); }),
+      adc_([this] { return bc4_.cmdSignal(); }, [this](int pin) { return pioa_.level(pin); }),
       tc_(machine_.clock()),
       pwm_(machine_.clock()),
       ssc_(machine_.clock(), machine_),
@@ -59,6 +59,8 @@ Brick::Brick(const ElfImage& image, const sim::Site& site, const BrickConfig& c)
   aic.connect(Aic::kIdSsc, [this] { return ssc_.irqLine(); });
   aic.connect(Aic::kIdPwm, [this] { return pwm_.irqLine(); });
   for (int ch = 0; ch < 3; ++ch) aic.connect(12 + ch, [this, ch] { return tc_.irqLine(ch); });
+  pioa_.observe([this](uint32_t levels) { tc_.pinsChanged(levels); });  // TIOA0..2: the tacho pulse pins
+  tc_.pinsChanged(pioa_.levels());
   for (int p = 0; p < 4; ++p)
     sensors_[static_cast<size_t>(p)] = std::make_unique<UltrasonicSensor>(
         machine_.clock(), pioa_, avr_, robot_, p, c.portFacing[static_cast<size_t>(p)],
