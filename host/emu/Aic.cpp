@@ -20,6 +20,17 @@ uint32_t Aic::pending() {
   return pendingFrom(lastLevel_);
 }
 
+uint32_t Aic::acknowledge(int id) {
+  inService_.push_back(Level{id, static_cast<int>(smr_[static_cast<size_t>(id)] & 7)});
+  isr_ = static_cast<uint32_t>(id);
+  if (edge(id)) {
+    edgeLatch_ &= ~(1u << id);
+    soft_ &= ~(1u << id);
+  }
+  ++irqsTaken_;
+  return svr_[static_cast<size_t>(id)];
+}
+
 int Aic::bestPending(bool fresh) {
   if (fresh) sample();
   const uint32_t p = pendingFrom(lastLevel_) & imr_ & ~1u;  // source 0 is FIQ, not routed to nIRQ
@@ -48,27 +59,21 @@ bool Aic::read(uint32_t off, uint32_t& v) {
     return true;
   }
   switch (off) {
-    case 0x100: {  // IVR: acknowledge the best source, push it in service
+    case 0x100: {  // IVR: the best source's vector; acknowledged now, or at the IVR write in protect mode
       const int id = bestPending(true);
-      if (id < 0) {
-        v = spu_;
+      if (dcr_ & kProt) {
+        protectRead_ = id;
+        v = id < 0 ? spu_ : svr_[static_cast<size_t>(id)];
         return true;
       }
-      inService_.push_back(Level{id, static_cast<int>(smr_[id] & 7)});
-      isr_ = static_cast<uint32_t>(id);
-      if (edge(id)) {
-        edgeLatch_ &= ~(1u << id);
-        soft_ &= ~(1u << id);
-      }
-      ++irqsTaken_;
-      v = svr_[static_cast<size_t>(id)];
+      v = id < 0 ? spu_ : acknowledge(id);
       return true;
     }
     case 0x104: v = spu_; return true;  // FVR: FIQ not used
     case 0x108: v = isr_; return true;
     case 0x10C: v = pending(); return true;
     case 0x110: v = imr_; return true;
-    case 0x114: v = bestPending(true) >= 0 ? 2u : 0u; return true;  // CISR: NIRQ bit 1
+    case 0x114: v = !(dcr_ & kGmsk) && bestPending(true) >= 0 ? 2u : 0u; return true;  // CISR: NIRQ b1
     case 0x134: v = spu_; return true;
     case 0x138: v = dcr_; return true;
     case 0x148: v = 0; return true;  // FFSR
@@ -88,7 +93,13 @@ bool Aic::write(uint32_t off, uint32_t v) {
     return true;
   }
   switch (off) {
-    case 0x100: return true;  // IVR write (protect mode acknowledge): accepted, no effect here
+    case 0x100:  // IVR write: the acknowledge in protect mode (no effect otherwise)
+      if ((dcr_ & kProt) && protectRead_ >= 0) {
+        acknowledge(protectRead_);
+        if (clock_) clock_->poke();
+      }
+      protectRead_ = -1;
+      return true;
     case 0x104: return true;
     case 0x120: imr_ |= v; return true;
     case 0x124: imr_ &= ~v; return true;

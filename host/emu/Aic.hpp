@@ -1,6 +1,9 @@
 // Aic: the Advanced Interrupt Controller (0xFFFFF000). 32 sources with priority 0..7, an in-service
 // stack for nesting, software set/clear (ISCR/ICCR, used as a soft IRQ on line 10), IVR/EOICR handshake.
 // Sources are level lines polled from the peripheral models; edge-triggered sources latch rising edges.
+// DCR (datasheet "Protect Mode" and "General Interrupt Mask"): with PROT an IVR read returns the vector
+// but changes nothing (a debugger may read it); the write to IVR that must follow acknowledges the
+// source read (pushes it in service, clears its edge); with GMSK neither nIRQ nor the wake-up is raised.
 #pragma once
 
 #include "host/emu/IoDevice.hpp"
@@ -21,7 +24,7 @@ class Aic : public IoDevice {
   const char* name() const override { return "AIC"; }
   bool read(uint32_t offset, uint32_t& value) override;
   bool write(uint32_t offset, uint32_t value) override;
-  bool writeReplans(uint32_t off) const override { return off >= 0x120 && off <= 0x12C; }
+  bool writeReplans(uint32_t off) const override { return (off >= 0x120 && off <= 0x12C) || off == 0x138; }
   void setClock(Clock* clock) { clock_ = clock; }
 
   // A peripheral's interrupt line (true = asserting). Several lines may share one source (SYS).
@@ -30,14 +33,16 @@ class Aic : public IoDevice {
   // sample (the run loop samples once per stop); register reads sample afresh.
   void sample();
   // nIRQ: an enabled pending source above the current in-service priority.
-  bool irqAsserted() { return bestPending(false) >= 0; }
+  bool irqAsserted() { return !(dcr_ & kGmsk) && bestPending(false) >= 0; }
   // Any enabled pending source at all (wakes the processor clock even when CPSR.I masks it).
-  bool wakeAsserted() { return (pendingFrom(lastLevel_) & imr_) != 0; }
+  bool wakeAsserted() { return !(dcr_ & kGmsk) && (pendingFrom(lastLevel_) & imr_) != 0; }
   uint32_t pending();  // IPR, sampled now
   uint64_t irqsTaken() const { return irqsTaken_; }
 
  private:
-  int bestPending(bool fresh);  // highest-priority enabled pending source, -1 if none above the current level
+  static constexpr uint32_t kProt = 1, kGmsk = 2;
+  uint32_t acknowledge(int id);  // pushes `id` in service, clears its edge; its vector
+  int bestPending(bool fresh);   // highest-priority enabled pending source, -1 if none above the current level
   uint32_t pendingFrom(uint32_t level) const;
   bool edge(int id) const { return ((smr_[id] >> 5) & 1) != 0; }
 
@@ -56,6 +61,7 @@ class Aic : public IoDevice {
   uint32_t spu_ = 0;
   uint32_t dcr_ = 0;
   uint32_t isr_ = 0;
+  int protectRead_ = -1;  // protect mode: the source the last IVR read returned, acknowledged by the IVR write
   struct Level {
     int id;
     int prio;

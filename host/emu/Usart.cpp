@@ -4,10 +4,12 @@
 
 namespace nxtmap::emu {
 
+// Asynchronous mode: baud = MCK / (8 (2 - OVER) (CD + FP / 8)), so a bit lasts (2 - OVER)(8 CD + FP) MCK
+// cycles; CD = 0 stops the clock.
 uint64_t Usart::bitCycles() const {
-  const uint64_t cd = brgr_ & 0xFFFF;
+  const uint64_t cd = brgr_ & 0xFFFF, fp = (brgr_ >> 16) & 7;
   const uint64_t over = (mr_ >> 19) & 1;
-  return cd == 0 ? 0 : 8 * (2 - over) * cd;
+  return cd == 0 ? 0 : (2 - over) * (8 * cd + fp);
 }
 
 uint32_t Usart::status() const {
@@ -174,7 +176,7 @@ bool Usart::write(uint32_t off, uint32_t v) {
       thrFull_ = true;
       refillThr();
       return true;
-    case 0x20: brgr_ = v; return true;
+    case 0x20: brgr_ = v & 0x7FFFF; return true;  // CD b0-15, FP b16-18
     case 0x24: rtor_ = v & 0xFFFF; return true;
     case 0x28: ttgr_ = v & 0xFF; return true;
     default: return false;

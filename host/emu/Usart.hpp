@@ -1,4 +1,5 @@
-// Usart: USART1 (0xFFFC4000, ID 7) with its PDC at +0x100, asynchronous 8N1 at the rate set by BRGR/MR.OVER,
+// Usart: USART1 (0xFFFC4000, ID 7) with its PDC at +0x100, asynchronous 8N1 at the rate set by BRGR (CD and the
+// fractional FP) and MR.OVER,
 // transmit holding + shift register, receive holding register or DMA, receive time-out (RTOR after STTTO).
 // Hardware handshaking (US_MR USMODE = 2), as the datasheet states it: RTS is high while the receiver is
 // disabled or the PDC's RXBUFF is set (RCR = RNCR = 0), whether or not the receive PDC is enabled, and low
