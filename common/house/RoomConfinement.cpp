@@ -12,6 +12,15 @@ bool overlaps(const Doorway& a, const Doorway& b) {
   return false;
 }
 
+// The line of cells just outside doorway `d` on its far side (beyond +depth when the room is on
+// the low side, else beyond -1): where the exit is held shut while the robot stands in it.
+Doorway lineBeyond(const Doorway& d, bool roomOnLowSide) {
+  Doorway line = d;
+  line.first = d.cell(0, roomOnLowSide ? d.depth : static_cast<int16_t>(-1));
+  line.depth = 1;
+  return line;
+}
+
 int16_t clampTo(int v, int lo, int hi) { return static_cast<int16_t>(v < lo ? lo : (v > hi ? hi : v)); }
 
 }  // namespace
@@ -27,6 +36,7 @@ void RoomConfinement::begin(const Doorway* entrance) {
   sinceCheck_ = 0;
   overflow_ = 0;
   reachBox_ = Bounds{};
+  outside_ = here_ = Cell{};
   guards_[0] = guards_[1] = Doorway{};
   if (!hasEntrance_) return;
   entrance_ = *entrance;
@@ -51,14 +61,27 @@ void RoomConfinement::begin(const Doorway* entrance) {
 bool RoomConfinement::closed(Cell c) const {
   if (hasEntrance_ && entrance_.contains(c)) return true;
   for (uint8_t i = 0; i < exitCount_; ++i) {
-    if (exits_[i].door.contains(c)) return true;
+    if (exits_[i].door.contains(c) || shut_[i].contains(c)) return true;
   }
   return false;
 }
 
 bool RoomConfinement::contains(Cell c) const {
-  return closed(c) || (hasEntrance_ && (guards_[0].contains(c) || guards_[1].contains(c)));
+  if (hasEntrance_ && (entrance_.contains(c) || guards_[0].contains(c) || guards_[1].contains(c))) return true;
+  for (uint8_t i = 0; i < exitCount_; ++i) {
+    if (shut_[i].contains(c)) return true;
+  }
+  return false;
 }
+
+bool RoomConfinement::inCandidate(Cell c) const {
+  for (uint8_t i = 0; i < candidateCount_; ++i) {
+    if (candidates_[i].contains(c)) return true;
+  }
+  return false;
+}
+
+Cell RoomConfinement::robotSide(Cell robot) const { return closed(robot) || inCandidate(robot) ? outside_ : robot; }
 
 void RoomConfinement::hold(MapLayers& map) const {
   const auto block = [&](const Doorway& d) {
@@ -71,7 +94,7 @@ void RoomConfinement::hold(MapLayers& map) const {
     block(guards_[0]);
     block(guards_[1]);
   }
-  for (uint8_t i = 0; i < exitCount_; ++i) block(exits_[i].door);
+  for (uint8_t i = 0; i < exitCount_; ++i) block(shut_[i]);
 }
 
 // Every Drive carries out one explorer move of one cell (forward for value > 0).
@@ -91,6 +114,13 @@ bool RoomConfinement::wellSeen(const MapLayers& map, const Doorway& d) const {
     }
   }
   return true;
+}
+
+bool RoomConfinement::isExit(const Doorway& d) const {
+  for (uint8_t i = 0; i < exitCount_; ++i) {
+    if (overlaps(d, exits_[i].door) || overlaps(exits_[i].door, d)) return true;
+  }
+  return false;
 }
 
 void RoomConfinement::remember(const Doorway& d, bool& changed) {
@@ -121,23 +151,55 @@ void RoomConfinement::look(MapLayers& map, Cell robot) {
   const uint8_t n = findDoorways(map.grid(), area, limits_, found_, kMaxFound);
   bool changed = false;
   for (uint8_t i = 0; i < n; ++i) {
-    if (wellSeen(map, found_[i])) remember(found_[i], changed);
+    if (wellSeen(map, found_[i]) && !isExit(found_[i])) remember(found_[i], changed);
   }
+  if (!(robot == here_)) {  // moved on: the cell left behind is the robot's side unless a doorway
+    if (!closed(here_) && !inCandidate(here_)) outside_ = here_;
+    here_ = robot;
+  }
+  lookWhereStanding(map, robot, changed);
   if (changed || (++sinceCheck_ >= kRecheckSteps && candidateCount_ > 0)) evaluate(map, robot);
+}
+
+// Seen from inside a gap, a doorway in a wall has the room's free space in front of the wall beside
+// both jambs, on the side the robot came from; a corridor's cross-section has the corridor's walls
+// there. kOpenBeside cells beside each jamb must be free.
+bool RoomConfinement::openBeforeJambs(const MapLayers& map, const Doorway& d) const {
+  const int16_t line = d.alongX ? d.first.y : d.first.x;
+  const int16_t came = d.alongX ? outside_.y : outside_.x;
+  if (came == line) return false;
+  const int16_t across = came < line ? static_cast<int16_t>(-1) : d.depth;
+  for (int16_t k = 1; k <= kOpenBeside; ++k) {
+    if (!map.grid().isFree(d.cell(static_cast<int16_t>(-k), across))) return false;
+    if (!map.grid().isFree(d.cell(static_cast<int16_t>(d.width - 1 + k), across))) return false;
+  }
+  return true;
+}
+
+// Driven straight into a doorway, the robot sees its jambs only from inside it, one cell of each:
+// a gap around the robot on its own row or column counts with jambs of one cell.
+void RoomConfinement::lookWhereStanding(MapLayers& map, Cell robot, bool& changed) {
+  DoorwayLimits near = limits_;
+  near.minJamb = 1;
+  const int16_t r = static_cast<int16_t>(limits_.maxWidth + 1);
+  const Bounds lines[2] = {
+      Bounds{static_cast<int16_t>(robot.x - r), robot.y, static_cast<int16_t>(robot.x + r), robot.y},
+      Bounds{robot.x, static_cast<int16_t>(robot.y - r), robot.x, static_cast<int16_t>(robot.y + r)}};
+  for (const Bounds& area : lines) {
+    const uint8_t n = findDoorways(map.grid(), area, near, found_, kMaxFound);
+    for (uint8_t i = 0; i < n; ++i) {
+      const Doorway& d = found_[i];
+      if (d.contains(robot) && openBeforeJambs(map, d) && wellSeen(map, d) && !isExit(d)) remember(d, changed);
+    }
+  }
 }
 
 void RoomConfinement::evaluate(MapLayers& map, Cell robot) {
   sinceCheck_ = 0;
   // Close every candidate at once (several doorways may lead into the same room), then keep as
   // exits those whose far side is cut off from the start while the robot is on the start's side.
-  flood(map.grid(), [&](Cell c) {
-    if (contains(c)) return true;
-    for (uint8_t i = 0; i < candidateCount_; ++i) {
-      if (candidates_[i].contains(c)) return true;
-    }
-    return false;
-  });
-  if (!reached(robot)) return;  // the robot is beyond some doorway: decide later
+  flood(map.grid(), [&](Cell c) { return contains(c) || closed(c) || inCandidate(c); });
+  if (!reached(robotSide(robot))) return;  // the robot is beyond some doorway: decide later
   uint8_t still = 0;
   for (uint8_t i = 0; i < candidateCount_; ++i) {
     const Doorway d = candidates_[i];
@@ -151,11 +213,12 @@ void RoomConfinement::evaluate(MapLayers& map, Cell robot) {
       candidates_[still++] = d;
       continue;
     }
-    RoomExit& e = exits_[exitCount_++];
+    RoomExit& e = exits_[exitCount_];
     e.door = d;
     const int16_t mid = static_cast<int16_t>((d.width - 1) / 2);
     e.inside = low ? d.cell(mid, -1) : d.cell(mid, d.depth);
     e.outward = d.alongX ? (low ? Dir::North : Dir::South) : (low ? Dir::East : Dir::West);
+    shut_[exitCount_++] = d.contains(robot) ? lineBeyond(d, low) : d;
   }
   candidateCount_ = still;
   hold(map);
@@ -172,13 +235,15 @@ void RoomConfinement::finish(MapLayers& map) {
     }
   };
   if (hasEntrance_) open(entrance_);
-  for (uint8_t i = 0; i < exitCount_; ++i) open(exits_[i].door);
+  for (uint8_t i = 0; i < exitCount_; ++i) open(shut_[i]);
   flood(map.grid(), [&](Cell c) { return closed(c); });
   // An exit found while the robot was beyond another doorway may join two other rooms: only the
   // exits of this room (their inside cell reached) are kept; the others are found again there.
   uint8_t kept = 0;
   for (uint8_t i = 0; i < exitCount_; ++i) {
-    if (reached(exits_[i].inside)) exits_[kept++] = exits_[i];
+    if (!reached(exits_[i].inside)) continue;
+    shut_[kept] = shut_[i];
+    exits_[kept++] = exits_[i];
   }
   exitCount_ = kept;
 }

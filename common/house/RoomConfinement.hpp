@@ -3,8 +3,11 @@
 // doorway that separates the room's start (the origin of the room's frame) from what lies beyond
 // it, with the robot on the start's side, becomes an exit: its cells are held as walls in the
 // explorer's map ("virtual doors") so the explorer maps this room only. The entrance is closed the
-// same way from the start, with guard cells beyond each end of its line. When the explorer is done,
-// finish() opens the doors again (free) and keeps the exits whose inside cell the start reaches.
+// same way from the start, with guard cells beyond each end of its line. A doorway straight ahead is
+// only recognised from inside it (the side sensors see its jambs there): the robot's side is then
+// the last cell it stood on outside every doorway, and the exit is held shut one line further out,
+// beyond the robot. When the explorer is done, finish() opens the doors again (free) and keeps the
+// exits whose inside cell the start reaches.
 //
 // Runs on the brick: fixed capacities, no heap; the reach flood works in caller-owned bits.
 #pragma once
@@ -27,6 +30,7 @@ class RoomConfinement final : public CellSet {
   static constexpr int16_t kGuardCells = 2;      // closed beyond each end of the entrance's line
   static constexpr int kRecheckSteps = 25;       // events between two evaluations of the candidates
   static constexpr int kSureEvidence = 1;        // |evidence| a doorway's cells need
+  static constexpr int16_t kOpenBeside = 2;      // free cells beside each jamb, seen from inside a gap
 
   // reachBits: packedBytes(width, height, 1) bytes for a map of that capacity, owned by the caller.
   // lookCells: how far around the robot to look, beyond the doorway's width (the sonar's reach).
@@ -44,7 +48,7 @@ class RoomConfinement final : public CellSet {
   // a door are flooded (reached()), and only the exits with their inside cell reached stay.
   void finish(MapLayers& map);
 
-  bool contains(Cell c) const override;  // a shut cell (a closed door or a guard)
+  bool contains(Cell c) const override;  // a shut cell (held blocked: a closed door or a guard)
   bool reached(Cell c) const;            // after finish()
   bool hasEntrance() const { return hasEntrance_; }
   const Doorway& entrance() const { return entrance_; }
@@ -54,9 +58,16 @@ class RoomConfinement final : public CellSet {
   uint16_t overflow() const { return overflow_; }      // exits or candidates dropped for capacity
 
  private:
-  bool closed(Cell c) const;  // entrance or exit cells (not the guards)
+  bool closed(Cell c) const;  // entrance or exit cells, or an exit's shut line (not the guards)
+  bool inCandidate(Cell c) const;
+  // Where the robot is for deciding sides: its cell, or when that lies in a doorway (closed or a
+  // candidate) the last cell it left outside them.
+  Cell robotSide(Cell robot) const;
   bool wellSeen(const MapLayers& map, const Doorway& d) const;
+  bool isExit(const Doorway& d) const;  // overlaps an exit's door (held shut beyond: still seen free)
   void remember(const Doorway& d, bool& changed);
+  void lookWhereStanding(MapLayers& map, Cell robot, bool& changed);
+  bool openBeforeJambs(const MapLayers& map, const Doorway& d) const;
   void evaluate(MapLayers& map, Cell robot);
   // Floods from the start over free cells of the map's window, skipping cells for which
   // `blocked` is true; the result is in reach_ (reached()).
@@ -74,6 +85,9 @@ class RoomConfinement final : public CellSet {
   Doorway entrance_{};
   Doorway guards_[2] = {};  // the cells beside the entrance along its line, kGuardCells deep
   RoomExit exits_[kMaxExits] = {};
+  Doorway shut_[kMaxExits] = {};  // the cells held blocked for exit i: its door, or the line beyond it
+  Cell here_{};                   // the robot's cell at the last look (room frame)
+  Cell outside_{};                // the last cell it left that lies outside every doorway
   uint8_t exitCount_ = 0;
   Doorway candidates_[kMaxCandidates] = {};
   uint8_t candidateCount_ = 0;
