@@ -27,7 +27,6 @@ void Explorer::apply(const Event& e) {
       const Dir d = sensorDir(pose_.heading, e.sensor);
       const RayMarkResult r = markRay(map_, config_.geometry, pose_.cell, d, e.reading);
       if (r.conclusive) map_.setRead(pose_.cell, d);
-      if (r.gridFull) end_ = ExplorerEnd::GridFull;
       break;
     }
     case Event::Kind::Moved: {

@@ -22,7 +22,7 @@ RayMarkResult markRay(MapLayers& map, const RangeGeometry& geometry, Cell from, 
     const Cell c = advance(from, d, k);
     const bool wall = map.at(c) == CellState::Occupied;
     if (!map.observeFree(c)) {
-      result.gridFull = true;
+      result.clipped = true;
       return result;
     }
     ++result.cellsMarked;
@@ -30,7 +30,7 @@ RayMarkResult markRay(MapLayers& map, const RangeGeometry& geometry, Cell from, 
   }
   if (hitAt > 0) {
     if (!map.observeOccupied(advance(from, d, hitAt))) {
-      result.gridFull = true;
+      result.clipped = true;
       return result;
     }
     ++result.cellsMarked;

@@ -14,10 +14,11 @@ namespace nxtmap {
 //  - too near: the adjacent cell is occupied (an obstacle closer than the trusted minimum);
 //  - inconsistent: nothing is marked.
 // A ray never passes a cell the map already holds as occupied (the robot cannot read through
-// a wall): that cell gets one observation as free and marking stops there.
+// a wall): that cell gets one observation as free and marking stops there. Nor does it pass the
+// edge of the grid's capacity: a room larger than the grid is mapped up to that edge.
 struct RayMarkResult {
   int16_t cellsMarked = 0;  // observations written
-  bool gridFull = false;    // a cell did not fit in the grid's capacity
+  bool clipped = false;     // a cell did not fit in the grid's capacity: marking stopped before it
   bool conclusive = false;  // the reading said something (not Inconsistent)
 };
 

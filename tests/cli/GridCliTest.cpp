@@ -38,8 +38,8 @@ TEST(GridCli, ACorridorLongerThanTheGridIsMappedToItsEdgeAndSaysSo) {
     std::string says;  // in the run line
   };
   const Case cases[] = {
-      {"", "propagation", "end              grid full", true, ""},
-      {"64", "propagation", "end              grid full", true, ""},
+      {"", "propagation", "end              complete (up to the grid's edge)", true, ""},
+      {"64", "propagation", "end              complete (up to the grid's edge)", true, ""},
       {"64", "frontier", "end              complete (up to the grid's edge)", true, ""},
       {"128", "propagation", "end              complete", false, ", grid 128 x 128 cells"},
       {"128", "frontier", "end              complete", false, ", grid 128 x 128 cells"},

@@ -47,6 +47,33 @@ TEST(RayMarker, DoesNotReadThroughAKnownWall) {
   EXPECT_EQ(row.substr(4), "????????");
 }
 
+TEST(RayMarker, StopsAtTheEdgeOfTheGridsCapacityAndSaysSo) {
+  // A 32-cell grid already holding x = -25: only x up to 6 fits. A no-echo reading east from 0
+  // marks free up to the edge, not beyond, and the reading still counts (conclusive).
+  const struct {
+    int16_t knownWest;  // the westmost cell already in the window
+    const char* expected;
+    bool clipped;
+  } table[] = {
+      {-21, "..........??", false},  // the range (10 cells) fits: x <= 10
+      {-25, ".......?????", true},   // x <= 6 fits
+      {-31, ".???????????", true},   // nothing east of the robot fits
+  };
+  for (const auto& t : table) {
+    test::GridFixture f;
+    (void)f.map.observeFree(Cell{t.knownWest, 0});
+    (void)f.map.markVisited(Cell{0, 0});
+    RangeReading r;
+    r.status = RangeStatus::NoEcho;
+    const RayMarkResult m = markRay(f.map, RangeGeometry{10, 5, 100, 0}, Cell{0, 0}, Dir::East, r);
+    std::string row;
+    for (int16_t x = 0; x <= 11; ++x) row += f.map.at(Cell{x, 0}) == CellState::Free ? '.' : '?';
+    EXPECT_EQ(row, t.expected) << t.knownWest;
+    EXPECT_EQ(m.clipped, t.clipped) << t.knownWest;
+    EXPECT_TRUE(m.conclusive) << t.knownWest;
+  }
+}
+
 TEST(RayMarker, ReadMemoryIsPerDirection) {
   test::GridFixture f;
   EXPECT_FALSE(f.map.wasRead(Cell{2, 3}, Dir::East));
