@@ -2,7 +2,6 @@
 
 #include <new>
 
-#include "common/protocol/LegoCommands.hpp"
 #include "common/protocol/Packet.hpp"
 
 namespace nxtmap::protocol {
@@ -25,14 +24,8 @@ void BrickLink::receive(uint8_t byte) {
 
 void BrickLink::handle(const Telegram& t) {
   ++counters_.telegramsIn;
-  if (t.type() == kTypeDirect || t.type() == kTypeDirectNoReply) {
-    if (t.opcode() == kLegoGetBatteryLevel || t.opcode() == kLegoKeepAlive) {
-      // Answered in transmit(), where the battery level is known.
-      if (t.type() == kTypeDirect) legoPending_ = t.opcode();
-      return;
-    }
-    // Mailbox commands take effect now; the reply waits for transmit().
-    legoReplyReady_ = answerDirectCommand(t, boxes_, 0, config_.sleepLimitMs, legoReply_);
+  if (isLegoType(t.type())) {
+    lego_.take(t);  // carried out and answered in transmit(), where the brick's state is known
     return;
   }
   if (t.type() == kTypeNxtmap) handlePacket(t);
@@ -177,8 +170,7 @@ void BrickLink::linkLost() {
   helloReplyDue_ = false;
   ackDue_ = false;
   batteryDue_ = false;
-  legoReplyReady_ = false;
-  legoPending_ = 0;
+  lego_.forget();
 }
 
 bool BrickLink::send(Op op, bool reliable, const Payload& payload, Frame& out) {
@@ -192,22 +184,14 @@ bool BrickLink::send(Op op, bool reliable, const Payload& payload, Frame& out) {
   return encodePacket(h, payload.bytes, payload.size, out);
 }
 
-bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out) {
+bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out, Scope scope) {
   nowMs_ = nowMs;
-  if (legoReplyReady_) {
-    legoReplyReady_ = false;
-    out = legoReply_;
-    return true;
-  }
-  if (legoPending_ != 0) {
-    const uint8_t request[] = {kTypeDirect, legoPending_};
-    Telegram t;
-    t.bytes[0] = request[0];
-    t.bytes[1] = request[1];
-    t.size = 2;
-    legoPending_ = 0;
-    if (answerDirectCommand(t, boxes_, report.batteryMillivolts, config_.sleepLimitMs, out)) return true;
-  }
+  LegoContext lego;
+  lego.batteryMillivolts = report.batteryMillivolts;
+  lego.sleepLimitMs = config_.sleepLimitMs;
+  lego.motorsBusy = report.mode == BrickMode::Exploring || report.mode == BrickMode::Following;
+  lego.firmwareMinor = kProtocolVersion;
+  if (lego_.next(lego, *brick_, out)) return true;
   Payload p;
   if (helloReplyDue_) {
     helloReplyDue_ = false;
@@ -294,7 +278,7 @@ bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out) 
     encodeReadings(*report.readings, p);
     return send(Op::Readings, false, p, out);
   }
-  if (scanNow_ || nowMs - lastScanMs_ >= config_.deltaPeriodMs) {
+  if (scope == Scope::All && (scanNow_ || nowMs - lastScanMs_ >= config_.deltaPeriodMs)) {
     lastScanMs_ = nowMs;
     const uint16_t seq = nextSeq(txSeq_);
     scanNow_ = sync_.buildDelta(seq, nowMs, p);

@@ -5,7 +5,8 @@
 #include "common/grid/RoomGrid.hpp"
 #include "common/protocol/Command.hpp"
 #include "common/protocol/FrameDecoder.hpp"
-#include "common/protocol/Mailboxes.hpp"
+#include "common/protocol/LegoBrick.hpp"
+#include "common/protocol/LegoServer.hpp"
 #include "common/protocol/MapSync.hpp"
 #include "common/protocol/Packet.hpp"
 #include "common/protocol/Messages.hpp"
@@ -47,14 +48,15 @@ struct BrickLinkConfig {
 // The brick's end of the radio link: the one object the firmware (and the emulator's stand-ins)
 // talk to. Feed it received bytes, take commands, and ask it for frames to send:
 //
-//   link.receive(byte);                                  // from the UART, in any amount
+//   link.attach(legoBrick);                              // once: outputs, inputs, speaker (LegoBrick)
+//   while (link.readyToReceive() && uartRead(byte)) link.receive(byte);
 //   while (link.nextCommand(cmd)) carryOut(cmd);         // each command exactly once
 //   while (uartHasRoom() && link.transmit(now, report, frame)) uartSend(frame.bytes, frame.size);
 //   on disconnect: link.linkLost();  on new room / restructuring: link.mapRestarted();
 //
-// It answers LEGO's GET_BATTERY_LEVEL, KEEP_ALIVE, MESSAGE_WRITE and MESSAGE_READ at any time,
-// and nxtmap packets after the PC's Hello. No heap; all memory is inside the object plus the
-// caller's shadow (see MapSync).
+// It answers LEGO's direct and system commands at any time (LegoServer: in order, one reply each,
+// before any frame of its own), and nxtmap packets after the PC's Hello. No heap; all memory is
+// inside the object plus the caller's shadow (see MapSync).
 class BrickLink {
  public:
   static constexpr int kCommandQueue = 2;
@@ -62,13 +64,24 @@ class BrickLink {
   // `shadow`: packedBytes(grid capacity, 2) bytes, caller-owned, for MapSync.
   BrickLink(const RoomGrid& grid, uint8_t* shadow, const BrickLinkConfig& config);
 
-  // One received byte; `nowMs` is the brick's millisecond clock.
+  // Where LEGO's commands read and drive the brick (the default: nothing attached). `brick`
+  // outlives the link.
+  void attach(LegoBrick& brick) { brick_ = &brick; }
+  // One received byte.
   void receive(uint8_t byte);
+  // Whether any telegram the next bytes complete can be queued: the firmware leaves bytes in the
+  // UART (its flow control holds the sender) while LEGO commands wait for their replies.
+  bool readyToReceive() const { return lego_.hasRoom(); }
+  // A LEGO reply or a HelloReply is waiting: worth sending without waiting for the radio period.
+  bool replyDue() const { return lego_.pending() || helloReplyDue_; }
   // The next command to carry out; false when none is waiting.
   bool nextCommand(Command& out);
+  // What a transmit() may build: everything, or all but map deltas (scanning the grid for changed
+  // cells costs ~10 ms on the brick: not while the wheels are driven).
+  enum class Scope : uint8_t { All, NoMapScan };
   // The next frame to send, if any (LEGO replies first, then hello, pose, path, room, battery,
   // status, map deltas, a bare ack). Call until it returns false.
-  bool transmit(uint32_t nowMs, const BrickReport& report, Frame& out);
+  bool transmit(uint32_t nowMs, const BrickReport& report, Frame& out, Scope scope = Scope::All);
 
   // The radio connection dropped: the PC must say Hello again; deltas in flight are resent.
   void linkLost();
@@ -82,7 +95,8 @@ class BrickLink {
   uint16_t mapEpoch() const { return sync_.epoch(); }
   const LinkCounters& counters() const { return counters_; }
   const MapSync& mapSync() const { return sync_; }
-  Mailboxes& mailboxes() { return boxes_; }
+  Mailboxes& mailboxes() { return lego_.mailboxes(); }
+  const LegoServer& lego() const { return lego_; }
 
  private:
   void handle(const Telegram& t);
@@ -95,7 +109,9 @@ class BrickLink {
   FrameDecoder decoder_;
   SeqWindow commands_;  // the PC's reliable seqs seen: no command runs twice
   MapSync sync_;
-  Mailboxes boxes_;
+  LegoServer lego_;
+  NoLegoBrick noBrick_;
+  LegoBrick* brick_ = &noBrick_;
   LinkCounters counters_;
 
   Command queue_[kCommandQueue];
@@ -108,9 +124,6 @@ class BrickLink {
   bool helloReplyDue_ = false;
   bool batteryDue_ = false;
   bool ackDue_ = false;
-  uint8_t legoPending_ = 0;      // opcode of a battery/keep-alive request to answer (0 = none)
-  bool legoReplyReady_ = false;  // legoReply_ holds a mailbox reply to send
-  Frame legoReply_;
   uint16_t txSeq_ = 0;
   uint32_t nowMs_ = 0;   // the clock at the last transmit() (receive() has none)
   bool scanNow_ = true;  // the last scan filled a delta: look again at once

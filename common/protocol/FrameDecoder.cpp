@@ -9,23 +9,24 @@ void FrameDecoder::push(uint8_t byte) {
   ++count_;
 }
 
+bool FrameDecoder::plausibleStart() const {
+  const size_t length = static_cast<size_t>(at(0)) | (static_cast<size_t>(at(1)) << 8);
+  if (length < 2 || length > kMaxTelegram) return false;
+  return count_ < 3 || at(2) == kTypeNxtmap || isLegoType(at(2));
+}
+
 bool FrameDecoder::pop(Telegram& out) {
   while (count_ >= kLengthPrefix) {
-    const size_t length = static_cast<size_t>(at(0)) | (static_cast<size_t>(at(1)) << 8);
-    if (length < 2 || length > kMaxTelegram) {
+    if (!plausibleStart()) {
       drop(1);
       continue;
     }
-    if (count_ >= 3) {
-      const uint8_t type = at(2);
-      if (type != kTypeNxtmap && type != kTypeDirect && type != kTypeDirectNoReply && type != kTypeReply) {
-        drop(1);
-        continue;
-      }
-    }
+    const size_t length = static_cast<size_t>(at(0)) | (static_cast<size_t>(at(1)) << 8);
     if (count_ < kLengthPrefix + length) return false;  // wait for the rest
     for (size_t i = 0; i < length; ++i) out.bytes[i] = at(kLengthPrefix + i);
-    if (!telegramValid(out.bytes, length)) {
+    const bool lego = isLegoType(out.bytes[0]);
+    const bool whole = lego ? (inStep_ || legoTelegramKnown(out.bytes, length)) : telegramValid(out.bytes, length);
+    if (!whole) {
       drop(1);
       continue;
     }
@@ -33,6 +34,7 @@ bool FrameDecoder::pop(Telegram& out) {
     head_ = (head_ + kLengthPrefix + length) % kMaxFrame;
     count_ -= kLengthPrefix + length;
     ++counters_.telegrams;
+    inStep_ = true;
     return true;
   }
   return false;
@@ -42,12 +44,14 @@ void FrameDecoder::reset() {
   counters_.skipped += static_cast<uint32_t>(count_);
   head_ = 0;
   count_ = 0;
+  inStep_ = true;
 }
 
 void FrameDecoder::drop(size_t n) {
   head_ = (head_ + n) % kMaxFrame;
   count_ -= n;
   counters_.skipped += static_cast<uint32_t>(n);
+  inStep_ = false;
 }
 
 }  // namespace nxtmap::protocol

@@ -13,10 +13,15 @@ struct DecoderCounters {
   uint32_t skipped = 0;    // bytes thrown away while resynchronising (noise, broken frames)
 };
 
-// Byte-at-a-time decoder of the length-prefixed stream. It survives dropped, corrupted and
-// duplicated bytes: when the bytes at the front cannot start a valid frame (bad length, bad
-// type, bad CRC, wrong LEGO size) it drops one byte and tries again from the next, so it
-// resynchronises on the next intact frame. Memory: one maximum frame.
+// Byte-at-a-time decoder of the length-prefixed stream [length LE16][type][opcode][...].
+//
+// In step (at the start, after a reset and after every telegram delivered) the length is trusted:
+// a telegram of a LEGO type (LegoFormat.hpp) of 2..kMaxTelegram bytes is consumed whole and
+// delivered, understood or not, so an unknown LEGO command can never swallow the frames after it;
+// an nxtmap packet must carry a good CRC. Anything else (a length out of range, an unknown type, a
+// bad CRC) is damage: the decoder drops one byte and resynchronises, and until it delivers again it
+// accepts only what can be checked: nxtmap packets (CRC) and LEGO telegrams whose layout is known
+// to the byte (legoTelegramKnown). Memory: one maximum frame.
 //
 //   decoder.push(byte);
 //   while (decoder.pop(telegram)) handle(telegram);
@@ -34,11 +39,14 @@ class FrameDecoder {
 
  private:
   uint8_t at(size_t i) const { return buf_[(head_ + i) % kMaxFrame]; }
+  // Whether the bytes at the front can start a frame (length, type); false: damage.
+  bool plausibleStart() const;
   void drop(size_t n);
 
   uint8_t buf_[kMaxFrame] = {};
-  size_t head_ = 0;   // index of the oldest byte
-  size_t count_ = 0;  // bytes buffered
+  size_t head_ = 0;     // index of the oldest byte
+  size_t count_ = 0;    // bytes buffered
+  bool inStep_ = true;  // false from damage until the next telegram delivered
   DecoderCounters counters_;
 };
 

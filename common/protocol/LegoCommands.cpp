@@ -1,52 +1,11 @@
 #include "common/protocol/LegoCommands.hpp"
 
-#include "common/protocol/ByteWriter.hpp"
-
 namespace nxtmap::protocol {
 namespace {
 
 bool frameFrom(const uint8_t* telegram, size_t size, Frame& out) { return frameTelegram(telegram, size, out); }
 
 }  // namespace
-
-bool answerDirectCommand(const Telegram& c, Mailboxes& boxes, uint16_t batteryMillivolts, uint32_t sleepLimitMs,
-                         Frame& reply) {
-  if (c.size < 2 || (c.type() != kTypeDirect && c.type() != kTypeDirectNoReply)) return false;
-  if (!telegramValid(c.bytes, c.size)) return false;
-  uint8_t t[kLegoReadReplySize] = {};
-  ByteWriter w(t, sizeof(t));
-  w.u8(kTypeReply);
-  w.u8(c.opcode());
-  switch (c.opcode()) {
-    case kLegoGetBatteryLevel:
-      w.u8(kLegoOk);
-      w.u16(batteryMillivolts);
-      break;
-    case kLegoKeepAlive:
-      w.u8(kLegoOk);
-      w.u32(sleepLimitMs);
-      break;
-    case kLegoMessageWrite: {
-      const bool ok = boxes.write(c.bytes[2], c.bytes + 4, c.bytes[3]);
-      w.u8(ok ? kLegoOk : kLegoIllegalMailbox);
-      break;
-    }
-    case kLegoMessageRead: {
-      const uint8_t remote = c.bytes[2];
-      const uint8_t box = static_cast<uint8_t>(remote >= kLegoMailboxes ? remote - kLegoMailboxes : remote);
-      Mailboxes::Message m;
-      const bool got = boxes.read(box, c.bytes[4] != 0, m);
-      w.u8(got ? kLegoOk : kLegoMailboxEmpty);
-      w.u8(c.bytes[3]);
-      w.u8(got ? m.size : 0);
-      w.bytes(m.bytes, kLegoMaxMessage);
-      break;
-    }
-    default: return false;
-  }
-  if (c.type() == kTypeDirectNoReply || !w.ok()) return false;
-  return frameFrom(t, w.size(), reply);
-}
 
 bool encodeGetBatteryLevel(Frame& out) {
   const uint8_t t[] = {kTypeDirect, kLegoGetBatteryLevel};
@@ -71,7 +30,7 @@ bool encodeMessageWrite(uint8_t box, const char* text, Frame& out) {
 }
 
 bool encodeMessageRead(uint8_t remoteBox, uint8_t localBox, bool remove, Frame& out) {
-  if (remoteBox >= 2 * kLegoMailboxes || localBox >= kLegoMailboxes) return false;
+  if (remoteBox >= kLegoMailboxes || localBox >= kLegoMailboxes) return false;
   const uint8_t t[] = {kTypeDirect, kLegoMessageRead, remoteBox, localBox, static_cast<uint8_t>(remove ? 1 : 0)};
   return frameFrom(t, sizeof(t), out);
 }

@@ -2,20 +2,11 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "common/protocol/Mailboxes.hpp"
 #include "common/protocol/Telegram.hpp"
 
-// LEGO direct commands: the brick's answers, and the PC's requests and reply parsing, with
-// LEGO's byte layouts (see WireFormat.hpp).
+// LEGO direct commands from the PC's side: requests and reply parsing, with LEGO's byte layouts
+// (LegoFormat.hpp). The brick's answers are LegoServer's.
 namespace nxtmap::protocol {
-
-// Carries out a served direct command (a telegram FrameDecoder accepted) and builds LEGO's
-// reply. Returns false when no reply is due (type 0x80) or the telegram is not a served
-// direct command. `batteryMillivolts` answers GET_BATTERY_LEVEL; KEEP_ALIVE answers
-// `sleepLimitMs`. MESSAGE_WRITE/READ use `boxes` (READ's remote inbox 10..19 reads box - 10,
-// LEGO's convention for the brick's outboxes).
-bool answerDirectCommand(const Telegram& command, Mailboxes& boxes, uint16_t batteryMillivolts, uint32_t sleepLimitMs,
-                         Frame& reply);
 
 // PC side: requests.
 bool encodeGetBatteryLevel(Frame& out);

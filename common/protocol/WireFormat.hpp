@@ -2,13 +2,17 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "common/protocol/LegoFormat.hpp"
+
 // The radio link's wire format, shared by the brick, the emulator bridge and the PC.
 //
 // Every frame is the NXT's Bluetooth stream framing: a 2-byte little-endian length, then a
 // telegram of that many bytes, laid out as LEGO's protocol has it: [type][opcode][...].
 //
-//  - LEGO direct commands (type 0x00 reply wanted, 0x80 no reply) and their replies (type 0x02)
-//    follow LEGO's layout exactly, so existing NXT tools (nxt-python, NXC's BT tools) work.
+//  - LEGO direct and system commands (types 0x00 / 0x01 reply wanted, 0x80 / 0x81 no reply) and
+//    their replies (type 0x02) follow LEGO's layout exactly (LegoFormat.hpp), so existing NXT tools
+//    (nxt-python, NXC's BT tools) work. A telegram of a LEGO type is consumed whole by its length,
+//    understood or not; an nxtmap packet is never read as one, nor the reverse.
 //  - nxtmap packets use type kTypeNxtmap:
 //      [0x4E][opcode][version][flags][seq u16][ack u16][ackMask u16][payload...][crc32 u32]
 //    All multi-byte fields little-endian. crc32 (IEEE 802.3, reflected, as zlib's crc32) covers
@@ -31,32 +35,11 @@ constexpr size_t kMaxPayload = kMaxTelegram - kPacketHeader - kPacketTrailer;  /
 
 // Telegram types (byte 0).
 constexpr uint8_t kTypeDirect = 0x00;         // LEGO direct command, reply wanted
-constexpr uint8_t kTypeSystem = 0x01;         // LEGO system command, reply wanted (not served)
+constexpr uint8_t kTypeSystem = 0x01;         // LEGO system command, reply wanted
 constexpr uint8_t kTypeReply = 0x02;          // LEGO reply
 constexpr uint8_t kTypeDirectNoReply = 0x80;  // LEGO direct command, no reply
-constexpr uint8_t kTypeSystemNoReply = 0x81;  // (not served)
+constexpr uint8_t kTypeSystemNoReply = 0x81;  // LEGO system command, no reply
 constexpr uint8_t kTypeNxtmap = 0x4E;         // 'N': an nxtmap packet
-
-// LEGO direct command opcodes served by the brick (c_cmd.iom).
-constexpr uint8_t kLegoMessageWrite = 0x09;
-constexpr uint8_t kLegoGetBatteryLevel = 0x0B;
-constexpr uint8_t kLegoKeepAlive = 0x0D;
-constexpr uint8_t kLegoMessageRead = 0x13;
-
-// LEGO reply status codes.
-constexpr uint8_t kLegoOk = 0x00;
-constexpr uint8_t kLegoMailboxEmpty = 0x40;
-constexpr uint8_t kLegoIllegalMailbox = 0xEC;  // (LEGO: "illegal mailbox queue ID")
-constexpr uint8_t kLegoQueueFull = 0xFB;       // (LEGO: "insufficient memory available")
-
-// LEGO mailboxes: 10 inboxes, messages up to 59 bytes including the terminating NUL.
-constexpr uint8_t kLegoMailboxes = 10;
-constexpr uint8_t kLegoMaxMessage = 59;
-// Telegram sizes of the served commands and replies.
-constexpr size_t kLegoBatteryCommandSize = 2, kLegoBatteryReplySize = 5;      // [02][0B][st][mV u16]
-constexpr size_t kLegoKeepAliveCommandSize = 2, kLegoKeepAliveReplySize = 7;  // [02][0D][st][ms u32]
-constexpr size_t kLegoReadCommandSize = 5, kLegoReadReplySize = 64;           // [02][13][st][box][len][59]
-constexpr size_t kLegoWriteReplySize = 3;                                     // [02][09][st]
 
 // nxtmap opcodes. PC -> brick:
 enum class Op : uint8_t {

@@ -322,7 +322,7 @@ TEST_F(BrickLinkTest, MailboxMessagesReachTheFirmware) {
   ASSERT_TRUE(decodeMessageWriteReply(r.lego[0], status));
   EXPECT_EQ(status, kLegoOk);
   Mailboxes::Message m;
-  ASSERT_TRUE(link.mailboxes().read(1, true, m));
+  ASSERT_EQ(link.mailboxes().read(1, true, m), kLegoOk);
   EXPECT_STREQ(reinterpret_cast<const char*>(m.bytes), "stop");
 }
 

@@ -88,6 +88,50 @@ TEST(FrameDecoder, RecoversFromEveryKindOfDamage) {
   }
 }
 
+// Telegrams of LEGO's types are consumed whole by their length, understood or not: each of these
+// used to be resynchronised byte by byte, taking two of its bytes for a length (PLAY_TONE(300, 50)
+// -> 50, SET_INPUT_MODE(ultrasonic) -> 11, MESSAGE_WRITE to inbox 12 -> 120) and swallowing what came
+// next. After real damage only what can be checked is trusted until the decoder is back in step.
+TEST(FrameDecoder, ConsumesEveryLegoTelegramWholeByItsLength) {
+  const Bytes a = packetFrame(1, 20), b = packetFrame(2, 30), c = packetFrame(3, 0);
+  const Bytes tone = {6, 0, 0x80, 0x03, 0x2C, 0x01, 0x32, 0x00};           // PLAY_TONE(300 Hz, 50 ms), no reply
+  const Bytes inputMode = {5, 0, 0x80, 0x05, 0x00, 0x0B, 0x00};            // SET_INPUT_MODE(1, LOW_SPEED_9V, RAW)
+  const Bytes write12 = {7, 0, 0x00, 0x09, 12, 3, 'h', 'i', 0};            // MESSAGE_WRITE(12, "hi")
+  const Bytes stopProgram = {2, 0, 0x00, 0x01};                            // STOP_PROGRAM
+  const Bytes lsWrite = {7, 0, 0x00, 0x0F, 0x00, 0x02, 0x01, 0x02, 0x42};  // LS_WRITE(1, [02 42], 1)
+  Bytes openRead = {22, 0, 0x01, 0x80};                                    // system OPEN_READ("a.rxe")
+  openRead.resize(24, 0);
+  openRead[4] = 'a';
+  const Bytes reply = {3, 0, 0x02, 0x05, 0xBE};  // a reply to the brick
+  auto flipAt = [](Bytes x, size_t i) {
+    x[i] ^= 0x5A;
+    return x;
+  };
+  struct Case {
+    std::string what;
+    Bytes stream;
+    std::vector<int> delivered;
+  };
+  const Case cases[] = {
+      {"PLAY_TONE(300, 50)", concat({a, tone, b}), {1, 1000 + 0x03, 2}},
+      {"SET_INPUT_MODE for an ultrasonic sensor", concat({a, inputMode, b}), {1, 1000 + 0x05, 2}},
+      {"MESSAGE_WRITE to inbox 12", concat({a, write12, b}), {1, 1000 + 0x09, 2}},
+      {"back to back, ours between",
+       concat({stopProgram, lsWrite, a, openRead, reply, b}),
+       {1000 + 0x01, 1000 + 0x0F, 1, 1000 + 0x80, 1000 + 0x05, 2}},
+      {"first thing on the stream", concat({inputMode, c}), {1000 + 0x05, 3}},
+      {"after damage an unknown command is not trusted", concat({a, flipAt(b, b.size() - 1), inputMode, c}), {1, 3}},
+      {"after damage a known layout is", concat({a, flipAt(b, b.size() - 1), tone, c}), {1, 1000 + 0x03, 3}},
+      {"and then the stream is trusted again",
+       concat({flipAt(b, 5), tone, inputMode, c}),
+       {1000 + 0x03, 1000 + 0x05, 3}},
+  };
+  for (const Case& k : cases) {
+    FrameDecoder d;
+    EXPECT_EQ(decodeAll(k.stream, d), k.delivered) << k.what;
+  }
+}
+
 TEST(FrameDecoder, CountsWhatItThrowsAway) {
   FrameDecoder d;
   const Bytes noise = {0x01, 0x02, 0x03, 0x04, 0x05};

@@ -8,14 +8,12 @@
 #include "common/protocol/ByteReader.hpp"
 #include "common/protocol/ByteWriter.hpp"
 #include "common/protocol/Crc32.hpp"
-#include "common/protocol/LegoCommands.hpp"
 #include "common/protocol/Packet.hpp"
 
 namespace nxtmap::protocol {
 namespace {
 
 using Bytes = std::vector<uint8_t>;
-Bytes bytesOf(const Frame& f) { return Bytes(f.bytes, f.bytes + f.size); }
 Telegram telegramOf(const Bytes& b) {
   Telegram t;
   for (size_t i = 0; i < b.size(); ++i) t.bytes[i] = b[i];
@@ -132,82 +130,7 @@ TEST(SequenceNumbers, SkipZeroAndAcknowledgeThroughTheMask) {
   for (const Case& c : cases) EXPECT_EQ(acknowledges(c.ack, c.mask, c.seq), c.acked) << c.ack << " " << c.seq;
 }
 
-// LEGO direct commands, byte for byte as LEGO's Bluetooth developer kit lays them out.
-TEST(LegoDirectCommands, AreAnsweredWithLegosReplyLayout) {
-  Mailboxes boxes;
-  struct Case {
-    const char* what;
-    Bytes command;
-    Bytes reply;  // empty: no reply
-  };
-  const Case cases[] = {
-      {"battery", {0x00, 0x0B}, {0x02, 0x0B, 0x00, 0x2C, 0x1F}},                 // 7980 mV
-      {"keep alive", {0x00, 0x0D}, {0x02, 0x0D, 0x00, 0x60, 0xEA, 0x00, 0x00}},  // 60000 ms
-      {"battery, no reply", {0x80, 0x0B}, {}},
-      {"write box 3", {0x00, 0x09, 0x03, 0x03, 'h', 'i', 0x00}, {0x02, 0x09, 0x00}},
-      {"write box 3 again, no reply", {0x80, 0x09, 0x03, 0x02, 'x', 0x00}, {}},
-  };
-  for (const Case& c : cases) {
-    Frame reply;
-    const bool answered = answerDirectCommand(telegramOf(c.command), boxes, 7980, 60000, reply);
-    EXPECT_EQ(answered, !c.reply.empty()) << c.what;
-    if (answered) {
-      Bytes expected = {static_cast<uint8_t>(c.reply.size()), 0};
-      expected.insert(expected.end(), c.reply.begin(), c.reply.end());
-      EXPECT_EQ(bytesOf(reply), expected) << c.what;
-    }
-  }
-  // MESSAGE_READ of remote box 13 (LEGO's outbox convention: box 3), removing: oldest first.
-  Frame reply;
-  ASSERT_TRUE(answerDirectCommand(telegramOf({0x00, 0x13, 13, 0, 1}), boxes, 0, 0, reply));
-  ASSERT_EQ(reply.size, 2 + 64);
-  EXPECT_EQ(Bytes(reply.bytes, reply.bytes + 10), (Bytes{64, 0, 0x02, 0x13, 0x00, 0, 3, 'h', 'i', 0}));
-  ASSERT_TRUE(answerDirectCommand(telegramOf({0x00, 0x13, 3, 0, 1}), boxes, 0, 0, reply));
-  EXPECT_EQ(Bytes(reply.bytes + 4, reply.bytes + 9), (Bytes{0x00, 0, 2, 'x', 0}));
-  ASSERT_TRUE(answerDirectCommand(telegramOf({0x00, 0x13, 3, 0, 1}), boxes, 0, 0, reply));
-  EXPECT_EQ(reply.bytes[4], kLegoMailboxEmpty);
-}
-
-TEST(LegoDirectCommands, MalformedOnesAreNotTelegrams) {
-  const Bytes bad[] = {
-      {0x00, 0x0B, 0x00},                 // battery with a stray byte
-      {0x00, 0x09, 10, 2, 'a', 0},        // mailbox 10 does not exist
-      {0x00, 0x09, 1, 3, 'a', 'b', 'c'},  // not NUL-terminated
-      {0x00, 0x09, 1, 60, 0},             // size beyond 59 / mismatch
-      {0x00, 0x13, 20, 0, 1},             // remote box 20
-      {0x00, 0x13, 1, 0, 2},              // remove flag 2
-      {0x00, 0x03, 0, 0, 0, 0, 0, 0},     // PLAY_TONE: not served
-      {0x01, 0x9B},                       // system command: not served
-      {0x4E, 0x02},                       // too short for a packet
-  };
-  for (const Bytes& b : bad) EXPECT_FALSE(telegramValid(b.data(), b.size())) << int(b[1]);
-}
-
-TEST(LegoDirectCommands, PcSideEncodersAndReplyDecodersRoundTrip) {
-  Mailboxes boxes;
-  Frame req, rep;
-  ASSERT_TRUE(encodeMessageWrite(2, "explore", req));
-  Telegram t = telegramOf(Bytes(req.bytes + 2, req.bytes + req.size));
-  ASSERT_TRUE(answerDirectCommand(t, boxes, 0, 0, rep));
-  uint8_t status = 0xFF;
-  ASSERT_TRUE(decodeMessageWriteReply(telegramOf(Bytes(rep.bytes + 2, rep.bytes + rep.size)), status));
-  EXPECT_EQ(status, kLegoOk);
-  ASSERT_TRUE(encodeMessageRead(12, 0, true, req));
-  ASSERT_TRUE(answerDirectCommand(telegramOf(Bytes(req.bytes + 2, req.bytes + req.size)), boxes, 0, 0, rep));
-  char text[kLegoMaxMessage + 1];
-  uint8_t box = 9;
-  ASSERT_TRUE(decodeMessageReadReply(telegramOf(Bytes(rep.bytes + 2, rep.bytes + rep.size)), status, box, text));
-  EXPECT_EQ(status, kLegoOk);
-  EXPECT_EQ(box, 0);
-  EXPECT_STREQ(text, "explore");
-  ASSERT_TRUE(encodeGetBatteryLevel(req));
-  ASSERT_TRUE(answerDirectCommand(telegramOf(Bytes(req.bytes + 2, req.bytes + req.size)), boxes, 8123, 0, rep));
-  uint16_t mv = 0;
-  ASSERT_TRUE(decodeBatteryReply(telegramOf(Bytes(rep.bytes + 2, rep.bytes + rep.size)), status, mv));
-  EXPECT_EQ(mv, 8123);
-  EXPECT_FALSE(encodeMessageWrite(0, std::string(59, 'a').c_str(), req));  // 59 + NUL is too long
-  EXPECT_TRUE(encodeMessageWrite(0, std::string(58, 'a').c_str(), req));
-}
+// LEGO's commands: LegoServerTest.cpp.
 
 }  // namespace
 }  // namespace nxtmap::protocol
