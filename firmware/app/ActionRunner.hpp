@@ -128,13 +128,24 @@ class ActionRunner {
     return true;
   }
   int8_t power(int wheel) const { return motion_.power(wheel); }
+  // The last sample of sensor port 0..3, cm (255: no echo); false before the port's first sample.
+  bool lastReading(uint8_t port, uint8_t& cm) const {
+    if (port >= 4 || (seen_ & (1u << port)) == 0) return false;
+    cm = last_[port];
+    return true;
+  }
 
  private:
   enum class Phase : uint8_t { Idle, Reading, Thinking, Driving, Backing, Rotating };
 
   bool pollRead(uint32_t nowMs, DriveEvent& out) {
     sonar_.poll(nowMs);
-    if (sonar_.ready()) filter_.add(sonar_.take());
+    if (sonar_.ready()) {
+      const uint8_t cm = sonar_.take();
+      last_[sonar_.port() & 3] = cm;
+      seen_ = static_cast<uint8_t>(seen_ | (1u << (sonar_.port() & 3)));
+      filter_.add(cm);
+    }
     if (filter_.done()) return finish(DriveEvent::range(action_.sensor, filter_.result()), out);
     if (!sonar_.busy()) sonar_.request(ports_[static_cast<int>(action_.sensor)]);
     return false;
@@ -152,6 +163,8 @@ class ActionRunner {
   MotionGeometry drive_;
   RangeFilter filter_;
   uint8_t ports_[4] = {0, 1, 2, 3};
+  uint8_t last_[4] = {};  // last sample per sensor port, cm
+  uint8_t seen_ = 0;      // bit n: port n has a sample
   DriveAction action_{};
   Wheels start_{0, 0};
   Wheels target_{0, 0};

@@ -53,8 +53,10 @@ BrickApp::BrickApp()
       link_(stack_.map().grid(), shadow_, linkConfigFor(stack_.config().geometry)),
       runner_(motion_, sonar_, config_.drive, stack_.config().geometry, config_.sensorPorts),
       modes_(stack_, houseBrick(), runner_, link_, safety_, tacho_, avr_.command(), config_),
+      lego_(modes_, runner_),
       radio_(bt_, link_, modes_, avr_),
       status_(frame_, lcd_, modes_, bt_, link_, avr_, safety_) {
+  link_.attach(lego_);
 }
 
 void BrickApp::init() {
@@ -137,7 +139,7 @@ void BrickApp::startSonarClock() {
 void BrickApp::guardMotors(uint32_t nowMs) {
   safety_.feed(nowMs);
   if (tacho_.fault()) safety_.trip(MotorSafety::Reason::Encoder);
-  const bool moving = modes_.moving();
+  const bool moving = modes_.motorsDriven();  // the robot's run or a PC's LEGO motor commands
   if (moving && avr_.silentMs() > kAvrSilentTripMs) safety_.trip(MotorSafety::Reason::AvrLink);
   if (safety_.tripped() && moving) modes_.halt();
 }

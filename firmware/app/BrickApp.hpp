@@ -8,6 +8,7 @@
 #include "common/protocol/BrickLink.hpp"
 #include "firmware/app/ActionRunner.hpp"
 #include "firmware/app/BrickConfig.hpp"
+#include "firmware/app/LegoPort.hpp"
 #include "firmware/app/ModeMachine.hpp"
 #include "firmware/app/RadioService.hpp"
 #include "firmware/app/Screen.hpp"
@@ -28,8 +29,9 @@
 namespace nxtmap::fw {
 
 #ifdef NXTMAP_RAM_RUN
-// The RAM-run image (libnxt fwexec) keeps its code in the same 56 KiB as its data: a 64 x 32 grid.
-using AppExplorerStorage = ExplorerStorage<64, 32, 512>;
+// The RAM-run image (libnxt fwexec) keeps its code in the same 56 KiB as its data: a 32 x 32 grid
+// (6.4 m square at 20 cm cells; 64 x 32 until the LEGO command set took its code's place).
+using AppExplorerStorage = ExplorerStorage<32, 32, 256>;
 #else
 using AppExplorerStorage = BrickExplorerStorage;
 static_assert(AppExplorerStorage::kWidth() == 64 && AppExplorerStorage::kHeight() == 64,
@@ -110,6 +112,7 @@ class BrickApp {
   protocol::BrickLink link_;
   ActionRunner runner_;
   ModeMachine modes_;
+  LegoPort lego_;  // LEGO's direct commands on the outputs and sensors (attached to link_)
   RadioService radio_;
   StatusScreen status_;
 

@@ -147,17 +147,37 @@ void ModeMachine::stepExplorer(const DriveEvent& e, uint32_t nowMs) {
 
 void ModeMachine::driveMotors() {
   if (safety_.tripped()) return;
-  const int8_t left = moving() ? runner_.power(0) : int8_t{0};
-  const int8_t right = moving() ? runner_.power(1) : int8_t{0};
-  motors_.pwm[config_.leftMotor] = left;
-  motors_.pwm[config_.rightMotor] = right;
+  const bool run = moving();
+  if (run) pc_.stopAll();  // the robot's own run takes the motors
   uint8_t brake = kAllBrakes;
-  if (left != 0) brake = static_cast<uint8_t>(brake & ~(1u << config_.leftMotor));
-  if (right != 0) brake = static_cast<uint8_t>(brake & ~(1u << config_.rightMotor));
+  for (uint8_t p = 0; p < PcOutputs::kOutputs; ++p) {
+    int8_t v = pc_.power(p, tacho_.count(p));
+    if (run) v = p == config_.leftMotor ? runner_.power(0) : p == config_.rightMotor ? runner_.power(1) : int8_t{0};
+    motors_.pwm[p] = v;
+    if (v != 0 || (!run && !pc_.brakes(p))) brake = static_cast<uint8_t>(brake & ~(1u << p));
+  }
   motors_.brakeMask = brake;
 }
 
+uint8_t ModeMachine::setOutput(const protocol::LegoOutputCommand& c) {
+  if (moving() || safety_.tripped() || c.port >= PcOutputs::kOutputs) return protocol::kLegoRequestFailed;
+  pc_.set(c, tacho_.count(c.port));
+  return protocol::kLegoOk;
+}
+
+uint8_t ModeMachine::resetPosition(uint8_t port, bool relative) {
+  if (moving() || port >= PcOutputs::kOutputs) return protocol::kLegoRequestFailed;
+  pc_.resetPosition(port, relative, tacho_.count(port));
+  return protocol::kLegoOk;
+}
+
+protocol::LegoOutputState ModeMachine::output(uint8_t port) const {
+  const uint8_t p = port % PcOutputs::kOutputs;
+  return pc_.state(p, tacho_.count(p), motors_.pwm[p]);
+}
+
 void ModeMachine::halt() {
+  pc_.stopAll();
   leaveHouse();
   runner_.abort();
   follower_.abort();

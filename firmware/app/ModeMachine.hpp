@@ -8,6 +8,7 @@
 #include "firmware/app/ActionRunner.hpp"
 #include "firmware/app/BrickConfig.hpp"
 #include "firmware/app/PathFollower.hpp"
+#include "firmware/app/PcOutputs.hpp"
 #include "firmware/drivers/AvrFrame.hpp"
 #include "firmware/drivers/MotorSafety.hpp"
 #include "firmware/drivers/TachoDecoder.hpp"
@@ -62,6 +63,15 @@ class ModeMachine {
   // The motors must stop (a tripped MotorSafety): the run or path is cut short, mode Fault.
   void halt();
 
+  // LEGO's motor commands from a PC (LegoPort), obeyed only while the robot rests and no fault is
+  // latched (else kLegoRequestFailed); the motors then run through driveMotors() and MotorSafety
+  // as the robot's own do. `port` 0..2.
+  uint8_t setOutput(const protocol::LegoOutputCommand& c);
+  uint8_t resetPosition(uint8_t port, bool relative);
+  protocol::LegoOutputState output(uint8_t port) const;
+  // A motor is powered: the robot moves or a PC drives an output.
+  bool motorsDriven() const { return moving() || pc_.driven(); }
+
   Mode mode() const { return houseActive() ? house_->mode() : mode_; }
   bool moving() const { return mode() == Mode::Exploring || mode() == Mode::Following; }
   // A house command ran since the last other command: mode, pose, room and report are the house's.
@@ -109,6 +119,7 @@ class ModeMachine {
   AvrCommand& motors_;  // the AVR link's next command (its motor part)
   const BrickConfig& config_;
   PathFollower follower_{};
+  PcOutputs pc_{};         // outputs as a PC drives them while the robot rests
   DriveAction pending_{};  // the action being carried out
   Pose restPose_{};        // where the robot stands when neither the explorer nor a path moved it last
   bool poseFromPath_ = false;
