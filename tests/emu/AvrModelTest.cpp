@@ -15,8 +15,8 @@ namespace {
 const std::string kCopyright = "Let's samba nxt arm in arm, (c)LEGO System A/S";
 
 std::vector<uint8_t> handshake(const std::string& text = kCopyright) {
-  std::vector<uint8_t> f{0xCC};
-  f.insert(f.end(), text.begin(), text.end());
+  std::vector<uint8_t> f(1 + text.size(), 0xCC);
+  for (size_t i = 0; i < text.size(); ++i) f[1 + i] = static_cast<uint8_t>(text[i]);
   return f;
 }
 
