@@ -62,8 +62,8 @@ struct HouseExpoHouse {
                                col,     row,    RangeGeometry{}};
   }
 
-  // The house mapped whole enough to be a house, and how it compares with sim-house (printed: the
-  // comparison is reported, not asserted; see kFloorPct). Returns the score.
+  // The house mapped whole, and as well as sim-house maps it up to the spread of the noise's draw
+  // (see kDrawSpreadPct; both figures printed). Returns the score.
   house::HouseScore expectAHouse(const network::HouseNetwork& mapped, const char* what) const {
     const house::HouseScore s = house::scoreHouse(inWorld(mapped));
     const house::PlanCoverage c = house::planCoverage(inWorld(mapped), plan);
@@ -74,15 +74,16 @@ struct HouseExpoHouse {
         sim.gateways);
     EXPECT_GE(c.reachable, 3) << what << ": a house of at least three rooms";
     EXPECT_GE(s.rooms, 3) << what << ": at least three rooms mapped";
-    EXPECT_GE(c.covered, c.reachable - 1) << what << ": at most one plan room short of 90 %";
+    EXPECT_EQ(c.covered, c.reachable) << what << ": every reachable plan room mapped to 90 % or more";
     EXPECT_GE(s.gateways, s.rooms - 1) << what << ": every room joined by a doorway passed";
-    EXPECT_GE(s.agreementPct(), kFloorPct) << what;
+    EXPECT_GE(s.agreementPct(), sim.agreementPct() - kDrawSpreadPct) << what << ": as well as sim-house";
     return s;
   }
-  // A floor well under what the house gets (86-100 % in the runs measured) that a broken link, a lost
-  // room or a misplaced frame falls through; sim-house's own figure on this house at the brick's grid
-  // ranges 55-94 % over seeds 1-6, so a single seed's comparison with it is reported, not asserted.
-  static constexpr double kFloorPct = 80.0;
+  // The emulated robot draws its noise on its own timing (the firmware's readings and wheel steps,
+  // not sim-house's), so the same seed is another draw of the same noise. sim-house's own figure on
+  // this house at the brick's grid spreads over 3.9 points from draw to draw (90.2-94.1 % over seeds
+  // 1-24, typical noise): the emulated house must be within that of sim-house's on the same seed.
+  static constexpr double kDrawSpreadPct = 3.9;
 };
 
 }  // namespace nxtmap::emu::test
