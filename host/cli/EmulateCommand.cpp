@@ -9,6 +9,7 @@
 
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
+#include "host/cli/LcdSeries.hpp"
 #include "host/emu/EmulatedRun.hpp"
 #include "host/emu/LinkServer.hpp"
 #include "host/fileio/OutputTarget.hpp"
@@ -29,6 +30,8 @@ CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
                 "make firmware");
   c->add_option("--listen", o.listen, "PC side of the Bluetooth link: tcp:127.0.0.1:PORT or pty");
   c->add_option("--lcd", o.lcd, "write the LCD picture as PNG at the end");
+  c->add_option("--lcd-every", o.lcdEvery,
+                "with --lcd FILE.png: also FILE-0001.png, FILE-0002.png, ... every SECONDS of emulated time");
   c->add_option("--speed", o.speed, "max (as fast as possible) or realtime (default max)");
   addWorldRunOptions(*c, o.run, "default: the firmware's own (nxtmap-sim.elf published, nxtmap.elf brick)");
   c->add_option("--seed", o.seed, "random seed of the noise (default 1)");
@@ -65,6 +68,9 @@ int runEmulate(const EmulateOptions& o) {
   run.stopWhenPcLeaves = until == "disconnect";
   std::string lcdError;  // --lcd is checked before the run (a missing folder, a device): nothing written yet
   if (!o.lcd.empty() && !fileio::resolveOutputTarget(o.lcd, lcdError)) throw CliError("--lcd: " + lcdError);
+  if (o.lcdEvery != 0.0 && o.lcd.empty()) throw CliError("--lcd-every needs --lcd FILE.png");
+  if (o.lcdEvery != 0.0 && !(o.lcdEvery >= 0.001 && o.lcdEvery <= o.seconds))
+    throw CliError("--lcd-every must lie in [0.001, --seconds], not " + std::to_string(o.lcdEvery));
   const sim::Site site = loadSiteFile(o.world, robot.cellCm);
   run.brick.startPose = parseSiteStart(site, o.start, o.heading);
   checkStartFits(site, robot, *run.brick.startPose);
@@ -94,8 +100,17 @@ int runEmulate(const EmulateOptions& o) {
               << " has no nxtmap symbols: it runs to the time limit, without the measurements that need them "
                  "(exploration done, sensor updates, static RAM)\n"
               << std::flush;
-  emu::EmulatedRun emulated(*load.image, site, run);
+  std::unique_ptr<LcdSeries> series;
+  std::unique_ptr<emu::EmulatedRun> holder;
+  std::string seriesError;
+  if (o.lcdEvery > 0.0) {
+    series = std::make_unique<LcdSeries>(o.lcd, static_cast<uint64_t>(o.lcdEvery * static_cast<double>(emu::kMckHz)));
+    run.onEvent = [&](uint64_t cycles) { return !series->poll(cycles, holder->brick().lcd(), seriesError); };
+  }
+  holder = std::make_unique<emu::EmulatedRun>(*load.image, site, run);
+  emu::EmulatedRun& emulated = *holder;
   const emu::EmulatedRunReport r = emulated.run();
+  if (!seriesError.empty()) throw CliError(seriesError);
 
   auto num = [](double v, int d = 1) { return report::formatNumber(v, d); };
   std::ostringstream out;
@@ -113,8 +128,11 @@ int runEmulate(const EmulateOptions& o) {
       << num(r.cpuSeconds, 2) << " s = " << num(r.cpuSpeedRatio()) << "x)\n"
       << "instructions     " << r.executed << " executed, " << r.irqs << " interrupts, " << r.idles << " idles, "
       << r.slices << " CPU slices\n"
-      << "RAM high-water   " << r.ram.total() << " B (static " << r.ram.staticBytes << " + stack " << r.ram.stackBytes
-      << ") of 65536\n"
+      << "RAM high-water   "
+      << (r.ram.measured ? std::to_string(r.ram.total()) + " B (static " + std::to_string(r.ram.staticBytes) +
+                               " + stack " + std::to_string(r.ram.stackBytes) + ") of 65536"
+                         : std::string("not measured (the firmware has no end-of-.bss symbol)"))
+      << "\n"
       << "sensor updates   " << r.sensorUpdates << ", at most " << r.maxPerUpdate << " instructions each\n"
       << "longest busy     " << r.maxBusy << " instructions between idles\n"
       << "AVR frames       " << r.avrGood << " good, " << r.avrBad << " bad; sonar pings " << r.pings << "\n"
@@ -128,6 +146,7 @@ int runEmulate(const EmulateOptions& o) {
     std::string error;
     if (!emulated.brick().lcd().savePng(o.lcd, 4, error)) throw CliError(error);
     std::cout << "wrote " << o.lcd << "\n";
+    if (series) std::cout << "wrote " << series->written() << " pictures " << LcdSeries::numbered(o.lcd, 1) << " ...\n";
   }
   if (r.fault) {
     printError("the emulated brick stopped: " + r.fault.describe());

@@ -1,5 +1,5 @@
-// `nxtmap emulate WORLD --start C,R [--firmware FILE.elf|FILE.bin] [--listen tcp:127.0.0.1:PORT|pty] [--lcd FILE.png]
-//  [--speed max|realtime] [--noise P] [--seed N]`: the real firmware image, instruction by instruction, in
+// `nxtmap emulate WORLD --start C,R [--firmware FILE.elf|FILE.bin] [--listen tcp:127.0.0.1:PORT|pty] [--lcd FILE.png
+//  [--lcd-every SECONDS]] [--speed max|realtime] [--noise P] [--seed N]`: the real firmware image, instruction by instruction, in
 // the emulated brick driving the simulated robot; the PC console connects to the listening end as it would
 // to a brick over Bluetooth. Prints the run's measurements at the end.
 #pragma once
@@ -21,6 +21,7 @@ struct EmulateOptions {
   std::string listen;                     // empty = no PC side
   std::string until;                      // explored | disconnect (default: disconnect with --listen, else explored)
   std::string lcd;                        // PNG of the LCD at the end
+  double lcdEvery = 0.0;                  // > 0: also numbered PNGs beside it every this many emulated seconds
   std::string speed = "max";              // max | realtime
   WorldRunOptions run{"ideal", "", 0.0};  // --noise, --robot (empty: the firmware's own), --start-jitter
   std::string seed = "1";

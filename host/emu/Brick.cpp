@@ -38,6 +38,7 @@ Brick::Brick(const ElfImage& image, const sim::Site& site, const BrickConfig& c)
       buttons_(avr_, c.pressEnterAtS < 0 ? kNever : static_cast<uint64_t>(c.pressEnterAtS * kMckHz),
                cyclesFromMs(300)) {
   machine_.clock().slowClockHz = slowClockHzForSeed(c.seed);  // this brick's RC slow clock
+  lcd_.onFault([this](const std::string& what) { machine_.reportModelFault("LCD: " + what); });
   machine_.attach(Pioa::kBase, Pioa::kSize, pioa_);
   machine_.attach(Twi::kBase, Twi::kSize, twi_);
   machine_.attach(Usart::kBase1, Usart::kSize, usart_);

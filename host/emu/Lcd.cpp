@@ -21,6 +21,7 @@ void Lcd::byte(bool data, uint8_t v) {
   if (!command(v) && fault_.empty()) {
     static const char* const kHex = "0123456789ABCDEF";
     fault_ = std::string("unknown UC1601 command 0x") + kHex[v >> 4] + kHex[v & 15];
+    if (onFault_) onFault_(fault_);
   }
 }
 

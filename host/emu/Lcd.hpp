@@ -4,12 +4,14 @@
 // change what it shows. Every command byte must be one of the UC1601's commands (the table in Lcd.cpp:
 // column/page address, temperature compensation, power control, scroll line, VBIAS potentiometer + its
 // argument, RAM address control, line rate, mapping, bias ratio, reset, NOP, ...); any other byte is a
-// fault (fault() names the first one). Data bytes land at [page][column], column auto-increments. The
+// fault (fault() names the first one, and the fault handler, when set, is told at once: the brick stops
+// the machine with it). Data bytes land at [page][column], column auto-increments. The
 // picture can be saved as PNG (1 = dark pixel; bit n = row 8*page+n).
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 
 namespace nxtmap::emu {
@@ -22,6 +24,8 @@ class Lcd {
   bool displayOn() const { return on_; }
   // Empty, or the first command byte the UC1601 does not know ("unknown UC1601 command 0x..").
   const std::string& fault() const { return fault_; }
+  // Called once, with the fault's text, when the first fault happens.
+  void onFault(std::function<void(const std::string&)> handler) { onFault_ = std::move(handler); }
   uint64_t commandBytes() const { return commandBytes_; }
   uint64_t dataBytes() const { return dataBytes_; }
   // Writes a PNG (scale x scale pixels per LCD pixel, scale 1..16) whole or not at all (fileio::AtomicFile);
@@ -36,6 +40,7 @@ class Lcd {
   bool expectArg_ = false;  // the next command byte is an argument (e.g. after 0x81 contrast)
   uint64_t dataBytes_ = 0, commandBytes_ = 0;
   std::string fault_;
+  std::function<void(const std::string&)> onFault_;
 };
 
 }  // namespace nxtmap::emu

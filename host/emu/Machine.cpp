@@ -309,6 +309,11 @@ void Machine::setFault(FaultKind kind, uint32_t address, std::string what, std::
   fault_.what = std::move(what);
 }
 
+void Machine::reportModelFault(const std::string& what) {
+  setFault(FaultKind::Model, 0, what);
+  clock_.poke();  // the block hook stops at the next block, and run() ends
+}
+
 uint32_t Machine::currentPc() const {
   uint32_t pc = 0;
   uc_reg_read(uc_, UC_ARM_REG_PC, &pc);
@@ -465,6 +470,7 @@ bool Machine::run(uint64_t until, const std::function<bool()>& stop) {
   if (wallOrigin_ < 0.0) wallOrigin_ = wallStart - secondsFromCycles(clock_.now);
   while (!fault_) {
     advanceModels();
+    if (fault_) break;  // a model reported one
     if (!efc_.misuse().empty()) {
       setFault(FaultKind::BadMemory, kFlashBase + efc_.misuseOffset(), efc_.misuse());
       break;
@@ -556,7 +562,9 @@ MachineStats Machine::stats() const {
 
 RamUse Machine::ramUse() const {
   RamUse r;
-  const uint32_t ebss = image_.firstSymbol({"_ebss", "__bss_end__", "_end", "end"}).value_or(kRamBase);
+  const std::optional<uint32_t> end = image_.firstSymbol({"_ebss", "__bss_end__", "_end", "end"});
+  r.measured = end.has_value();
+  const uint32_t ebss = end.value_or(kRamBase);
   const uint32_t lo = std::clamp(ebss, kRamBase, kRamBase + kRamSize);
   r.staticBytes = lo - kRamBase;
   uint32_t lowest = kRamBase + kRamSize;

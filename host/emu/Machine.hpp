@@ -42,6 +42,7 @@ struct MachineOptions {
 struct RamUse {
   uint32_t staticBytes = 0;  // RAM base .. end of .bss (vectors, .data, .bss)
   uint32_t stackBytes = 0;   // deepest stack use found by painting (RAM top down)
+  bool measured = false;     // the image names the end of .bss (else both figures mean nothing)
   uint32_t total() const { return staticBytes + stackBytes; }
 };
 
@@ -85,6 +86,9 @@ class Machine : public GuestMemory {
   void setExternalWait(std::function<bool()> wait) { externalWait_ = std::move(wait); }
 
   const EmuFault& fault() const { return fault_; }
+  // A peripheral model saw something the hardware cannot do (e.g. the LCD an unknown command): the run
+  // stops with a Model fault at the next block boundary (the first fault is kept).
+  void reportModelFault(const std::string& what);
   MachineStats stats() const;
   RamUse ramUse() const;
   bool idle() const { return idle_; }

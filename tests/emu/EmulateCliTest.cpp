@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 namespace nxtmap::cli::test {
 namespace {
 
@@ -31,6 +33,11 @@ TEST(EmulateCli, RejectsBadOptionsWithOneLine) {
   expectUsageError(
       runCli("emulate " + kRoom + " --start 1,20 --firmware " + probe("boot") + " --lcd /nonexistent/dir/x.png"),
       "does not exist");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --firmware " + probe("boot") + " --lcd-every 1"),
+                   "--lcd-every needs --lcd FILE.png");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --firmware " + probe("boot") +
+                          " --lcd x.png --seconds 2 --lcd-every 3"),
+                   "--lcd-every must lie in [0.001, --seconds]");
 }
 
 TEST(EmulateCli, FirmwareFaultEndsWithTheReportAndExitCode1) {
@@ -41,18 +48,34 @@ TEST(EmulateCli, FirmwareFaultEndsWithTheReportAndExitCode1) {
   EXPECT_NE(r.out.find("end              FAULT"), std::string::npos) << r.out;
 }
 
+// A firmware without our symbols (LEGO's raw image) runs, and its RAM high-water is "not measured", not a number.
+TEST(EmulateCli, ForeignFirmwareSaysItsRamIsNotMeasured) {
+  const std::string lego = "/usr/share/nxt-firmware/nxt_firmware.bin";
+  if (!std::filesystem::exists(lego)) GTEST_SKIP() << lego << " is absent (Debian package nxt-firmware, make deps)";
+  const RunOutput r = runCli("emulate " + kRoom + " --start 1,20 --seconds 0.3 --firmware " + lego);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("has no nxtmap symbols"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("RAM high-water   not measured"), std::string::npos) << r.out;
+}
+
 #ifdef NXTMAP_EMU_FIRMWARE_DIR
 TEST(EmulateCli, RealFirmwareRunPrintsMeasurementsAndLcd) {
   TempDir dir("emucli");
   const std::string png = dir.path("lcd.png");
-  const RunOutput r =
-      runCli("emulate " + kRoom + " --start 1,20 --seconds 2 --firmware " +
-             shellQuote(std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap.elf") + " --lcd " + shellQuote(png));
+  const RunOutput r = runCli("emulate " + kRoom + " --start 1,20 --seconds 2 --firmware " +
+                             shellQuote(std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap.elf") + " --lcd " +
+                             shellQuote(png) + " --lcd-every 0.5");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("end              time limit reached"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("RAM high-water"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("RAM high-water   "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("not measured"), std::string::npos) << r.out;  // our ELF names the end of .bss
   EXPECT_NE(r.out.find("x real time"), std::string::npos) << r.out;
   EXPECT_EQ(readFile(png).substr(1, 3), "PNG");
+  // --lcd-every 0.5 over 2 s: a picture at 0.5, 1.0, 1.5 and 2.0 s, numbered beside the last screen
+  for (const char* n : {"lcd-0001.png", "lcd-0002.png", "lcd-0003.png", "lcd-0004.png"})
+    EXPECT_EQ(readFile(dir.path(n)).substr(1, 3), "PNG") << n;
+  EXPECT_FALSE(std::filesystem::exists(dir.path("lcd-0005.png")));
+  EXPECT_NE(r.out.find("wrote 4 pictures"), std::string::npos) << r.out;
 }
 
 // The firmware drives the brick robot (20 cm cells, 16 x 18 cm body) through a hand-made room turned 10 degrees,

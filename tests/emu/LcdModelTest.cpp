@@ -89,6 +89,18 @@ TEST(LcdModel, TheLcdProbeSetsItUpWithoutAFault) {
   EXPECT_TRUE(r.brick->lcd().displayOn());
 }
 
+// A byte the UC1601 does not know stops the run with a fault that names it (the probe has more to do after it).
+TEST(LcdModel, AnUnknownCommandStopsTheMachine) {
+  ProbeRun r("lcdfault", BrickConfig{}, 1.0);
+  ASSERT_FALSE(r.ok);
+  const EmuFault& f = r.brick->machine().fault();
+  EXPECT_EQ(f.kind, FaultKind::Model);
+  EXPECT_EQ(f.what, "LCD: unknown UC1601 command 0x3A");
+  EXPECT_EQ(r.brick->lcd().fault(), "unknown UC1601 command 0x3A");
+  EXPECT_FALSE(r.port().exitCode.has_value());  // main never returned
+  EXPECT_LT(r.brick->seconds(), 0.5);
+}
+
 #ifdef NXTMAP_EMU_FIRMWARE_DIR
 // Our firmware sends its settings before every refresh: many times over 3 s, never an unknown byte.
 TEST(LcdModel, OurFirmwareResendsItsSettingsAndNeverFaultsTheController) {

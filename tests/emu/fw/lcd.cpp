@@ -1,5 +1,6 @@
 // Probe: the LCD on SPI. Init as NxOS/LEGO do, then page 0 columns 0..9 all dark (PDC), and a single pixel
-// at (50, 20) (page 2, bit 4) written byte by byte through TDR.
+// at (50, 20) (page 2, bit 4) written byte by byte through TDR. Built a second time as lcdfault.elf, which
+// sends the byte 0x3A (no UC1601 command) after the init.
 #include "Probe.hpp"
 using namespace probe;
 
@@ -34,6 +35,11 @@ int main() {
   REG(kCsr0) = (24u << 8) | 1u;
   const uint8_t init[] = {0xE2, 0xEB, 0x2F, 0xA4, 0xA6, 0x40, 0x81, 0x5A, 0xC4, 0x27, 0x29, 0xA0, 0x89, 0x23, 0xAF};
   for (uint8_t c : init) send(false, c);
+#ifdef NXTMAP_PROBE_UNKNOWN_COMMAND
+  send(false, 0x3A);  // not a UC1601 command: the strict LCD stops the run here
+  while (!(REG(kSr) & (1u << 9))) {}
+  for (volatile int i = 0; i < 20000; ++i) {}  // time for the run to stop before the rest
+#endif
   for (int i = 0; i < 100; ++i) g_page[i] = i < 10 ? 0xFF : 0x00;
   send(false, 0x00);
   send(false, 0x10);
