@@ -93,6 +93,58 @@ TEST_F(BrickLinkTest, AnswersLegoCommandsBeforeAnyHelloButNothingElse) {
   EXPECT_TRUE(commands().empty());
 }
 
+// LEGO commands between two of ours, some unknown, some wanting no reply: ours are all taken (the
+// commands run once, in order) and every LEGO request that wants a reply gets one, in order.
+TEST_F(BrickLinkTest, LegoCommandsBetweenOursAreAnsweredInOrderAndOursAreUntouched) {
+  hello(1);
+  collect(0);
+  PathMsg m;
+  m.pathId = 7;
+  m.count = 1;
+  Payload path;
+  encodePath(m, path);
+  const Bytes stream[] = {
+      {2, 0, 0x00, 0x0B},                                  // GET_BATTERY_LEVEL
+      test::pcPacket(Op::Stop, 1, received),               // ours
+      {6, 0, 0x80, 0x03, 0x2C, 0x01, 0x32, 0x00},          // PLAY_TONE(300, 50), no reply
+      {5, 0, 0x80, 0x05, 0x00, 0x0B, 0x00},                // SET_INPUT_MODE, no reply, unknown
+      {7, 0, 0x00, 0x09, 12, 3, 'h', 'i', 0},              // MESSAGE_WRITE(12, "hi")
+      {2, 0, 0x00, 0x11},                                  // GET_CURRENT_PROGRAM_NAME, unknown
+      test::pcPacket(Op::FollowPath, 2, received, &path),  // ours
+      {5, 0, 0x00, 0x13, 12, 0, 1},                        // MESSAGE_READ(12)
+  };
+  for (const Bytes& b : stream) feed(b);
+  const std::vector<Command> run = commands();
+  ASSERT_EQ(run.size(), 2u);
+  EXPECT_EQ(run[0].kind, CommandKind::Stop);
+  EXPECT_EQ(run[1].kind, CommandKind::FollowPath);
+  const Received r = collect(10);
+  std::vector<int> replies;  // opcode * 256 + status
+  for (const Telegram& t : r.lego) replies.push_back(t.opcode() * 256 + t.bytes[2]);
+  EXPECT_EQ(replies, (std::vector<int>{0x0B00, 0x0900, 0x11BE, 0x1300}));
+  EXPECT_EQ(r.lego.back().bytes[5], 'h');
+  EXPECT_EQ(link.counters().bytesSkipped, 0u);
+}
+
+// While the wheels turn the firmware asks for the cheap frames only: the map's changes wait.
+TEST_F(BrickLinkTest, NoMapScanSendsStatusAndRepliesButNoDelta) {
+  hello(1);
+  collect(0);
+  ASSERT_TRUE(o.grid.set(Cell{5, 5}, CellState::Occupied));
+  feed({2, 0, 0x00, 0x0D});
+  Frame f;
+  std::vector<uint8_t> types;
+  size_t deltas = 0;
+  while (link.transmit(600, report, f, BrickLink::Scope::NoMapScan)) {
+    types.push_back(f.bytes[2]);
+    deltas += f.bytes[2] == kTypeNxtmap && f.bytes[3] == static_cast<uint8_t>(Op::MapDelta) ? 1 : 0;
+  }
+  ASSERT_FALSE(types.empty());
+  EXPECT_EQ(types[0], kTypeReply);
+  EXPECT_EQ(deltas, 0u);
+  EXPECT_EQ(collect(700).count(Op::MapDelta), 1u);
+}
+
 TEST_F(BrickLinkTest, HelloOpensASessionAndTheWholeStateFollows) {
   ASSERT_TRUE(o.grid.set(Cell{0, 0}, CellState::Free));
   ASSERT_TRUE(o.grid.set(Cell{0, 1}, CellState::Occupied));
