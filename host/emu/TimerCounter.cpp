@@ -53,9 +53,13 @@ uint32_t TimerCounter::status(const Channel& c) const {
          (c.running ? kClksta : 0u) | (c.tioa ? kMtioa : 0u);
 }
 
+// Sampled by the AIC at every event: only the enabled sources are computed.
 bool TimerCounter::irqLine(int i) const {
   const Channel& c = ch_[static_cast<size_t>(i)];
-  return (status(c) & c.imr & 0xFF) != 0;
+  if ((c.imr & 0xFF) == 0) return false;
+  if (c.latched & c.imr) return true;
+  if ((c.imr & kCpcs) && compares(c) > c.comparesRead) return true;
+  return (c.imr & kCovfs) && overflows(c) > c.overflowsRead;
 }
 
 uint64_t TimerCounter::nextEventAt() const {
