@@ -62,6 +62,9 @@ bool MapDeltaReader::validate() {
     DeltaRun run;
     if (!r.part(run)) return false;
     if (run.index >= w * h || (run.index % w) + run.count > w) return false;  // a run stays in its row
+    for (uint8_t k = 0; k < run.count; ++k) {  // and in the window (a narrower one names fewer cells)
+      if (!header_.window.contains(cellOfIndex(static_cast<uint16_t>(run.index + k)))) return false;
+    }
   }
   if (!r.atEnd()) return false;
   valid_ = true;

@@ -130,12 +130,12 @@ TEST(MessageBytes, DeltaHeaderAndRunsKeepTheirBytes) {
   MapDeltaWriter w(p, h);
   EXPECT_EQ(Bytes(p.bytes, p.bytes + p.size),
             (Bytes{0x03, 0x02, 0x56, 0xFC, 0xFF, 0xFE, 0xFF, 0x1E, 0x00, 0x14, 0x00, 0x00}));
-  ASSERT_TRUE(w.addRun(100, 6, [&](uint8_t k) { return s[k]; }));
+  ASSERT_TRUE(w.addRun(66, 6, [&](uint8_t k) { return s[k]; }));  // cells (2..7, 1) of the window
   const uint8_t packed[2] = {0x19, 0x02};
-  ASSERT_TRUE(w.addPackedRun(0x0701, 5, packed));
+  ASSERT_TRUE(w.addPackedRun(0x0401, 5, packed));  // cells (1..5, 16)
   EXPECT_EQ(Bytes(p.bytes, p.bytes + p.size),
             (Bytes{0x03, 0x02, 0x56, 0xFC, 0xFF, 0xFE, 0xFF, 0x1E, 0x00, 0x14, 0x00,
-                   0x02, 0x64, 0x00, 0x06, 0x89, 0x05, 0x01, 0x07, 0x05, 0x19, 0x02}));
+                   0x02, 0x42, 0x00, 0x06, 0x89, 0x05, 0x01, 0x04, 0x05, 0x19, 0x02}));
   MapDeltaReader r(p.bytes, p.size);
   EXPECT_TRUE(r.validate());
   EXPECT_EQ(r.header().runCount, 2);

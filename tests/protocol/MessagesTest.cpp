@@ -214,7 +214,8 @@ TEST(Messages, DeltasNameCellsByTorusIndexAndUnwrapThroughTheWindow) {
       {"state 3", kDeltaHeaderSize + 3, 0xC0},
       {"run count too high", kDeltaHeaderSize - 1, 3},
       {"capacity 2^8", 2, 0x68},
-      {"window wider than the capacity", 7, 60},  // maxX = 60: 71 wide
+      {"window wider than the capacity", 7, 60},                          // maxX = 60: 71 wide
+      {"a cell outside the window", kDeltaHeaderSize + runBytes(5), 30},  // torus x 30 is x 30 > maxX 20
   };
   for (const Bad& b : bads) {
     Bytes x(p.bytes, p.bytes + p.size);
