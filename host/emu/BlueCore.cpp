@@ -32,8 +32,10 @@ void BlueCore::fromArm(uint8_t b) {
   if (!running_) return;
   if (dataMode()) {  // stream data: to the PC while a stream is open, else lost with the link
     if (link_ && connected_ && streamOpen_) {
-      link_->send(&b, 1);
-      ++toPc_;
+      burst_.push_back(b);
+      burstEndsAt_ = clock_.now + kBurstGapCycles;
+      if (burst_.size() >= kMaxBurstBytes) flushBurst();
+      clock_.poke();
     }
     return;
   }
@@ -81,6 +83,7 @@ void BlueCore::command(const std::vector<uint8_t>& f) {
       if (connected_) streamOpen_ = true;
       break;  // OPEN_STREAM: CMD line high
     case 0x08:
+      flushBurst();  // the stream's last bytes leave before the link closes
       connected_ = requested_ = streamOpen_ = false;
       reply(0x1A, {1, 1});
       break;                                                                   // CLOSE_CONNECTION
@@ -102,6 +105,17 @@ void BlueCore::command(const std::vector<uint8_t>& f) {
   }
 }
 
+void BlueCore::flushBurst() {
+  burstEndsAt_ = kNever;
+  if (burst_.empty()) return;
+  if (link_ && connected_ && streamOpen_) {
+    link_->send(burst_.data(), burst_.size());
+    toPc_ += burst_.size();
+    ++bursts_;
+  }
+  burst_.clear();
+}
+
 bool BlueCore::hasByteForArm() const {
   if (!running_ || rtsHigh_) return false;
   return dataMode() ? streamOpen_ && !pcIn_.empty() : !toArm_.empty();
@@ -120,7 +134,7 @@ uint64_t BlueCore::nextEventAt() const {
   uint64_t t = kNever;
   if (bootAt_ != kNever) t = bootAt_;
   if (link_ && running_) t = std::min(t, nextPoll_);
-  return t;
+  return std::min(t, burstEndsAt_);
 }
 
 void BlueCore::pollLink() {
@@ -132,9 +146,11 @@ void BlueCore::pollLink() {
     std::vector<uint8_t> p = kBdAddr;
     reply(0x16, p);  // REQUEST_CONNECTION
   }
-  if (!pc && pcWasConnected_) {  // the PC hung up: its undelivered bytes go with the link
+  if (!pc && pcWasConnected_) {  // the PC hung up: its undelivered bytes go with the link, both ways
     connected_ = requested_ = streamOpen_ = announced_ = false;
     pcIn_.clear();
+    burst_.clear();
+    burstEndsAt_ = kNever;
     reply(0x1A, {1, 1});  // CLOSE_CONNECTION_RESULT, delivered once the ARM is in command mode
   }
   pcWasConnected_ = pc;
@@ -153,6 +169,8 @@ void BlueCore::advanceTo(uint64_t now) {
     toArm_.clear();
     frame_.clear();
     pcIn_.clear();
+    burst_.clear();
+    burstEndsAt_ = kNever;
     portOpen_ = requested_ = connected_ = streamOpen_ = false;
   }
   if (reset && !running_ && bootAt_ == kNever) bootAt_ = now + kBootCycles;
@@ -162,6 +180,7 @@ void BlueCore::advanceTo(uint64_t now) {
     nextPoll_ = now;
     reply(0x14, {});  // RESET_INDICATION
   }
+  if (now >= burstEndsAt_) flushBurst();
   if (running_ && link_ && now >= nextPoll_) {
     pollLink();
     nextPoll_ = now + kPollCycles;

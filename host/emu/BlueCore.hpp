@@ -12,6 +12,10 @@
 // Flow control: no byte is started towards the ARM while the ARM's RTS (the module's CTS) is high.
 // Input bound: at most kPcInputBytes from the PC wait here (the module's buffer plus the radio's
 // window); beyond that the transport is not read, so its own flow control holds the PC back.
+// Output in bursts: the ARM's stream bytes go to the PC as one radio packet each time its UART falls
+// quiet for kBurstGapCycles (the end of a PDC transmit buffer: the USART shifts a buffer's bytes back to
+// back) or kMaxBurstBytes have gathered, never byte by byte, so a PC that reads a telegram's length and
+// then its body in one read gets it whole.
 #pragma once
 
 #include "host/emu/IoDevice.hpp"
@@ -54,11 +58,16 @@ class BlueCore : public SerialPeer, public IoDevice {
   uint64_t bytesFromPc() const { return fromPc_; }
   static constexpr size_t kPcInputBytes = 4096;       // most bytes from the PC held here
   size_t pcBuffered() const { return pcIn_.size(); }  // 0..kPcInputBytes
+  // A quiet UART for 4 byte times at 460800 baud (87 us) ends a burst; a burst holds at most 1 KiB.
+  static constexpr uint64_t kBurstGapCycles = kMckHz / 1000000 * 87;
+  static constexpr size_t kMaxBurstBytes = 1024;
+  uint64_t burstsToPc() const { return bursts_; }
 
  private:
   void command(const std::vector<uint8_t>& f);  // [cmd][payload...] of a checked frame
   void reply(uint8_t cmd, const std::vector<uint8_t>& payload);
   void pollLink();
+  void flushBurst();                                        // hands the gathered stream bytes to the PC in one send
   bool dataMode() const { return pio_.level(kArmCmdPin); }  // ARM7_CMD high
 
   Clock& clock_;
@@ -69,12 +78,14 @@ class BlueCore : public SerialPeer, public IoDevice {
   uint64_t bootAt_ = kNever;    // RESET_INDICATION due
   std::vector<uint8_t> frame_;  // command-mode bytes from the ARM being assembled
   std::deque<uint8_t> toArm_;
-  std::deque<uint8_t> pcIn_;  // stream bytes waiting for the ARM, at most kPcInputBytes
+  std::deque<uint8_t> pcIn_;       // stream bytes waiting for the ARM, at most kPcInputBytes
+  std::vector<uint8_t> burst_;     // stream bytes from the ARM not yet sent, at most kMaxBurstBytes
+  uint64_t burstEndsAt_ = kNever;  // when the UART has been quiet long enough to send burst_
   bool portOpen_ = false, requested_ = false, connected_ = false, streamOpen_ = false;
   bool pcWasConnected_ = false;
   bool announced_ = false;  // REQUEST_CONNECTION sent for the current PC connection
   uint64_t nextPoll_ = 0;
-  uint64_t commands_ = 0, bad_ = 0, toPc_ = 0, fromPc_ = 0;
+  uint64_t commands_ = 0, bad_ = 0, toPc_ = 0, fromPc_ = 0, bursts_ = 0;
   std::vector<uint8_t> unknown_;
 };
 

@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <stdexcept>
 
 namespace nxtmap::emu {
@@ -40,6 +41,7 @@ TcpLink::TcpLink(int port) : port_(port) {
 }
 
 TcpLink::~TcpLink() {
+  report_ = nullptr;  // closing is not a PC leaving
   drop();
   if (listen_ >= 0) ::close(listen_);
 }
@@ -48,6 +50,7 @@ void TcpLink::drop() {
   if (client_ >= 0) {
     ::close(client_);
     hungUp_ = true;
+    if (report_) report_("link: the PC on port " + std::to_string(port_) + " left; waiting for the next");
   }
   client_ = -1;
 }
@@ -57,7 +60,10 @@ bool TcpLink::connected() {
     hungUp_ = false;
     return false;
   }
-  if (client_ < 0) client_ = ::accept4(listen_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+  if (client_ < 0) {
+    client_ = ::accept4(listen_, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+    if (client_ >= 0 && report_) report_("link: a PC connected on port " + std::to_string(port_));
+  }
   return client_ >= 0;
 }
 
@@ -107,35 +113,67 @@ PtyLink::PtyLink() {
   const char* n = ::ptsname(master_);
   if (!n) throw std::runtime_error("ptsname failed");
   name_ = n;
-  slave_ = ::open(n, O_RDWR | O_NOCTTY | O_CLOEXEC);  // held open: the master then never reads EIO
-  if (slave_ >= 0) {
-    termios t{};
-    if (::tcgetattr(slave_, &t) == 0) {
-      ::cfmakeraw(&t);
-      ::tcsetattr(slave_, TCSANOW, &t);
-    }
+  // Raw mode through a short-lived slave descriptor: the terminal keeps it for every later opener.
+  const int slave = ::open(n, O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (slave < 0) throw std::runtime_error(name_ + ": " + std::strerror(errno));
+  termios t{};
+  if (::tcgetattr(slave, &t) == 0) {
+    ::cfmakeraw(&t);
+    ::tcsetattr(slave, TCSANOW, &t);
   }
+  ::close(slave);
 }
 
 PtyLink::~PtyLink() {
-  if (slave_ >= 0) ::close(slave_);
   if (master_ >= 0) ::close(master_);
 }
 
+bool PtyLink::slaveOpen() const {
+  pollfd p{master_, POLLIN, 0};
+  return ::poll(&p, 1, 0) >= 0 && (p.revents & POLLHUP) == 0;
+}
+
+void PtyLink::flushUnread() const {
+  const int slave = ::open(name_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (slave >= 0) {
+    ::tcflush(slave, TCIOFLUSH);  // the brick's bytes the PC never read, and the PC's not yet taken
+    ::close(slave);
+  }
+  uint8_t buf[512];
+  while (::read(master_, buf, sizeof buf) > 0) {}
+}
+
+bool PtyLink::connected() {
+  const bool open = slaveOpen();
+  if (open && !open_) {
+    ++sessions_;
+    if (report_) report_("link: a PC opened " + name_ + " (session " + std::to_string(sessions_) + ")");
+  }
+  if (!open && open_) {
+    flushUnread();
+    if (report_) report_("link: the PC closed " + name_ + "; waiting for the next one to open it");
+  }
+  open_ = open;
+  return open;
+}
+
 void PtyLink::send(const uint8_t* d, size_t n) {
-  while (n > 0) {
+  int stalledMs = 0;
+  while (open_ && n > 0) {  // with no PC the bytes are lost with the link
     const ssize_t w = ::write(master_, d, n);
     if (w > 0) {
       d += w;
       n -= static_cast<size_t>(w);
+      stalledMs = 0;
       continue;
     }
-    if (w < 0 && (errno == EAGAIN || errno == EINTR)) {
+    if (w < 0 && (errno == EAGAIN || errno == EINTR) && stalledMs < kStallLimitMs) {
       pollfd p{master_, POLLOUT, 0};
-      if (::poll(&p, 1, 100) <= 0) return;  // nobody reads: drop the rest, as a radio would
+      if (::poll(&p, 1, 100) > 0 && (p.revents & POLLHUP) != 0) return;  // the PC left
+      stalledMs += 100;
       continue;
     }
-    return;
+    return;  // a PC that reads nothing: the rest is dropped, as a radio would
   }
 }
 
@@ -143,20 +181,26 @@ void PtyLink::receive(std::deque<uint8_t>& out, size_t maxBytes) {
   uint8_t buf[512];
   while (maxBytes > 0) {
     const ssize_t r = ::read(master_, buf, std::min(sizeof buf, maxBytes));
-    if (r <= 0) break;
+    if (r <= 0) break;  // nothing yet, or EIO: no PC holds the slave
     out.insert(out.end(), buf, buf + r);
     maxBytes -= static_cast<size_t>(r);
   }
 }
 
 bool PtyLink::waitForActivity(int ms) {
+  if (!slaveOpen()) {  // the master reads POLLHUP at once: wait a little for a PC to open the slave
+    ::usleep(static_cast<useconds_t>(std::min(ms, 20)) * 1000u);
+    return false;
+  }
   pollfd p{master_, POLLIN, 0};
   return ::poll(&p, 1, ms) > 0;
 }
 
 std::unique_ptr<LinkEndpoint> openLink(const std::string& spec, std::string& description) {
+  const LinkReporter toStderr = [](const std::string& line) { std::cerr << line << "\n" << std::flush; };
   if (spec == "pty") {
     auto l = std::make_unique<PtyLink>();
+    l->setReporter(toStderr);
     description = "pty " + l->slaveName();
     return l;
   }
@@ -169,6 +213,7 @@ std::unique_ptr<LinkEndpoint> openLink(const std::string& spec, std::string& des
   if (p.empty() || *end != '\0' || port < 1 || port > 65535)
     throw std::invalid_argument("--listen: port must be 1..65535, not '" + p + "'");
   auto l = std::make_unique<TcpLink>(static_cast<int>(port));
+  l->setReporter(toStderr);
   description = "tcp 127.0.0.1:" + std::to_string(port);
   return l;
 }

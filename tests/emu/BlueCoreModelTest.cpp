@@ -15,11 +15,20 @@ namespace {
 
 constexpr uint32_t kReset = 1u << BlueCore::kResetPin, kArmCmd = 1u << BlueCore::kArmCmdPin;
 
+// A PC side that also records how many bytes each send() carried (one radio packet each).
+struct PacketLink : MemoryLink {
+  std::vector<size_t> packets;
+  void send(const uint8_t* d, size_t n) override {
+    packets.push_back(n);
+    MemoryLink::send(d, n);
+  }
+};
+
 // The ARM's side of the module: PIO pins, UART bytes, and time in milliseconds.
 struct ArmSide {
   Clock clock;
   Pioa pio{clock};
-  MemoryLink pc;
+  PacketLink pc;
   BlueCore bc4{clock, pio, &pc};
 
   ArmSide() {
@@ -36,6 +45,18 @@ struct ArmSide {
     for (uint32_t i = 0; i < ms; ++i) {
       clock.now += cyclesFromMs(1);
       bc4.advanceTo(clock.now);
+    }
+  }
+  // Stream bytes as the USART shifts them out: one every byteCycles, the module's events on time.
+  void sendAtRate(size_t n, uint64_t byteCycles) {
+    for (size_t i = 0; i < n; ++i) {
+      const uint64_t at = clock.now + byteCycles;
+      while (bc4.nextEventAt() <= at) {
+        clock.now = bc4.nextEventAt();
+        bc4.advanceTo(clock.now);
+      }
+      clock.now = at;
+      bc4.fromArm(static_cast<uint8_t>(i));
     }
   }
   void armCmd(bool high) { pio.write(high ? 0x30 : 0x34, kArmCmd); }
@@ -132,6 +153,43 @@ TEST(BlueCoreModel, ThePcsInputIsBoundedAndTheRestWaitsInTheTransport) {
   }
   delivered += arm.received().size();
   EXPECT_EQ(delivered, 100000u);
+}
+
+// The ARM's stream bytes reach the PC in bursts, one per transmit buffer (a quiet UART ends it), never one
+// send per byte: rows of buffers (sizes, the pause after each) and the packets the PC gets.
+TEST(BlueCoreModel, StreamBytesReachThePcInOneBurstPerTransmitBuffer) {
+  constexpr uint64_t kByte = 1043;  // 10 bits at 460800 baud, in MCK cycles
+  struct Row {
+    std::vector<size_t> buffers;
+    uint64_t pauseCycles;
+    std::vector<size_t> packets;
+  };
+  const Row rows[] = {
+      {{7}, cyclesFromMs(1), {7}},                                // one reply telegram
+      {{7, 40, 3}, cyclesFromMs(1), {7, 40, 3}},                  // three buffers, the main loop between them
+      {{7, 40}, 2 * kByte, {47}},                                 // the next buffer started within the gap
+      {{3000}, cyclesFromMs(1), {1024, 1024, 952}},               // a burst holds at most kMaxBurstBytes
+      {{1, 1, 1}, BlueCore::kBurstGapCycles + kByte, {1, 1, 1}},  // single bytes a gap apart
+  };
+  for (const Row& r : rows) {
+    ArmSide arm;
+    arm.toStream();
+    for (size_t n : r.buffers) {
+      arm.sendAtRate(n, kByte);
+      const uint64_t until = arm.clock.now + r.pauseCycles;
+      while (arm.bc4.nextEventAt() <= until) {
+        arm.clock.now = arm.bc4.nextEventAt();
+        arm.bc4.advanceTo(arm.clock.now);
+      }
+      arm.clock.now = until;
+    }
+    arm.advanceMs(1);
+    EXPECT_EQ(arm.pc.packets, r.packets) << "first buffer " << r.buffers[0] << " bytes";
+    size_t total = 0;
+    for (size_t n : r.buffers) total += n;
+    EXPECT_EQ(arm.pc.fromBrick.size(), total);
+    EXPECT_EQ(arm.bc4.bytesToPc(), total);
+  }
 }
 
 }  // namespace

@@ -8,11 +8,13 @@
 #include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
+#include <termios.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <deque>
 #include <string>
+#include <vector>
 
 namespace nxtmap::emu::test {
 namespace {
@@ -125,15 +127,52 @@ TEST(TcpLink, RejectsAPortInUse) {
 TEST(PtyLink, OpensARawPseudoTerminal) {
   PtyLink pty;
   EXPECT_EQ(pty.slaveName().rfind("/dev/pts/", 0), 0u);
-  EXPECT_TRUE(pty.connected());
+  EXPECT_FALSE(pty.connected()) << "no PC has opened the slave yet";
   const uint8_t hello[] = {1, 2, 3};
   pty.send(hello, 3);  // nobody reads: must not block or fail
+  const int pc = ::open(pty.slaveName().c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
+  ASSERT_GE(pc, 0);
+  termios t{};
+  ASSERT_EQ(::tcgetattr(pc, &t), 0);
+  EXPECT_EQ(t.c_lflag & (ICANON | ECHO), 0u) << "raw mode for every opener";
+  ::close(pc);
+}
+
+// The PC side of a pty: a tool that opens the slave connects, one that closes it leaves (reported once), and
+// the next opener is a new session that never sees the bytes the first one left unread.
+TEST(PtyLink, APcThatLeavesIsNoticedAndTheNextOneIsAccepted) {
+  PtyLink pty;
+  std::vector<std::string> lines;
+  pty.setReporter([&](const std::string& l) { lines.push_back(l); });
+  const int first = ::open(pty.slaveName().c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
+  ASSERT_GE(first, 0);
+  EXPECT_TRUE(pty.connected());
+  const uint8_t unread[] = {'o', 'l', 'd'};
+  pty.send(unread, 3);
+  ::close(first);
+  EXPECT_FALSE(pty.connected()) << "the PC's leaving was not seen";
+  EXPECT_FALSE(pty.connected());
+  const int second = ::open(pty.slaveName().c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
+  ASSERT_GE(second, 0);
+  EXPECT_TRUE(pty.connected());
+  const uint8_t fresh[] = {'n', 'e', 'w'};
+  pty.send(fresh, 3);
+  char buf[16] = {};
+  pollfd p{second, POLLIN, 0};
+  ASSERT_GT(::poll(&p, 1, 1000), 0);
+  const ssize_t n = ::read(second, buf, sizeof buf);
+  EXPECT_EQ(std::string(buf, n > 0 ? static_cast<size_t>(n) : 0), "new");
+  EXPECT_EQ(pty.sessions(), 2);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_NE(lines[1].find("closed"), std::string::npos) << lines[1];
+  ::close(second);
 }
 
 TEST(PtyLink, ReceiveTakesAtMostWhatItIsAskedFor) {
   PtyLink pty;
   const int pc = ::open(pty.slaveName().c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
   ASSERT_GE(pc, 0);
+  ASSERT_TRUE(pty.connected());
   const std::string bytes(1500, 'y');
   ASSERT_EQ(::write(pc, bytes.data(), bytes.size()), 1500);
   std::deque<uint8_t> in;
