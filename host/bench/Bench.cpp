@@ -4,6 +4,7 @@
 //   nxtmap-bench plan             the path-search section alone (host/bench/PlanBench.cpp)
 //   nxtmap-bench house            the house section alone (host/bench/HouseBench.cpp)
 //   nxtmap-bench realism          the realism section alone (host/bench/RealismBench.cpp)
+//   nxtmap-bench lego             the LEGO round trip alone (host/bench/LegoRoundTripBench.cpp)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -14,6 +15,7 @@
 
 #include "host/bench/LinkBench.hpp"
 #include "host/bench/EmuBench.hpp"
+#include "host/bench/LegoRoundTripBench.hpp"
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
 #include "host/cli/ExperimentRunner.hpp"
@@ -205,7 +207,8 @@ int run(int argc, char** argv) {
   }
   table.print();
   bench::printLinkBench(dir + "/occupancy-120.map", 1, 20);
-  nxtmap::bench::runEmuBench(dir);  // the emulated brick's budgets on the real firmware
+  nxtmap::bench::runEmuBench(dir);            // the emulated brick's budgets on the real firmware
+  nxtmap::bench::runLegoRoundTripBench(dir);  // a PC tool's wait for the brick, idle and driving
   const int rc = nxtmap::bench::runPlanBench();
   if (rc != 0) return rc;
   const int house = nxtmap::bench::runHouseBench();
@@ -218,7 +221,8 @@ int main(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "plan") return nxtmap::bench::runPlanBench();        // that section alone
     if (argc > 1 && std::string(argv[1]) == "house") return nxtmap::bench::runHouseBench();      // that section alone
     if (argc > 1 && std::string(argv[1]) == "realism") return nxtmap::bench::runRealismBench();  // that section alone
-    if (argc > 1 && std::string(argv[1]) == "link") {                                            // that section alone
+    if (argc > 1 && std::string(argv[1]) == "lego") return nxtmap::bench::runLegoRoundTripBench(scenarioDir(1, argv));
+    if (argc > 1 && std::string(argv[1]) == "link") {  // that section alone
       nxtmap::bench::printLinkBench(scenarioDir(1, argv) + "/occupancy-120.map", 1, 20);
       return 0;
     }
