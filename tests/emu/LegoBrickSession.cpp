@@ -12,10 +12,33 @@ namespace {
 
 constexpr double kCyclesPerMs = static_cast<double>(kMckHz) / 1000.0;
 
+// The PC's side of the link, counting the radio packets and the telegrams a packet boundary cuts.
+class PacketLink : public MemoryLink {
+ public:
+  size_t packets = 0, cut = 0;
+  void send(const uint8_t* d, size_t n) override {
+    ++packets;
+    for (size_t i = 0; i < n; ++i) {
+      if (header_ < 2) {
+        length_ |= static_cast<size_t>(d[i]) << (8 * header_);
+        if (++header_ == 2) left_ = length_;
+      } else {
+        --left_;
+      }
+      if (header_ == 2 && left_ == 0) header_ = length_ = 0;  // a telegram ends
+    }
+    if (header_ != 0) ++cut;  // the packet ends inside a telegram
+    MemoryLink::send(d, n);
+  }
+
+ private:
+  size_t header_ = 0, length_ = 0, left_ = 0;  // length bytes seen, the telegram's length, its bytes to come
+};
+
 // The PC's side of one session: sends the script's groups, pairs replies with requests in order.
 class Driver {
  public:
-  Driver(const std::vector<Step>& script, const SessionOptions& o, MemoryLink& radio, SessionResult& out)
+  Driver(const std::vector<Step>& script, const SessionOptions& o, PacketLink& radio, SessionResult& out)
       : script_(script), o_(o), radio_(radio), out_(out) {}
 
   // One event boundary; true when the script is over.
@@ -75,7 +98,7 @@ class Driver {
 
   const std::vector<Step>& script_;
   const SessionOptions& o_;
-  MemoryLink& radio_;
+  PacketLink& radio_;
   SessionResult& out_;
   TelegramSplitter splitter_;
   std::deque<size_t> waiting_;  // exchanges waiting for their reply, oldest first
@@ -108,7 +131,7 @@ SessionResult runSession(const std::vector<Step>& script, const SessionOptions& 
     out.error = "world: " + world.error;
     return out;
   }
-  MemoryLink radio;
+  PacketLink radio;
   EmulatedRunOptions run;
   run.brick.startCol = 1;
   run.brick.startRow = 20;
@@ -129,6 +152,8 @@ SessionResult runSession(const std::vector<Step>& script, const SessionOptions& 
   emulated = &e;
   const EmulatedRunReport r = e.run();
   out.endS = r.emulatedSeconds;
+  out.packets = radio.packets;
+  out.cutTelegrams = radio.cut;
   if (r.fault)
     out.error = "fault: " + r.fault.describe();
   else if (!over)

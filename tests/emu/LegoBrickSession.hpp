@@ -44,6 +44,8 @@ struct SessionResult {
   std::vector<Exchange> exchanges;
   std::vector<Bytes> otherTelegrams;  // telegrams from the brick that were not LEGO replies
   size_t extraReplies = 0;            // replies with no request waiting for one
+  size_t packets = 0;                 // radio packets (the BlueCore's bursts) the PC received
+  size_t cutTelegrams = 0;            // telegrams split across two packets (a PC's single read gets part)
   double endS = 0;
 };
 
