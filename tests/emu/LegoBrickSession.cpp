@@ -4,6 +4,7 @@
 #include "host/emu/LinkEndpoint.hpp"
 #include "host/sim/World.hpp"
 
+#include <cstdlib>
 #include <deque>
 #include <filesystem>
 
@@ -109,6 +110,7 @@ class Driver {
 }  // namespace
 
 std::string simFirmwarePath() {
+  if (const char* env = std::getenv("NXTMAP_FIRMWARE")) return env;  // another image (as make bench takes it)
 #ifdef NXTMAP_EMU_FIRMWARE_DIR
   const std::string p = std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap-sim.elf";
   return std::filesystem::exists(p) ? p : "";

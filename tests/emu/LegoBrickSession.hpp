@@ -52,7 +52,7 @@ struct SessionResult {
 // Runs the script against the firmware in the emulated brick (world: occupancy-120, as the link tests use).
 SessionResult runSession(const std::vector<Step>& script, const SessionOptions& options);
 
-// The default image: nxtmap-sim.elf of the test build ("" when the build has none).
+// The default image: $NXTMAP_FIRMWARE if set, else nxtmap-sim.elf of the test build ("" when it has none).
 std::string simFirmwarePath();
 
 }  // namespace nxtmap::emu::lego

@@ -139,7 +139,7 @@ TEST(LegoDirectCommands, SensorsAndMotorsAnswerWithLegosLayout) {
   expectRows(rows);
 }
 
-TEST(LegoDirectCommands, DISABLED_APortOutOfRangeIsRefused) {
+TEST(LegoDirectCommands, APortOutOfRangeIsRefused) {
   skipUnlessRunnable();
   const std::vector<Row> rows = {
       {"input values, port 5", getInputValues(4), false, kOutOfRange, nullptr},
@@ -164,7 +164,7 @@ TEST(LegoDirectCommands, UnservedCommandsGetTheUnknownCommandStatus) {
 }
 
 // Inboxes 0..19 (issue 20); a message to inbox 20 is refused with LEGO's illegal-mailbox status.
-TEST(LegoDirectCommands, DISABLED_InboxesBeyond19AreRefused) {
+TEST(LegoDirectCommands, InboxesBeyond19AreRefused) {
   skipUnlessRunnable();
   const std::vector<Row> rows = {
       {"write inbox 12", messageWrite(12, "x"), false, kSuccess, nullptr},
@@ -238,7 +238,8 @@ TEST(LegoDirectCommands, AThousandMixedRequestsAreEachAnsweredInOrder) {
 // Each reply reaches the PC in one radio packet (a tool that reads the length and then the body in one read
 // gets it whole): no telegram is cut across two of the BlueCore's bursts, also where the firmware's transmit
 // ring wraps (512 bytes: every 30-50 replies). Today a telegram crossing the ring's end goes out as two PDC
-// buffers, a main-loop pass apart; nxt-python's devfile backend then reads half a reply.
+// buffers, a main-loop pass apart; nxt-python's devfile backend then reads half a reply. Passes once the
+// transmit hands the wrapped part over as the PDC's next buffer (TNPR/TNCR), shifted out back to back.
 TEST(LegoDirectCommands, DISABLED_EveryReplyArrivesInOneRadioPacket) {
   skipUnlessRunnable();
   if (simFirmwarePath().empty()) GTEST_SKIP() << "no nxtmap-sim.elf";
