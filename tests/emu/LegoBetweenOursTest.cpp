@@ -112,9 +112,9 @@ void expectOursUnchanged(const std::function<Bytes(uint32_t ms)>& lego) {
   EXPECT_EQ(shared.legoWrong, 0u);
 }
 
-TEST(LegoBetweenOurs, ServedLegoCommandsBetweenOurFramesNeverDelayOrCorruptOurs) {
+TEST(LegoBetweenOursEndToEnd, ServedLegoCommandsBetweenOurFramesNeverDelayOrCorruptOurs) {
 #if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the emulated brick at ASan speed: make test runs this from the Release build";
+  GTEST_SKIP() << "the emulated brick at ASan speed: make test runs this from the Release build (EndToEnd)";
 #endif
   if (simFirmwarePath().empty()) GTEST_SKIP() << "no nxtmap-sim.elf";
   expectOursUnchanged([](uint32_t ms) {
@@ -124,9 +124,9 @@ TEST(LegoBetweenOurs, ServedLegoCommandsBetweenOurFramesNeverDelayOrCorruptOurs)
 }
 
 // The same with commands the brick does not serve mixed in (each must get LEGO's unknown-command status).
-TEST(LegoBetweenOurs, UnservedLegoCommandsBetweenOurFramesNeverDelayOrCorruptOurs) {
+TEST(LegoBetweenOursEndToEnd, UnservedLegoCommandsBetweenOurFramesNeverDelayOrCorruptOurs) {
 #if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the emulated brick at ASan speed: make test runs this from the Release build";
+  GTEST_SKIP() << "the emulated brick at ASan speed: make test runs this from the Release build (EndToEnd)";
 #endif
   if (simFirmwarePath().empty()) GTEST_SKIP() << "no nxtmap-sim.elf";
   expectOursUnchanged([](uint32_t ms) {

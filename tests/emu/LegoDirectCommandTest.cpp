@@ -21,7 +21,7 @@ struct Row {
 
 void skipUnlessRunnable() {
 #if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the emulated brick at ASan speed: make test runs this from the Release build";
+  GTEST_SKIP() << "the emulated brick at ASan speed: make test runs this from the Release build (EndToEnd)";
 #endif
 }
 
@@ -49,7 +49,7 @@ void expectRows(const std::vector<Row>& rows, const SessionOptions& o = {}) {
 }
 
 // What the firmware answers today: the four commands it has served since protocol 1.
-TEST(LegoDirectCommands, TheFourServedCommandsAnswerWithLegosLayoutAndStatus) {
+TEST(LegoDirectCommandsEndToEnd, TheFourServedCommandsAnswerWithLegosLayoutAndStatus) {
   skipUnlessRunnable();
   const std::vector<Row> rows = {
       {"battery", getBatteryLevel(), false, kSuccess,
@@ -82,7 +82,7 @@ TEST(LegoDirectCommands, TheFourServedCommandsAnswerWithLegosLayoutAndStatus) {
 }
 
 // Round trips of the served commands at idle: each within the target of issue 20 (60 ms), no stall.
-TEST(LegoDirectCommands, ServedCommandsAnswerWithin60MsAtIdle) {
+TEST(LegoDirectCommandsEndToEnd, ServedCommandsAnswerWithin60MsAtIdle) {
   skipUnlessRunnable();
   if (simFirmwarePath().empty()) GTEST_SKIP() << "no nxtmap-sim.elf";
   std::vector<Step> script;
@@ -99,7 +99,7 @@ TEST(LegoDirectCommands, ServedCommandsAnswerWithin60MsAtIdle) {
 
 // --- Issue 20's commands (the firmware side is being built; DISABLED_ rows are its open expectations). ---
 
-TEST(LegoDirectCommands, VersionAndDeviceInfoAnswerWithLegosLayout) {
+TEST(LegoDirectCommandsEndToEnd, VersionAndDeviceInfoAnswerWithLegosLayout) {
   skipUnlessRunnable();
   const std::vector<Row> rows = {
       {"firmware version", getFirmwareVersion(), false, kSuccess,
@@ -114,7 +114,7 @@ TEST(LegoDirectCommands, VersionAndDeviceInfoAnswerWithLegosLayout) {
 }
 
 // The module's address (BlueCore GET_LOCAL_ADDR) and the flash the image leaves free: both 0 today.
-TEST(LegoDirectCommands, DISABLED_DeviceInfoReportsAddressAndFreeFlash) {
+TEST(LegoDirectCommandsEndToEnd, DISABLED_DeviceInfoReportsAddressAndFreeFlash) {
   skipUnlessRunnable();
   expectRows({{"device info", getDeviceInfo(), false, kSuccess, [](const Reply& r) {
                  EXPECT_NE(r.u32(18) | r.u16(22), 0u) << "Bluetooth address";
@@ -122,7 +122,7 @@ TEST(LegoDirectCommands, DISABLED_DeviceInfoReportsAddressAndFreeFlash) {
                }}});
 }
 
-TEST(LegoDirectCommands, SensorsAndMotorsAnswerWithLegosLayout) {
+TEST(LegoDirectCommandsEndToEnd, SensorsAndMotorsAnswerWithLegosLayout) {
   skipUnlessRunnable();
   const std::vector<Row> rows = {
       {"input values, port 1 (ultrasonic)", getInputValues(0), false, kSuccess,
@@ -139,7 +139,7 @@ TEST(LegoDirectCommands, SensorsAndMotorsAnswerWithLegosLayout) {
   expectRows(rows);
 }
 
-TEST(LegoDirectCommands, APortOutOfRangeIsRefused) {
+TEST(LegoDirectCommandsEndToEnd, APortOutOfRangeIsRefused) {
   skipUnlessRunnable();
   const std::vector<Row> rows = {
       {"input values, port 5", getInputValues(4), false, kOutOfRange, nullptr},
@@ -149,7 +149,7 @@ TEST(LegoDirectCommands, APortOutOfRangeIsRefused) {
 }
 
 // Every other command that asks for a reply gets LEGO's "unknown command opcode" (0xBE, status only) at once.
-TEST(LegoDirectCommands, UnservedCommandsGetTheUnknownCommandStatus) {
+TEST(LegoDirectCommandsEndToEnd, UnservedCommandsGetTheUnknownCommandStatus) {
   skipUnlessRunnable();
   const std::vector<Row> rows = {
       {"stop program", stopProgram(), false, kUnknownOpcode, nullptr},
@@ -164,7 +164,7 @@ TEST(LegoDirectCommands, UnservedCommandsGetTheUnknownCommandStatus) {
 }
 
 // Inboxes 0..19 (issue 20); a message to inbox 20 is refused with LEGO's illegal-mailbox status.
-TEST(LegoDirectCommands, InboxesBeyond19AreRefused) {
+TEST(LegoDirectCommandsEndToEnd, InboxesBeyond19AreRefused) {
   skipUnlessRunnable();
   const std::vector<Row> rows = {
       {"write inbox 12", messageWrite(12, "x"), false, kSuccess, nullptr},
@@ -177,7 +177,7 @@ TEST(LegoDirectCommands, InboxesBeyond19AreRefused) {
 
 // Commands the brick does not serve and that ask for no reply leave no trace: the next reply is the next
 // request's. PLAY_TONE(300, 50) and SET_INPUT_MODE once desynchronised the decoder (issue 20).
-TEST(LegoDirectCommands, NoReplyCommandsAreConsumedWholeByTheirLength) {
+TEST(LegoDirectCommandsEndToEnd, NoReplyCommandsAreConsumedWholeByTheirLength) {
   skipUnlessRunnable();
   const std::vector<Row> rows = {
       {"tone, no reply", playTone(300, 50, false), false, kSuccess, nullptr},
@@ -192,7 +192,7 @@ TEST(LegoDirectCommands, NoReplyCommandsAreConsumedWholeByTheirLength) {
 
 // 1000 mixed requests, some back to back, some for commands we do not implement: each answered, in order,
 // none later than the time-out.
-TEST(LegoDirectCommands, AThousandMixedRequestsAreEachAnsweredInOrder) {
+TEST(LegoDirectCommandsEndToEnd, AThousandMixedRequestsAreEachAnsweredInOrder) {
   skipUnlessRunnable();
   if (simFirmwarePath().empty()) GTEST_SKIP() << "no nxtmap-sim.elf";
   std::vector<Step> script;
@@ -240,7 +240,7 @@ TEST(LegoDirectCommands, AThousandMixedRequestsAreEachAnsweredInOrder) {
 // ring wraps (512 bytes: every 30-50 replies). Today a telegram crossing the ring's end goes out as two PDC
 // buffers, a main-loop pass apart; nxt-python's devfile backend then reads half a reply. Passes once the
 // transmit hands the wrapped part over as the PDC's next buffer (TNPR/TNCR), shifted out back to back.
-TEST(LegoDirectCommands, DISABLED_EveryReplyArrivesInOneRadioPacket) {
+TEST(LegoDirectCommandsEndToEnd, DISABLED_EveryReplyArrivesInOneRadioPacket) {
   skipUnlessRunnable();
   if (simFirmwarePath().empty()) GTEST_SKIP() << "no nxtmap-sim.elf";
   std::vector<Step> script;
@@ -253,7 +253,7 @@ TEST(LegoDirectCommands, DISABLED_EveryReplyArrivesInOneRadioPacket) {
 }
 
 // While the robot explores, the radio is served within issue 20's target (100 ms).
-TEST(LegoDirectCommands, ServedCommandsAnswerWithin100MsWhileDriving) {
+TEST(LegoDirectCommandsEndToEnd, ServedCommandsAnswerWithin100MsWhileDriving) {
   skipUnlessRunnable();
   if (simFirmwarePath().empty()) GTEST_SKIP() << "no nxtmap-sim.elf";
   std::vector<Step> script;

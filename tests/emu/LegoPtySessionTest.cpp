@@ -71,9 +71,9 @@ ToolRun runTool(const std::string& slave, const std::atomic<bool>& streaming, in
   return t;
 }
 
-TEST(LegoPtySession, ABodyReadInOneGoIsWholeAndTheNextToolIsServed) {
+TEST(LegoPtySessionEndToEnd, ABodyReadInOneGoIsWholeAndTheNextToolIsServed) {
 #if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "the emulated brick at ASan speed: make test runs this from the Release build";
+  GTEST_SKIP() << "the emulated brick at ASan speed: make test runs this from the Release build (EndToEnd)";
 #endif
   const std::string elf = simFirmwarePath();
   if (elf.empty()) GTEST_SKIP() << "no nxtmap-sim.elf";
