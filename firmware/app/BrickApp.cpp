@@ -19,15 +19,17 @@ constexpr DoorwayLimits kDoorways{4, 15, 3, 2};
 
 // Interrupt sources, their AIC priority (0..7, 7 first) and handler. The AVR's TWI moves one byte
 // per interrupt and loses the frame if late; the tick and the tacho edges come next, then the soft
-// I2C clock; the BlueCore's USART has its PDC and waits longest.
+// I2C clock; the BlueCore's USART has its PDC and waits long; the speaker's PDC has a buffer queued
+// ahead and waits longest.
 struct IrqRoute {
   reg::PeripheralId id;
   uint32_t priority;
   IrqHandler handler;
 };
 constexpr IrqRoute kIrqRoutes[] = {
-    {reg::kIdTwi, 7, nxtmapIsrTwi}, {reg::kIdSys, 6, nxtmapIsrSystem},    {reg::kIdPioa, 6, nxtmapIsrPio},
-    {reg::kIdTc0, 5, nxtmapIsrTc0}, {reg::kIdUsart1, 4, nxtmapIsrUsart1},
+    {reg::kIdTwi, 7, nxtmapIsrTwi},       {reg::kIdSys, 6, nxtmapIsrSystem},
+    {reg::kIdPioa, 6, nxtmapIsrPio},      {reg::kIdTc0, 5, nxtmapIsrTc0},
+    {reg::kIdUsart1, 4, nxtmapIsrUsart1}, {static_cast<reg::PeripheralId>(ssc::kId), 3, nxtmapIsrSsc},
 };
 
 // The link as the brick runs it, telling the PC how its sensors read (HelloReply).
@@ -53,7 +55,7 @@ BrickApp::BrickApp()
       link_(stack_.map().grid(), shadow_, linkConfigFor(stack_.config().geometry)),
       runner_(motion_, sonar_, config_.drive, stack_.config().geometry, config_.sensorPorts),
       modes_(stack_, houseBrick(), runner_, link_, safety_, tacho_, avr_.command(), config_),
-      lego_(modes_, runner_),
+      lego_(modes_, runner_, speaker_, reg::kMck),
       radio_(bt_, link_, modes_, avr_),
       status_(frame_, lcd_, modes_, bt_, link_, avr_, safety_) {
   link_.attach(lego_);
@@ -67,6 +69,7 @@ void BrickApp::init() {
   initAvr();
   bt_.init(reg::kMck, 0);
   lcd_.init(reg::kMck, 0);
+  speaker_.init();
   status_.clear();
   installInterrupts();
 }
@@ -117,6 +120,8 @@ void BrickApp::onPio() {
 void BrickApp::onTwi() { avr_.onInterrupt(); }
 
 void BrickApp::onUsart1() { bt_.onInterrupt(); }
+
+void BrickApp::onSsc() { speaker_.onInterrupt(); }
 
 void BrickApp::onTc0() {
   sonarClock_.acknowledge();

@@ -24,6 +24,7 @@
 #include "firmware/drivers/Lcd.hpp"
 #include "firmware/drivers/MotorSafety.hpp"
 #include "firmware/drivers/SensorPortPins.hpp"
+#include "firmware/drivers/Speaker.hpp"
 #include "firmware/drivers/TachoDecoder.hpp"
 
 namespace nxtmap::fw {
@@ -58,6 +59,7 @@ class BrickApp {
   void onTwi();
   void onUsart1();
   void onTc0();
+  void onSsc();
 
   // A failed NXTMAP_CHECK: motors off, reason on the LCD, wait forever (the tick keeps the AVR
   // link alive so the motors stay stopped).
@@ -98,6 +100,7 @@ class BrickApp {
   BlueCore<Mmio> bt_{bus_};
   Screen::Frame frame_ = {};
   Lcd<Mmio> lcd_{bus_, frame_};
+  Speaker<Mmio> speaker_{bus_};
 
   AppExplorerStorage storage_{};
   ExplorerStack stack_;

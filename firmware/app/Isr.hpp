@@ -6,5 +6,6 @@ void nxtmapIsrPio();
 void nxtmapIsrTwi();
 void nxtmapIsrUsart1();
 void nxtmapIsrTc0();
+void nxtmapIsrSsc();
 void nxtmapIsrSpurious();
 }

@@ -36,6 +36,10 @@ NXTMAP_ISR void nxtmapIsrTc0() {
   g_app.onTc0();
   endOfInterrupt();
 }
+NXTMAP_ISR void nxtmapIsrSsc() {
+  g_app.onSsc();
+  endOfInterrupt();
+}
 NXTMAP_ISR void nxtmapIsrSpurious() { endOfInterrupt(); }
 
 int main() {
