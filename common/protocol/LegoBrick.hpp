@@ -54,7 +54,7 @@ class LegoBrick {
   virtual void address(uint8_t (&a)[6]) const {
     for (uint8_t& b : a) b = 0;
   }
-  // Flash left for user files, bytes (the brick has no file system: 0).
+  // Flash left above the firmware image, bytes (LEGO: free user flash; default 0).
   virtual uint32_t freeFlashBytes() const { return 0; }
 
  protected:

@@ -55,8 +55,10 @@ constexpr size_t kLegoOutputStateReplySize = 25;  // [02][06][st][port][power]..
 constexpr size_t kLegoInputValuesReplySize = 16;  // [02][07][st][port][valid]...[calibrated s16]
 constexpr size_t kLegoVersionReplySize = 7;       // [02][88][st][prot minor][prot major][fw minor][fw major]
 constexpr size_t kLegoDeviceInfoReplySize = 33;   // [02][9B][st][name 15][address 7][signal 4][free flash u32]
-// The versions GET_FIRMWARE_VERSION reports: LEGO's protocol 1.124 (the layouts above), and the
-// nxtmap firmware as major 0, minor kProtocolVersion (not LEGO's firmware).
+// The versions GET_FIRMWARE_VERSION reports: LEGO's protocol 1.124 (the layouts above, as LEGO's
+// firmware 1.29 reports), and the nxtmap firmware as major 0, minor kProtocolVersion (major 0: not
+// LEGO's firmware). nxt-python (nxt/brick.py get_firmware_version) reads the four bytes and checks
+// none of them; its nxt-test and nxt_filer only print them.
 constexpr uint8_t kLegoProtocolMajor = 1, kLegoProtocolMinor = 124;
 
 // Output modes and run states (GET/SET_OUTPUT_STATE).
