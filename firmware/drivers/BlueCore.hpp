@@ -203,18 +203,26 @@ class BlueCore {
     }
   }
   // Starts a PDC transfer of the ring's contiguous pending bytes when the previous one is over.
+  // Every pending byte goes in one PDC transfer: the part that wraps round the ring as the next
+  // buffer, so a telegram that crosses the ring's end still leaves as one burst (a PC that reads a
+  // length and then the body in one read gets it whole). Done when both counters are 0.
   void pumpTx() {
     using namespace reg;
     if (inFlight_ > 0) {
-      if (bus_.read(kUs1Tcr) != 0) return;
+      if (bus_.read(kUs1Tcr) != 0 || bus_.read(kUs1Tncr) != 0) return;
       tx_.drop(inFlight_);
       inFlight_ = 0;
     }
     const uint16_t n = tx_.contiguous();
     if (n == 0) return;
-    inFlight_ = n;
+    const uint16_t wrapped = static_cast<uint16_t>(tx_.size() - n);
+    inFlight_ = static_cast<uint16_t>(n + wrapped);
     bus_.write(kUs1Tpr, bus_.address(tx_.tailPointer()));
     bus_.write(kUs1Tcr, n);
+    if (wrapped > 0) {
+      bus_.write(kUs1Tnpr, bus_.address(tx_.start()));
+      bus_.write(kUs1Tncr, wrapped);
+    }
     bus_.write(kUs1Ptcr, 1u << 8);  // TXTEN
   }
 

@@ -37,6 +37,8 @@ class ByteRing {
   }
   // The tail byte (start of contiguous()).
   const uint8_t* tailPointer() const { return &buf_[tail_ & (N - 1)]; }
+  // The buffer's first byte: where the pending bytes go on after contiguous() ones when they wrap.
+  const uint8_t* start() const { return buf_; }
   // Frees n bytes at the tail (after a DMA transfer of them).
   void drop(uint16_t n) { tail_ = static_cast<uint16_t>(tail_ + n); }
   uint32_t dropped() const { return dropped_; }

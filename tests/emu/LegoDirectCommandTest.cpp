@@ -237,10 +237,10 @@ TEST(LegoDirectCommandsEndToEnd, AThousandMixedRequestsAreEachAnsweredInOrder) {
 
 // Each reply reaches the PC in one radio packet (a tool that reads the length and then the body in one read
 // gets it whole): no telegram is cut across two of the BlueCore's bursts, also where the firmware's transmit
-// ring wraps (512 bytes: every 30-50 replies). Today a telegram crossing the ring's end goes out as two PDC
-// buffers, a main-loop pass apart; nxt-python's devfile backend then reads half a reply. Passes once the
-// transmit hands the wrapped part over as the PDC's next buffer (TNPR/TNCR), shifted out back to back.
-TEST(LegoDirectCommandsEndToEnd, DISABLED_EveryReplyArrivesInOneRadioPacket) {
+// ring wraps (512 bytes: every 30-50 replies): the transmit hands the wrapped part to the PDC as its next
+// buffer (TNPR/TNCR), shifted out back to back. Without that it left as two PDC buffers a main-loop pass
+// apart, and nxt-python's devfile backend read half a reply.
+TEST(LegoDirectCommandsEndToEnd, EveryReplyArrivesInOneRadioPacket) {
   skipUnlessRunnable();
   if (simFirmwarePath().empty()) GTEST_SKIP() << "no nxtmap-sim.elf";
   std::vector<Step> script;
