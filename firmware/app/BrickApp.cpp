@@ -55,7 +55,7 @@ BrickApp::BrickApp()
       link_(stack_.map().grid(), shadow_, linkConfigFor(stack_.config().geometry)),
       runner_(motion_, sonar_, config_.drive, stack_.config().geometry, config_.sensorPorts),
       modes_(stack_, houseBrick(), runner_, link_, safety_, tacho_, avr_.command(), config_),
-      lego_(modes_, runner_, speaker_, reg::kMck),
+      lego_(modes_, runner_, speaker_, bt_, reg::kMck),
       radio_(bt_, link_, modes_, avr_),
       status_(frame_, lcd_, modes_, bt_, link_, avr_, safety_) {
   link_.attach(lego_);

@@ -45,7 +45,8 @@ void StatusScreen::drawBattery(int x) {
 }
 
 void StatusScreen::drawLinks(int x) {
-  static const char* const kBt[] = {"BT OFF", "BT RST", "BT RST", "BT PORT", "BT LIST", "BT ACC", "BT OPEN", "BT LINK"};
+  static const char* const kBt[] = {"BT OFF",  "BT RST", "BT RST",  "BT ADDR", "BT PORT",
+                                    "BT LIST", "BT ACC", "BT OPEN", "BT LINK"};
   screen_.clearLine(kBluetoothY);
   screen_.text(x, kBluetoothY, kBt[static_cast<int>(bt_.state())]);
   screen_.clearLine(kLinkY);

@@ -8,9 +8,17 @@
 
 namespace nxtmap::fw {
 
+namespace bc {
+// The module's own address: GET_LOCAL_ADDR (no payload) -> GET_LOCAL_ADDR_RESULT (7 bytes: the 6-byte
+// address, most significant first, then one more byte that LEGO's firmware keeps but never reads).
+constexpr uint8_t kGetLocalAddr = 0x27, kGetLocalAddrResult = 0x28;
+}  // namespace bc
+
 // The Bluetooth link: USART1 at 460800 8N1 with RTS/CTS to the BlueCore module, and the module's
 // command protocol up to data (stream) mode:
-//   RESET low 100 ms -> wait RESET_INDICATION (or 5 s) -> OPEN_PORT -> PORT_OPEN_RESULT ->
+//   RESET low 100 ms -> wait RESET_INDICATION (or 5 s) -> GET_LOCAL_ADDR -> GET_LOCAL_ADDR_RESULT (the
+//   module's 6-byte Bluetooth address, most significant byte first, kept for GET_DEVICE_INFO; no answer
+//   within kReplyMs leaves it zeros) -> OPEN_PORT -> PORT_OPEN_RESULT ->
 //   listen: REQUEST_PIN_CODE -> PIN_CODE "1234"; REQUEST_CONNECTION -> ACCEPT_CONNECTION(1) ->
 //   CONNECT_RESULT(1, handle) -> OPEN_STREAM(handle) -> BC4 CMD line (ADC6 > 0x200) -> ARM7_CMD
 //   (PA27) high = stream mode: from then on the UART carries the PC's byte stream, passed through
@@ -29,7 +37,17 @@ namespace nxtmap::fw {
 template <class Bus>
 class BlueCore {
  public:
-  enum class State : uint8_t { Off, Resetting, WaitReset, OpenPort, Listening, Accepting, OpeningStream, Stream };
+  enum class State : uint8_t {
+    Off,
+    Resetting,
+    WaitReset,
+    GetAddress,
+    OpenPort,
+    Listening,
+    Accepting,
+    OpeningStream,
+    Stream
+  };
   static constexpr uint32_t kResetMs = 100, kResetWaitMs = 5000, kReplyMs = 500, kStreamWaitMs = 2000,
                             kMessageGapMs = 20;
   static constexpr uint16_t kCmdThreshold = 0x200;
@@ -67,6 +85,8 @@ class BlueCore {
   State state() const { return state_; }
   bool streaming() const { return state_ == State::Stream; }
   uint32_t badMessages() const { return parser_.badMessages(); }
+  // The module's Bluetooth address, most significant byte first (zeros until it has answered).
+  const uint8_t (&address() const)[6] { return address_; }
 
   // USART1 interrupt: none is enabled (reception is polled from the PDC buffers).
   void onInterrupt() {}
@@ -153,7 +173,11 @@ class BlueCore {
         }
         return;
       case State::WaitReset:
-        if (in >= kResetWaitMs) enter(State::OpenPort, nowMs);
+        if (in >= kResetWaitMs) enter(State::GetAddress, nowMs);
+        return;
+      case State::GetAddress:
+        if (!sent_) command(bc::kGetLocalAddr, nullptr, 0);
+        if (in >= kReplyMs) enter(State::OpenPort, nowMs);
         return;
       case State::OpenPort:
         if (!sent_ || in >= kReplyMs) {
@@ -180,7 +204,10 @@ class BlueCore {
     const uint8_t* p = parser_.payload();
     const uint8_t n = parser_.payloadLength();
     if (code == bc::kResetIndication) {
-      enter(State::OpenPort, nowMs);
+      enter(State::GetAddress, nowMs);
+    } else if (code == bc::kGetLocalAddrResult && n >= 6) {
+      for (uint8_t i = 0; i < 6; ++i) address_[i] = p[i];
+      if (state_ == State::GetAddress) enter(State::OpenPort, nowMs);
     } else if (code == bc::kPortOpenResult && state_ == State::OpenPort) {
       if (n >= 1 && (p[0] & 1u)) enter(State::Listening, nowMs);
     } else if (code == bc::kRequestPinCode && n >= 7) {
@@ -231,6 +258,7 @@ class BlueCore {
   ByteRing<512> tx_;
   BcParser parser_;
   uint32_t linkEpoch_ = 0;
+  uint8_t address_[6] = {};
   uint16_t inFlight_ = 0;
   uint32_t sinceMs_ = 0;
   uint32_t lastRxMs_ = 0;  // last poll that found received bytes (command mode)

@@ -7,6 +7,9 @@ namespace nxtmap::emu {
 namespace {
 constexpr uint64_t kBootCycles = kMckHz / 1000 * 50;  // RESET_INDICATION 50 ms after RESET goes high
 constexpr uint64_t kPollCycles = kMckHz / 1000;       // the PC side is polled every millisecond
+// The module's own address, 00:16:53:0E:4D:5A (00:16:53 is LEGO's OUI; the rest fixed, so tests can
+// expect it), most significant byte first, then the seventh byte LEGO's messages carry (0). Reported for
+// GET_LOCAL_ADDR (0x27 -> 0x28) and as the caller's address in REQUEST_CONNECTION.
 const std::vector<uint8_t> kBdAddr{0x00, 0x16, 0x53, 0x0E, 0x4D, 0x5A, 0x00};
 std::vector<uint8_t> name16(const std::string& s) {
   std::vector<uint8_t> v(16, 0);

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace nxtmap::emu::lego {
 namespace {
@@ -113,11 +114,13 @@ TEST(LegoDirectCommandsEndToEnd, VersionAndDeviceInfoAnswerWithLegosLayout) {
   expectRows(rows);
 }
 
-// The module's address (BlueCore GET_LOCAL_ADDR) and the flash the image leaves free: both 0 today.
-TEST(LegoDirectCommandsEndToEnd, DISABLED_DeviceInfoReportsAddressAndFreeFlash) {
+// The module's address (the firmware asks the emulated BC4 with GET_LOCAL_ADDR at start-up; it answers
+// 00:16:53:0E:4D:5A) in LEGO's order, most significant byte first, and the flash the image leaves free.
+TEST(LegoDirectCommandsEndToEnd, DeviceInfoReportsAddressAndFreeFlash) {
   skipUnlessRunnable();
   expectRows({{"device info", getDeviceInfo(), false, kSuccess, [](const Reply& r) {
-                 EXPECT_NE(r.u32(18) | r.u16(22), 0u) << "Bluetooth address";
+                 const std::vector<uint8_t> address{r.u8(18), r.u8(19), r.u8(20), r.u8(21), r.u8(22), r.u8(23)};
+                 EXPECT_EQ(address, (std::vector<uint8_t>{0x00, 0x16, 0x53, 0x0E, 0x4D, 0x5A})) << "Bluetooth address";
                  EXPECT_GT(r.u32(29), 0u) << "free user flash";
                }}});
 }

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <array>
 #include <deque>
 #include <vector>
 
@@ -22,7 +23,9 @@ struct Bc4 {
   std::vector<uint8_t> fromArm;                // raw bytes received (stream mode)
   std::vector<std::vector<uint8_t>> commands;  // command frames received (command mode)
   bool cmdLine = false, resetHeld = true, badChecksum = false, indicateReset = true, answerOpenPort = true;
-  bool armCmd = false;  // ARM7_CMD (PA27): high = data mode
+  bool answerAddress = true;
+  std::vector<uint8_t> localAddress{0x00, 0x16, 0x53, 0x12, 0x34, 0x56, 0x00};  // GET_LOCAL_ADDR_RESULT's 7 bytes
+  bool armCmd = false;                                                          // ARM7_CMD (PA27): high = data mode
   bool holdTx = false;
   bool rxPdc = false;           // receive PDC enabled (PTCR RXTEN)
   std::vector<uint8_t> heldTx;  // a PDC transfer not sent yet
@@ -117,6 +120,7 @@ struct Bc4 {
     }
     commands.push_back(f);
     const uint8_t code = f[1];
+    if (code == 0x27 && answerAddress) reply(0x28, localAddress);   // GET_LOCAL_ADDR
     if (code == 0x03 && answerOpenPort) reply(0x1B, {0x01, 0x00});  // PORT_OPEN_RESULT: open
     if (code == 0x09 && f[2] == 1) reply(0x13, {0x01, 0x05});       // CONNECT_RESULT: ok, handle 5
     if (code == 0x0B && f[2] == 5) cmdLine = true;                  // OPEN_STREAM(5)
@@ -353,6 +357,44 @@ TEST(BlueCore, AnswersAPinRequestWith1234) {
   EXPECT_EQ(m.pinAnswer[7], '1');
   EXPECT_EQ(m.pinAnswer[10], '4');
   EXPECT_EQ(m.pinAnswer[11], 0);
+}
+
+// At start-up, before the port opens, the driver asks the module for its address (GET_LOCAL_ADDR,
+// no payload) and keeps the answer's first 6 bytes, most significant first; a module that does not
+// answer within kReplyMs leaves the address zeros and the port is opened all the same.
+TEST(BlueCore, AsksTheModuleForItsAddressBeforeOpeningThePort) {
+  struct Row {
+    const char* what;
+    bool answer;
+    std::vector<uint8_t> reported;  // GET_LOCAL_ADDR_RESULT's payload
+    std::array<uint8_t, 6> kept;
+    bool openAtOnce;  // OPEN_PORT follows the answer at once, else only after kReplyMs
+  };
+  constexpr uint32_t kReleased = 100, kGiveUp = kReleased + BlueCore<FakeBus>::kReplyMs;
+  const std::vector<Row> rows{
+      {"LEGO's OUI", true, {0x00, 0x16, 0x53, 0x12, 0x34, 0x56, 0x00}, {0x00, 0x16, 0x53, 0x12, 0x34, 0x56}, true},
+      {"all ones", true, {0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF}, {0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF}, true},
+      {"too short: ignored", true, {0x00, 0x16, 0x53}, {0, 0, 0, 0, 0, 0}, false},
+      {"no answer", false, {}, {0, 0, 0, 0, 0, 0}, false},
+  };
+  for (const Row& r : rows) {
+    Bc4 m;
+    m.answerAddress = r.answer;
+    m.localAddress = r.reported;
+    BlueCore<FakeBus> bt(m.bus);
+    uint32_t now = 0;
+    bt.init(kMck, now);
+    runMs(m, bt, now, kReleased + 10);
+    ASSERT_FALSE(m.commands.empty()) << r.what;
+    EXPECT_EQ(m.commands.front(), (std::vector<uint8_t>{0x03, 0x27, 0xFF, 0xD9})) << r.what;  // len, code, sum
+    runMs(m, bt, now, kGiveUp - 5 - now);
+    EXPECT_EQ(m.sawCommand(0x03), r.openAtOnce) << r.what;
+    runMs(m, bt, now, 10);
+    EXPECT_TRUE(m.sawCommand(0x03)) << r.what;
+    std::array<uint8_t, 6> kept{};
+    for (size_t i = 0; i < 6; ++i) kept[i] = bt.address()[i];
+    EXPECT_EQ(kept, r.kept) << r.what;
+  }
 }
 
 TEST(BlueCore, WithoutResetIndicationItOpensThePortAfterFiveSeconds) {
