@@ -155,6 +155,8 @@ void BrickApp::loopOnce() {
   radio_.serve(now);
   if (avr_.up()) modes_.readButton(decodeButton(avr_.status().buttonsRaw), now);
   modes_.drive(now);
+  const Beep beep = beeper_.update(modes_.mode(), modes_.finishes());
+  if (beep.hz != 0) speaker_.play(reg::kMck, beep.hz, beep.ms);
   startSonarClock();
   modes_.driveMotors();
   status_.draw(now);

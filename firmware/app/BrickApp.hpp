@@ -8,6 +8,7 @@
 #include "common/protocol/BrickLink.hpp"
 #include "firmware/app/ActionRunner.hpp"
 #include "firmware/app/BrickConfig.hpp"
+#include "firmware/app/EventBeeper.hpp"
 #include "firmware/app/LegoPort.hpp"
 #include "firmware/app/ModeMachine.hpp"
 #include "firmware/app/RadioService.hpp"
@@ -115,7 +116,8 @@ class BrickApp {
   protocol::BrickLink link_;
   ActionRunner runner_;
   ModeMachine modes_;
-  LegoPort lego_;  // LEGO's direct commands on the outputs and sensors (attached to link_)
+  EventBeeper beeper_;  // short tones on the robot's own events
+  LegoPort lego_;       // LEGO's direct commands on the outputs and sensors (attached to link_)
   RadioService radio_;
   StatusScreen status_;
 

@@ -80,6 +80,7 @@ void ModeMachine::afterHouseStep(const DriveAction& next, uint32_t nowMs) {
       runner_.begin(next, wheels(), nowMs);
       return;
     }
+    ++finishes_;
 #if defined(NXTMAP_SIM_GEOMETRY)
     g_mapExport.fill(grid());
 #endif
@@ -126,7 +127,8 @@ void ModeMachine::drive(uint32_t nowMs) {
   } else if (follower_.next(&e, pending_)) {
     runner_.begin(pending_, wheels(), nowMs);
   } else {
-    mode_ = Mode::Idle;
+    mode_ = Mode::Idle;  // the path's goal reached
+    ++finishes_;
   }
 }
 
@@ -136,6 +138,7 @@ void ModeMachine::stepExplorer(const DriveEvent& e, uint32_t nowMs) {
   mapChanged();
   if (pending_.kind == DriveAction::Kind::Done || stack_.finished()) {
     mode_ = Mode::Done;
+    ++finishes_;
 #if defined(NXTMAP_SIM_GEOMETRY)
     g_mapExport.fill(grid());
 #endif

@@ -87,6 +87,9 @@ class ModeMachine {
   Counters counters() const { return stack_.counters(); }
   // Changes whenever the map may have changed (compare with the value last drawn).
   uint32_t mapVersion() const { return mapVersion_; }
+  // Counts tasks that ended by themselves (wraps): an explorer run done, a path's goal reached, a
+  // house command over. Stops, new rooms and faults do not count (EventBeeper).
+  uint8_t finishes() const { return finishes_; }
   protocol::BrickReport report(uint16_t batteryMillivolts) const;
 
   static constexpr uint32_t kButtonStableMs = 50;
@@ -126,6 +129,7 @@ class ModeMachine {
   Mode mode_ = Mode::Idle;
   uint16_t roomId_ = 0;
   uint32_t mapVersion_ = 1;
+  uint8_t finishes_ = 0;
   Button lastButton_ = Button::None;
   Button candidate_ = Button::None;
   uint32_t candidateSince_ = 0;
