@@ -37,8 +37,9 @@ CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
   c->add_option("--seed", o.seed, "random seed of the noise (default 1)");
   c->add_option("--seconds", o.seconds, "emulated time limit in seconds (default 3600)");
   c->add_option("--until", o.until,
-                "end the run when: explored, or disconnect (the PC left); default disconnect with --listen, "
-                "else explored (the time limit always applies)");
+                "end the run when: explored, disconnect (the PC left), or time (only the time limit: PCs and "
+                "tools may come and go); default disconnect with --listen, else explored (the time limit always "
+                "applies)");
   c->add_option("--enter-at", o.enterAt, "emulated second at which Enter is pressed, < 0 never (default 1)");
   return c;
 }
@@ -61,8 +62,8 @@ int runEmulate(const EmulateOptions& o) {
   run.maxSeconds = o.seconds;
   run.pressEnterAtS = o.enterAt;
   const std::string until = o.until.empty() ? (o.listen.empty() ? "explored" : "disconnect") : o.until;
-  if (until != "explored" && until != "disconnect")
-    throw CliError("--until must be explored or disconnect, not '" + o.until + "'");
+  if (until != "explored" && until != "disconnect" && until != "time")
+    throw CliError("--until must be explored, disconnect or time, not '" + o.until + "'");
   if (until == "disconnect" && o.listen.empty()) throw CliError("--until disconnect needs --listen");
   run.stopWhenExplored = until == "explored";
   run.stopWhenPcLeaves = until == "disconnect";

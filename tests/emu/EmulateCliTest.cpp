@@ -28,6 +28,10 @@ TEST(EmulateCli, RejectsBadOptionsWithOneLine) {
   expectUsageError(runCli("emulate " + kRoom + " --start 0,0"), "");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --noise loud"), "noise");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --seconds -3"), "--seconds");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --until soon"),
+                   "--until must be explored, disconnect or time, not 'soon'");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --until disconnect"),
+                   "--until disconnect needs --listen");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --firmware /nonexistent/fw.elf"), "make firmware");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --firmware README.md"), "not an ELF");
   expectUsageError(
@@ -46,6 +50,14 @@ TEST(EmulateCli, FirmwareFaultEndsWithTheReportAndExitCode1) {
   EXPECT_NE(r.err.find("unmodelled peripheral register at pc=0x"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("address=0xfffff240"), std::string::npos) << r.err;
   EXPECT_NE(r.out.find("end              FAULT"), std::string::npos) << r.out;
+}
+
+// --until time: only the time limit ends the run (a tool on the pty may leave and the next come).
+TEST(EmulateCli, UntilTimeRunsToTheTimeLimit) {
+  const RunOutput r = runCli("emulate " + kRoom + " --start 1,20 --until time --seconds 0.5 --firmware " +
+                             shellQuote(std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap.elf"));
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("time limit reached"), std::string::npos) << r.out;
 }
 
 // A firmware without our symbols (LEGO's raw image) runs, and its RAM high-water is "not measured", not a number.
