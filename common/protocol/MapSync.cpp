@@ -131,7 +131,9 @@ bool MapSync::addRuns(uint32_t& i, uint32_t end, MapDeltaWriter& writer, Slot& s
     // A run from i along the row (and inside [i, end)): up to kMaxRunCells cells, bridging
     // gaps of up to kMaxGap, and no more than the payload can take.
     const uint32_t rowEnd = (i & ~(w - 1u)) + w;  // w is a power of two (no division on the ARM7)
+    const uint32_t windowEnd = i + cellsToWindowEdge(i);
     uint32_t limit = rowEnd < end ? rowEnd : end;
+    if (windowEnd < limit) limit = windowEnd;  // a gap bridged past the window would name cells outside it
     if (limit - i > kMaxRunCells) limit = i + kMaxRunCells;
     const size_t room = writer.cellsThatFit();
     if (limit - i > room) limit = i + static_cast<uint32_t>(room);
@@ -153,6 +155,16 @@ bool MapSync::addRuns(uint32_t& i, uint32_t end, MapDeltaWriter& writer, Slot& s
     ++slot.runCount;
     i = base + count;
   }
+}
+
+// Cells from torus index i (a pending cell, so inside the window) to the window's right edge along
+// its row, i's own included (1..width). A window narrower than the capacity leaves torus columns that
+// unwrap to no cell of it.
+uint32_t MapSync::cellsToWindowEdge(uint32_t i) const {
+  const Bounds win = grid_.window();
+  const int w = grid_.cells().width();
+  const int x = win.minX + ((static_cast<int>(i & static_cast<uint32_t>(w - 1)) - win.minX) & (w - 1));
+  return win.maxX >= x ? static_cast<uint32_t>(win.maxX - x + 1) : 1u;
 }
 
 void MapSync::acknowledge(uint16_t ack, uint16_t ackMask, uint32_t nowMs) {

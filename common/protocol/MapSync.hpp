@@ -102,6 +102,7 @@ class MapSync {
   // Adds runs of the pending cells in [i, end) to the delta. Returns false when the delta is
   // full; `i` is then the first pending cell left out.
   bool addRuns(uint32_t& i, uint32_t end, MapDeltaWriter& writer, Slot& slot);
+  uint32_t cellsToWindowEdge(uint32_t i) const;
   void forget(Slot& s);  // cells of the record become pending; the record is dropped
   Slot* freeSlot();
   // Detects a grid restructured or cleared behind our back: the window no longer contains the old one.

@@ -1,6 +1,7 @@
 // The brick's "nothing lost" bookkeeping: whatever is dropped, the PC's copy ends equal.
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <random>
 
 #include "common/protocol/MapSync.hpp"
@@ -55,6 +56,47 @@ TEST(MapSync, SendsChangedCellsAsRunsAndNothingWhenQuiet) {
   EXPECT_FALSE(sync.buildDelta(7, 0, p));
   EXPECT_EQ(sync.inFlight(), 0);
 }
+
+// A window narrower than the grid leaves torus columns that unwrap to no cell of it. Changed cells
+// on both sides of such a gap, closer than a run may bridge, must go in runs that stay inside the
+// window: the PC refuses (and acknowledges) a delta naming a cell outside it, so the cells in it
+// would be lost.
+struct WindowGapRow {
+  const char* what;
+  int minX, maxX;  // the window's columns (cells set at both ends and next to them), row 5
+};
+
+class MapSyncWindowGap : public ::testing::TestWithParam<WindowGapRow> {};
+
+TEST_P(MapSyncWindowGap, RunsStayInsideTheWindowAndTheCopyEndsEqual) {
+  const WindowGapRow& r = GetParam();
+  OwnedGrid<> o;
+  MapSync sync(o.grid, o.shadow, 400);
+  MirrorMap mirror;
+  uint16_t seq = 0;
+  drain(sync, mirror, seq, 0);
+  for (int x : {r.minX, r.minX + 1, r.maxX - 1, r.maxX}) setCell(o.grid, x, 5, CellState::Free);
+  setCell(o.grid, r.maxX, 6, CellState::Occupied);
+  Payload p;
+  seq = nextSeq(seq);
+  ASSERT_TRUE(sync.buildDelta(seq, 0, p)) << r.what;
+  MapDeltaReader reader(p.bytes, p.size);
+  EXPECT_TRUE(reader.validate()) << r.what << ": a run names a cell outside the window";
+  ASSERT_TRUE(mirror.apply(p.bytes, p.size)) << r.what;
+  sync.acknowledge(seq, 0, 0);
+  drain(sync, mirror, seq, 0);
+  EXPECT_TRUE(mirror.equals(o.grid)) << r.what;
+}
+
+void PrintTo(const WindowGapRow& r, std::ostream* os) { *os << r.what; }
+
+INSTANTIATE_TEST_SUITE_P(Rows, MapSyncWindowGap,
+                         ::testing::Values(WindowGapRow{"60 wide across the wrap: a 4-column gap", -3, 56},
+                                           WindowGapRow{"63 wide: a 1-column gap", -10, 52},
+                                           WindowGapRow{"57 wide: a 7-column gap, the longest a run bridges", -20, 36},
+                                           WindowGapRow{"56 wide: an 8-column gap, never bridged", -20, 35},
+                                           WindowGapRow{"the whole 64 columns: no gap", -32, 31},
+                                           WindowGapRow{"60 wide, not wrapped", 2, 61}));
 
 TEST(MapSync, ALostDeltaIsSentAgainAfterTheTimeoutWithCurrentStates) {
   OwnedGrid<> o;
