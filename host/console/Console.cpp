@@ -180,7 +180,7 @@ std::string Console::exploreHouse(const ConsoleCommand&) {
 std::string Console::pollHouse() {
   runner_.with([](link::Session& s) { return s.takeRoomChanges(); });  // the planner keeps the rooms
   std::string out = runner_.with([&](link::Session& s) { return exploration_.poll(s, clockS()); });
-  if (!exploration_.done()) return out;
+  if (!exploration_.done() && exploration_.stopped().empty()) return out;
   // The planner's house becomes the console's; the brick gets the room it stands in, in its frame.
   const int room = exploration_.roomOfRobot();
   if (room < 0) return out;
@@ -200,6 +200,8 @@ std::string Console::waitHouse(double seconds) {
   if (!waitFor([&] { return !exploration_.active(); }, seconds))
     throw ConsoleError("still mapping the house after " + std::to_string(static_cast<int>(seconds)) +
                        " s: " + exploration_.progress());
+  if (!exploration_.stopped().empty())
+    throw ConsoleError("house stopped: " + exploration_.stopped() + "; " + exploration_.progress());
   return "house mapped: " + exploration_.progress() + "\n";
 }
 

@@ -10,6 +10,11 @@ namespace {
 
 using Kind = house::HouseOrder::Kind;
 constexpr double kCrossBlockedS = 3.0;  // an EnterRoom run, and the brick still idle in its room: blocked
+// The brick standing still this long (and over this many statuses: 50 ms apart on the brick) with
+// the order's report not in: the order was dropped on the brick. A report late on a damaged link
+// takes seconds, not a minute.
+constexpr double kStillS = 60.0;
+constexpr uint64_t kStillStatuses = 200;
 
 // The planner as `sim-house` configures it, for the brick at the other end: its pilot's pose range
 // and its grid (from its HelloReply, which start() requires).
@@ -30,6 +35,7 @@ std::string HouseExploration::start(link::Session& s, double nowS) {
   planner_.emplace(linkPlanner(s), geometry_);
   active_ = true;
   done_ = false;
+  stopped_.clear();
   roomsMapped_ = 0;
   startedS_ = nowS_ = nowS;
   room_ = s.status() ? s.status()->roomId : uint16_t{0};
@@ -38,6 +44,7 @@ std::string HouseExploration::start(link::Session& s, double nowS) {
 }
 
 std::string HouseExploration::send(link::Session& s, const house::HouseOrder& o) {
+  stillFrom_ = 0;
   switch (o.kind) {
     case Kind::ExploreFirstRoom:
       s.explore(protocol::ExploreMsg{protocol::ExploreStrategy::Frontier, true});
@@ -171,9 +178,42 @@ std::optional<house::HouseReport> HouseExploration::goalDone(link::Session& s) c
   return r;
 }
 
+std::string HouseExploration::brickGaveUp(const link::Session& s) {
+  const auto& st = s.status();
+  if (!st || !s.commandsDone()) return "";
+  if (st->mode == protocol::BrickMode::Fault)
+    return "the brick stopped its motors (a wheel stalled or was held: its motor safety)";
+  if (standingStill(s))
+    return "the brick stands still without reporting the order it was given (a button on the brick, or "
+           "another console's command, ended it)";
+  return "";
+}
+
+// Idle or Done, in every Status for a while, with the awaited report not in (a link that is down
+// brings no statuses, so it does not count). A crossing has its own rule (crossBlocked).
+bool HouseExploration::standingStill(const link::Session& s) {
+  const auto& st = s.status();
+  const bool still = st->mode == protocol::BrickMode::Idle || st->mode == protocol::BrickMode::Done;
+  if (!still || wait_ == Wait::Cross || wait_ == Wait::Nothing) {
+    stillFrom_ = 0;
+    return false;
+  }
+  if (stillFrom_ == 0) {
+    stillFrom_ = s.statusesReceived();
+    stillSinceS_ = nowS_;
+  }
+  return s.statusesReceived() >= stillFrom_ + kStillStatuses && nowS_ - stillSinceS_ >= kStillS;
+}
+
 std::string HouseExploration::poll(link::Session& s, double nowS) {
   if (!active_) return "";
   nowS_ = nowS;
+  const std::string why = brickGaveUp(s);
+  if (!why.empty()) {
+    active_ = false;
+    stopped_ = why;
+    return "house stopped: " + why + "; " + progress() + "\n";
+  }
   const std::optional<house::HouseReport> r = arrived(s);
   if (!r) return "";
   std::string out;

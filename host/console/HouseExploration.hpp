@@ -30,6 +30,9 @@ class HouseExploration {
   void cancel() { active_ = false; }
   bool active() const { return active_; }
   bool done() const { return done_; }
+  // Why the house stopped before it was done ("" while it runs, when done or cancelled): the brick
+  // stopped its motors, or its order was cut short on the brick.
+  const std::string& stopped() const { return stopped_; }
   const house::HousePlanner& planner() const { return *planner_; }
   house::HousePlanner& planner() { return *planner_; }
   // The room (index in the planner's network) the robot stands in, as believed.
@@ -46,6 +49,9 @@ class HouseExploration {
   void sendCross(link::Session& s, const house::HouseOrder& o);
   // The report the brick gave for the current order, once it is complete.
   std::optional<house::HouseReport> arrived(link::Session& s);
+  // Why the brick can no longer carry the current order out ("" while it can).
+  std::string brickGaveUp(const link::Session& s);
+  bool standingStill(const link::Session& s);
   std::optional<house::HouseReport> crossBlocked(link::Session& s);
   std::optional<house::HouseReport> roomDone(link::Session& s) const;
   std::optional<house::HouseReport> goalDone(link::Session& s) const;
@@ -55,6 +61,7 @@ class HouseExploration {
   RangeGeometry geometry_;  // the brick's, from its HelloReply at start()
   std::optional<house::HousePlanner> planner_;
   bool active_ = false, done_ = false;
+  std::string stopped_;
   Wait wait_ = Wait::Nothing;
   uint16_t room_ = 0;  // the brick's id of the room being mapped (or entered)
   uint16_t goalId_ = 0, transferId_ = 0x4000;
@@ -62,6 +69,8 @@ class HouseExploration {
   uint16_t enterSeq_ = 0;       // the EnterRoom command's sequence number
   uint64_t statusesAtAck_ = 0;  // statuses received when it was acknowledged (0: not yet)
   double startedS_ = 0, crossSinceS_ = 0, nowS_ = 0;
+  uint64_t stillFrom_ = 0;  // statuses received when the brick was first seen still (0: moving)
+  double stillSinceS_ = 0;
   int roomsMapped_ = 0;
 };
 

@@ -1,0 +1,145 @@
+// `explore house` when the brick can no longer carry the console's order out: its motor safety
+// tripped (Fault), or the order was ended on the brick (a button, another console's command) and it
+// stands still without reporting it. The house stops with one clear reason instead of waiting for
+// ever; a brick that reports late, or a link that is down, does not stop it. The brick's side is
+// played packet by packet: a HelloReply, the acknowledgement of each command, then Status packets.
+#include <gtest/gtest.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "common/protocol/FrameDecoder.hpp"
+#include "common/protocol/Messages.hpp"
+#include "common/protocol/Packet.hpp"
+#include "host/console/HouseExploration.hpp"
+#include "host/link/Session.hpp"
+
+namespace nxtmap::console {
+namespace {
+
+using protocol::BrickMode;
+
+class HouseStopTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    protocol::HelloReplyMsg r;
+    r.session = kSession;
+    protocol::Payload p;
+    protocol::encodeHelloReply(r, p);
+    send(protocol::Op::HelloReply, p);
+    ASSERT_TRUE(pc.connected());
+    status(BrickMode::Idle);  // the brick answered: the house may start
+    said = house.start(pc, 0.0);
+    acknowledgeCommands();
+  }
+
+  // One Status from the brick at `atS` (seconds of the console's clock), acknowledging `ack`.
+  void status(BrickMode mode, double atS = 0.0) {
+    protocol::StatusMsg s;
+    s.mode = mode;
+    s.roomId = 1;
+    protocol::Payload p;
+    ASSERT_GT(protocol::encodeStatus(s, p), 0u);
+    send(protocol::Op::Status, p);
+    said += house.poll(pc, atS);
+  }
+
+  // The brick takes every command the PC has to send (stop-and-wait: one at a time).
+  void acknowledgeCommands() {
+    for (int i = 0; i < 8 && !pc.commandsDone(); ++i) {
+      const std::vector<uint8_t> out = pc.transmit(static_cast<uint32_t>(i) * 1000u);
+      protocol::FrameDecoder d;
+      protocol::Telegram t;
+      for (uint8_t b : out) {
+        d.push(b);
+        while (d.pop(t)) {
+          protocol::PacketView v;
+          if (protocol::parsePacket(t, v) && v.header.reliable()) ack_ = v.header.seq;
+        }
+      }
+      status(BrickMode::Exploring);
+    }
+    ASSERT_TRUE(pc.commandsDone());
+  }
+
+  // `count` statuses of `mode` spread evenly over [fromS, toS].
+  void statuses(BrickMode mode, int count, double fromS, double toS) {
+    for (int i = 0; i < count; ++i) status(mode, fromS + (toS - fromS) * i / (count - 1));
+  }
+
+  void send(protocol::Op op, const protocol::Payload& p) {
+    protocol::PacketHeader h;
+    h.op = op;
+    h.ack = ack_;
+    h.ackMask = 0xFFFF;
+    protocol::Frame f;
+    ASSERT_TRUE(protocol::encodePacket(h, p.bytes, p.size, f));
+    pc.receive(f.bytes, f.size, 0);
+  }
+
+  static constexpr uint32_t kSession = 0x5709;
+  link::Session pc{link::SessionConfig{kSession, 250, 250}};
+  HouseExploration house;
+  std::string said;
+  uint16_t ack_ = 0;
+};
+
+TEST_F(HouseStopTest, AMotorFaultStopsTheHouseAtOnceWithItsReason) {
+  ASSERT_TRUE(house.active());
+  status(BrickMode::Fault, 5.0);
+  EXPECT_FALSE(house.active());
+  EXPECT_FALSE(house.done());
+  EXPECT_NE(house.stopped().find("stopped its motors"), std::string::npos) << house.stopped();
+  EXPECT_NE(said.find("house stopped: "), std::string::npos) << said;
+}
+
+// The brick standing still (Idle) while the first room is awaited: how long, over how many statuses,
+// and whether it stops.
+struct StillRow {
+  const char* what;
+  int statuses;
+  double seconds;
+  bool stops;
+};
+
+void PrintTo(const StillRow& r, std::ostream* os) { *os << r.what; }
+
+class HouseStillTest : public HouseStopTest, public ::testing::WithParamInterface<StillRow> {};
+
+TEST_P(HouseStillTest, AnOrderDroppedOnTheBrickStopsTheHouseAfterAMinuteOfStatuses) {
+  const StillRow& r = GetParam();
+  statuses(BrickMode::Idle, r.statuses, 10.0, 10.0 + r.seconds);
+  EXPECT_EQ(!house.stopped().empty(), r.stops) << r.what << ": " << said;
+  EXPECT_EQ(house.active(), !r.stops) << r.what;
+  if (r.stops) {
+    EXPECT_NE(house.stopped().find("stands still"), std::string::npos) << house.stopped();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Rows, HouseStillTest,
+                         ::testing::Values(StillRow{"a minute of statuses, all idle", 1201, 60.0, true},
+                                           StillRow{"idle for 50 s: a late report may still come", 1001, 50.0, false},
+                                           StillRow{"80 s but only 100 statuses: the link was mostly down", 100, 80.0,
+                                                    false},
+                                           StillRow{"five minutes idle", 6001, 300.0, true}));
+
+TEST_F(HouseStopTest, MovingAgainStartsTheMinuteAfresh) {
+  statuses(BrickMode::Idle, 900, 10.0, 55.0);
+  status(BrickMode::Exploring, 56.0);
+  statuses(BrickMode::Idle, 900, 57.0, 102.0);
+  EXPECT_TRUE(house.active()) << said;
+  EXPECT_TRUE(house.stopped().empty());
+  statuses(BrickMode::Idle, 400, 103.0, 123.0);
+  EXPECT_FALSE(house.active());
+}
+
+TEST_F(HouseStopTest, AStopFromThisConsoleIsNotReportedAsAFailure) {
+  house.cancel();
+  status(BrickMode::Fault, 5.0);
+  EXPECT_FALSE(house.active());
+  EXPECT_TRUE(house.stopped().empty());
+}
+
+}  // namespace
+}  // namespace nxtmap::console
