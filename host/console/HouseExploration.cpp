@@ -10,11 +10,11 @@ namespace {
 
 using Kind = house::HouseOrder::Kind;
 constexpr double kCrossBlockedS = 3.0;  // an EnterRoom run, and the brick still idle in its room: blocked
-// The brick standing still this long (and over this many statuses: 50 ms apart on the brick) with
-// the order's report not in: the order was dropped on the brick. A report late on a damaged link
-// takes seconds, not a minute.
+// The brick standing still this long (and over this many statuses: 500 ms apart on the brick, some
+// lost on a damaged link) with the order's report not in: the order was dropped on the brick. A
+// report late on a damaged link takes seconds, not a minute.
 constexpr double kStillS = 60.0;
-constexpr uint64_t kStillStatuses = 200;
+constexpr uint64_t kStillStatuses = 100;
 
 // The planner as `sim-house` configures it, for the brick at the other end: its pilot's pose range
 // and its grid (from its HelloReply, which start() requires).

@@ -118,11 +118,11 @@ TEST_P(HouseStillTest, AnOrderDroppedOnTheBrickStopsTheHouseAfterAMinuteOfStatus
 }
 
 INSTANTIATE_TEST_SUITE_P(Rows, HouseStillTest,
-                         ::testing::Values(StillRow{"a minute of statuses, all idle", 1201, 60.0, true},
-                                           StillRow{"idle for 50 s: a late report may still come", 1001, 50.0, false},
-                                           StillRow{"80 s but only 100 statuses: the link was mostly down", 100, 80.0,
+                         ::testing::Values(StillRow{"a minute of statuses (two a second), all idle", 121, 60.0, true},
+                                           StillRow{"idle for 50 s: a late report may still come", 101, 50.0, false},
+                                           StillRow{"80 s but only 60 statuses: the link was mostly down", 60, 80.0,
                                                     false},
-                                           StillRow{"five minutes idle", 6001, 300.0, true}));
+                                           StillRow{"five minutes idle", 601, 300.0, true}));
 
 TEST_F(HouseStopTest, MovingAgainStartsTheMinuteAfresh) {
   statuses(BrickMode::Idle, 900, 10.0, 55.0);
