@@ -17,19 +17,25 @@ constexpr uint16_t kAvrSilentTripMs = 100;
 constexpr DoorwayLimits kDoorways{4, 15, 3, 2};
 #endif
 
-// Interrupt sources, their AIC priority (0..7, 7 first) and handler. The AVR's TWI moves one byte
-// per interrupt and loses the frame if late; the tick and the tacho edges come next, then the soft
-// I2C clock; the BlueCore's USART has its PDC and waits long; the speaker's PDC has a buffer queued
-// ahead and waits longest.
+// Interrupt sources, their AIC priority (0..7, 7 first), handler and trigger. The AVR's TWI moves one
+// byte per interrupt and loses the frame if late; it is edge-triggered as in LEGO's d_ioctrl.r (one
+// interrupt per rising TXRDY/RXRDY/NACK: TXRDY stays high after a write's last byte). The tick and the
+// tacho edges come next, then the soft I2C clock; the BlueCore's USART has its PDC and waits long; the
+// speaker's PDC has a buffer queued ahead and waits longest.
+using Trigger = Aic<Mmio>::Trigger;
 struct IrqRoute {
   reg::PeripheralId id;
   uint32_t priority;
   IrqHandler handler;
+  Trigger trigger;
 };
 constexpr IrqRoute kIrqRoutes[] = {
-    {reg::kIdTwi, 7, nxtmapIsrTwi},       {reg::kIdSys, 6, nxtmapIsrSystem},
-    {reg::kIdPioa, 6, nxtmapIsrPio},      {reg::kIdTc0, 5, nxtmapIsrTc0},
-    {reg::kIdUsart1, 4, nxtmapIsrUsart1}, {static_cast<reg::PeripheralId>(ssc::kId), 3, nxtmapIsrSsc},
+    {reg::kIdTwi, 7, nxtmapIsrTwi, Trigger::Edge},
+    {reg::kIdSys, 6, nxtmapIsrSystem, Trigger::Level},
+    {reg::kIdPioa, 6, nxtmapIsrPio, Trigger::Level},
+    {reg::kIdTc0, 5, nxtmapIsrTc0, Trigger::Level},
+    {reg::kIdUsart1, 4, nxtmapIsrUsart1, Trigger::Level},
+    {static_cast<reg::PeripheralId>(ssc::kId), 3, nxtmapIsrSsc, Trigger::Level},
 };
 
 // The link as the brick runs it, telling the PC how its sensors read (HelloReply).
@@ -99,7 +105,7 @@ void BrickApp::initAvr() {
 
 void BrickApp::installInterrupts() {
   for (const IrqRoute& r : kIrqRoutes)
-    aic_.install(r.id, r.priority, bus_.address(reinterpret_cast<const void*>(r.handler)));
+    aic_.install(r.id, r.priority, bus_.address(reinterpret_cast<const void*>(r.handler)), r.trigger);
 }
 
 void BrickApp::onSystem() {

@@ -23,11 +23,14 @@ class Aic {
     bus_.write(kAicDcr, 0u);
     bus_.write(kAicSpu, spuriousAddress);
   }
-  // Level-sensitive internal source `id` at `priority` (0..7, 7 highest), handler at `address`.
-  void install(uint32_t id, uint32_t priority, uint32_t address) {
+  // How an internal source interrupts: while its line is high (Level), or once per rising edge (Edge,
+  // latched by the AIC and cleared when IVR hands it out).
+  enum class Trigger : uint32_t { Level = 0, Edge = 1u << 5 };  // SMR SRCTYPE, bits 5-6
+  // Internal source `id` at `priority` (0..7, 7 highest), handler at `address`.
+  void install(uint32_t id, uint32_t priority, uint32_t address, Trigger trigger = Trigger::Level) {
     using namespace reg;
     bus_.write(kAicIdcr, 1u << id);
-    bus_.write(kAicSmr + 4 * id, priority & 7u);
+    bus_.write(kAicSmr + 4 * id, (priority & 7u) | static_cast<uint32_t>(trigger));
     bus_.write(kAicSvr + 4 * id, address);
     bus_.write(kAicIccr, 1u << id);
     bus_.write(kAicIecr, 1u << id);

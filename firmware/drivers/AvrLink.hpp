@@ -7,11 +7,16 @@
 namespace nxtmap::fw {
 
 // The TWI master side of the AVR link. tick() runs in the 1 ms timer interrupt, onInterrupt()
-// in the TWI interrupt (highest priority). Sequence: bus reset -> handshake (47 bytes) -> 2 ms
-// pause -> then alternately one 9-byte command write and one 13-byte status read, one transfer
-// every kTransferPeriodMs ticks (LEGO's firmware uses 1 ms; 2 ms still puts a new motor command on
-// the wire every 4 ms and halves the TWI interrupt load, one interrupt per byte). A transfer still busy after kTimeoutMs, a NACK, or kMaxBadFrames bad checksums in a row
-// restart from the handshake. Bus: read(addr) / write(addr, value) register access.
+// in the TWI interrupt (highest priority, edge-triggered: one interrupt per rising TXRDY/RXRDY/NACK).
+// Sequence: bus reset -> handshake (47 bytes) -> 2 ms pause -> then alternately one 9-byte command
+// write and one 13-byte status read, one transfer every kTransferPeriodMs ticks (LEGO's firmware uses
+// 1 ms; 2 ms still puts a new motor command on the wire every 4 ms and halves the TWI interrupt load).
+// Done as LEGO's d_ioctrl.r does it on the same chip: a write starts when its first byte is written to
+// THR (no START) and ends with the STOP the TWI sends by itself once THR and the shifter are empty (no
+// STOP asked); a read starts with START and asks STOP while its last byte arrives; the next transfer
+// starts only once SR.TXCOMP says the previous STOP went out. A transfer still busy after kTimeoutMs,
+// a NACK, or kMaxBadFrames bad checksums in a row restart from the handshake.
+// Bus: read(addr) / write(addr, value) register access.
 template <class Bus>
 class AvrLink {
  public:
@@ -61,7 +66,7 @@ class AvrLink {
   // 1 ms tick: starts the next transfer when the previous one is over.
   void tick() {
     if (silentMs_ < 0xFFFF) ++silentMs_;
-    if (busy_) {
+    if (busy_ || !lineFree()) {
       if (++busyMs_ >= kTimeoutMs) restart();
       return;
     }
@@ -120,22 +125,24 @@ class AvrLink {
       }
     } else {
       if (!(sr & kTwiSrTxrdy)) return;
-      if (pos_ == len_) {
+      if (pos_ == len_) {  // the last byte is in the shifter: the TWI sends STOP after it by itself
         bus_.write(kTwiIdr, ~0u);
         busy_ = false;
         return;
       }
-      if (len_ - pos_ == 1) bus_.write(kTwiCr, kTwiCrStop);
       bus_.write(kTwiThr, buf_[pos_++]);
     }
   }
 
  private:
+  // The first byte in THR starts the frame (START and the address go first); TXRDY is enabled after
+  // it, so its interrupt comes when that byte moves into the shifter.
   void startWrite(uint8_t n) {
     using namespace reg;
     begin(n, false);
+    bus_.write(kTwiCr, kTwiCrMsen);
     bus_.write(kTwiMmr, static_cast<uint32_t>(kAvrAddress) << 16);
-    bus_.write(kTwiCr, kTwiCrStart | kTwiCrMsen);
+    bus_.write(kTwiThr, buf_[pos_++]);
     bus_.write(kTwiIer, kTwiSrTxrdy | kTwiSrNack);
   }
   void startRead(uint8_t n) {
@@ -144,6 +151,16 @@ class AvrLink {
     bus_.write(kTwiMmr, (static_cast<uint32_t>(kAvrAddress) << 16) | kTwiMmrMread);
     bus_.write(kTwiCr, kTwiCrStart | kTwiCrMsen);
     bus_.write(kTwiIer, kTwiSrRxrdy | kTwiSrNack);
+  }
+  // The previous frame's STOP is out (TXCOMP). A NACK seen here (after the last byte) restarts.
+  bool lineFree() {
+    using namespace reg;
+    const uint32_t sr = bus_.read(kTwiSr);
+    if (sr & kTwiSrNack) {
+      restart();
+      return false;
+    }
+    return (sr & kTwiSrTxcomp) != 0;
   }
   void begin(uint8_t n, bool reading) {
     len_ = n;
@@ -168,6 +185,7 @@ class AvrLink {
     bus_.write(kTwiCr, kTwiCrSwrst | kTwiCrMsdis);
     bus_.write(kTwiCr, kTwiCrMsen);
     busy_ = false;
+    busyMs_ = 0;
     badInRow_ = 0;
     ++restarts_;
     state_ = State::Down;

@@ -10,39 +10,60 @@ namespace nxtmap::fw::test {
 namespace {
 using namespace reg;
 
-// The TWI controller plus the AVR behind it, at register level: a START with MREAD clear opens a
-// write transfer (bytes arrive through THR, TXRDY always set); with MREAD set it opens a read
-// whose bytes come from `reply` through RHR (RXRDY while bytes remain). `nackNext` answers the
-// next transfer with NACK.
+// The TWI controller plus the AVR behind it, at register level: with MREAD clear the first THR write
+// opens a write transfer (bytes arrive through THR, TXRDY always set; the transfer ends by itself, so a
+// STOP asked during a write is counted in `stopsInWrite`); with MREAD set a START opens a read whose
+// bytes come from `reply` through RHR (RXRDY while bytes remain). TXCOMP is set while no transfer is
+// active, and `txcompHeld` keeps it clear (a STOP still on the wire). `nackNext` answers the next
+// transfer with NACK.
 struct TwiAvr {
   FakeBus bus;
   std::vector<std::vector<uint8_t>> writes;  // completed write transfers
   std::vector<uint8_t> reply;                // the next 13-byte status frame
   size_t replyPos = 0;
-  int reads = 0;
-  bool reading = false, active = false, nackNext = false, nacking = false;
+  int reads = 0, startsInWrite = 0, stopsInWrite = 0;
+  bool reading = false, active = false, nackNext = false, nacking = false, txcompHeld = false;
+
+  void open() {
+    EXPECT_EQ((bus.regs[kTwiMmr] >> 16) & 0x7F, 1u);  // AVR address
+    EXPECT_FALSE(active) << "a transfer started before the last one ended";
+    EXPECT_FALSE(txcompHeld) << "a transfer started before TXCOMP";
+    active = true;
+    nacking = nackNext;
+    nackNext = false;
+  }
 
   TwiAvr() {
     bus.onWrite = [this](uint32_t a, uint32_t v) {
+      const bool mread = (bus.regs[kTwiMmr] & kTwiMmrMread) != 0;
       if (a == kTwiCr && (v & kTwiCrStart)) {
-        reading = (bus.regs[kTwiMmr] & kTwiMmrMread) != 0;
-        EXPECT_EQ((bus.regs[kTwiMmr] >> 16) & 0x7F, 1u);  // AVR address
-        active = true;
-        nacking = nackNext;
-        nackNext = false;
-        if (reading) {
-          replyPos = 0;
-          ++reads;
-        } else {
+        if (!mread) {
+          ++startsInWrite;
+          return;
+        }
+        open();
+        reading = true;
+        replyPos = 0;
+        ++reads;
+      }
+      if (a == kTwiCr && (v & kTwiCrStop) && !mread) ++stopsInWrite;
+      if (a == kTwiThr) {
+        EXPECT_FALSE(mread);
+        if (!active) {
+          open();
+          reading = false;
           writes.emplace_back();
         }
+        writes.back().push_back(static_cast<uint8_t>(v));
       }
-      if (a == kTwiThr) writes.back().push_back(static_cast<uint8_t>(v));
     };
     bus.onRead = [this](uint32_t a, uint32_t& v) {
       if (a == kTwiSr) {
         v = 0;
-        if (!active) return true;
+        if (!active) {
+          v = txcompHeld ? 0 : kTwiSrTxcomp;
+          return true;
+        }
         if (nacking)
           v = kTwiSrNack;
         else if (reading)
@@ -131,16 +152,34 @@ TEST(AvrLink, HandshakeThenAlternatingCommandAndStatusFrames) {
   EXPECT_EQ(link.silentMs(), 0);
 }
 
-TEST(AvrLink, StopIsRequestedBeforeTheLastByteOfEachTransfer) {
+TEST(AvrLink, WritesStartAtTheirFirstByteAndEndByThemselvesReadsAskStop) {
   TwiAvr twi;
   AvrLink<FakeBus> link(twi.bus);
   link.init(kMck);
   twi.setStatus(0, 0);
   tickAndServe(twi, link, 5 + AvrLink<FakeBus>::kTransferPeriodMs);  // handshake, settle, write, read
-  // Between the last START and the end: a STOP before the final THR byte / before reading the last byte.
+  ASSERT_EQ(twi.writes.size(), 2u);
+  EXPECT_EQ(twi.reads, 1);
+  EXPECT_EQ(twi.startsInWrite, 0);  // LEGO's d_ioctrl.r: THR starts a write
+  EXPECT_EQ(twi.stopsInWrite, 0);   // and the TWI ends it (THR and shifter empty)
   int stops = 0;
   for (uint32_t v : twi.bus.writesTo(kTwiCr)) stops += (v & kTwiCrStop) ? 1 : 0;
-  EXPECT_EQ(stops, 3);  // handshake, command, status
+  EXPECT_EQ(stops, 1);  // the status read's, before its last byte
+}
+
+TEST(AvrLink, TheNextTransferWaitsForTxcomp) {
+  TwiAvr twi;
+  AvrLink<FakeBus> link(twi.bus);
+  link.init(kMck);
+  twi.setStatus(0, 0);
+  tickAndServe(twi, link, 4);  // handshake + settle
+  twi.txcompHeld = true;       // the handshake's STOP not yet sent
+  tickAndServe(twi, link, 3 * AvrLink<FakeBus>::kTransferPeriodMs);
+  EXPECT_EQ(twi.writes.size(), 1u);
+  EXPECT_EQ(twi.reads, 0);
+  twi.txcompHeld = false;
+  tickAndServe(twi, link, 1);
+  EXPECT_EQ(twi.writes.size(), 2u);  // the command goes as soon as TXCOMP is back
 }
 
 TEST(AvrLink, ThreeBadChecksumsInARowRestartWithTheHandshake) {

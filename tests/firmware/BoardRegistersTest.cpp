@@ -54,6 +54,8 @@ TEST(Aic, InstallSetsPriorityVectorAndEnablesTheSource) {
   EXPECT_EQ(bus.regs[kAicSmr + 4 * kIdTwi], 7u);  // level-sensitive, priority 7
   EXPECT_EQ(bus.regs[kAicSvr + 4 * kIdTwi], 0x100abcu);
   EXPECT_EQ(bus.regs[kAicIecr], 1u << kIdTwi);
+  aic.install(kIdTwi, 7, 0x100abc, Aic<FakeBus>::Trigger::Edge);
+  EXPECT_EQ(bus.regs[kAicSmr + 4 * kIdTwi], 0x27u);  // internal edge-triggered (SRCTYPE 1), priority 7
 }
 
 }  // namespace
