@@ -13,17 +13,28 @@ uint64_t Twi::byteCycles() const {
 void Twi::reset() {
   mmr_ = iadr_ = cwgr_ = imr_ = rhr_ = 0;
   sr_ = kTxcomp | kTxrdy;
-  enabled_ = inFrame_ = reading_ = stopAsked_ = thrFull_ = false;
+  enabled_ = inFrame_ = reading_ = stopAsked_ = thrFull_ = dataOnWire_ = false;
   busyUntil_ = kNever;
   frame_.clear();
 }
 
 void Twi::startByte() { busyUntil_ = clock_.now + byteCycles(); }
 
+// START and the address byte go out now; THR's byte, if any, follows it.
+void Twi::startWriteFrame() {
+  inFrame_ = true;
+  reading_ = false;
+  dataOnWire_ = false;
+  frame_.clear();
+  sr_ &= ~kTxcomp;
+  startByte();
+}
+
 void Twi::endFrame() {
   if (!reading_ && (mmr_ >> 16 & 0x7F) == AvrModel::kAddress) avr_.receive(frame_);
   inFrame_ = false;
   stopAsked_ = false;
+  dataOnWire_ = false;
   busyUntil_ = kNever;
   sr_ |= kTxcomp | kTxrdy;
   ++frames_;
@@ -48,15 +59,27 @@ void Twi::advanceTo(uint64_t now) {
         break;
       }
       busyUntil_ += byteCycles();
-    } else {
-      if (thrFull_) {
-        frame_.push_back(thr_);
-        thrFull_ = false;
-        sr_ |= kTxrdy;
-        busyUntil_ += byteCycles();
+    } else if (dataOnWire_ && stopAsked_) {  // STOP after the data byte just sent
+      const uint64_t end = busyUntil_;
+      endFrame();
+      if (thrFull_) {  // the byte left in THR starts the next frame
+        const uint64_t saved = clock_.now;
+        clock_.now = end;
+        startWriteFrame();
+        clock_.now = saved;
+        sr_ &= ~kTxrdy;
       } else {
-        endFrame();  // shifter and THR empty: STOP
+        break;
       }
+    } else if (thrFull_) {  // THR into the shifter
+      frame_.push_back(thr_);
+      thrFull_ = false;
+      dataOnWire_ = true;
+      sr_ |= kTxrdy;
+      busyUntil_ += byteCycles();
+    } else {
+      endFrame();  // shifter and THR empty: STOP
+      break;
     }
   }
 }
@@ -88,7 +111,8 @@ bool Twi::write(uint32_t off, uint32_t v) {
       }  // SWRST
       if (v & 4) enabled_ = true;
       if (v & 8) enabled_ = false;
-      if ((v & 1) && enabled_ && (mmr_ & (1u << 12))) {  // START of a read frame
+      if ((v & 1) && enabled_ && !inFrame_ && !(mmr_ & (1u << 12))) startWriteFrame();  // START of a write frame
+      if ((v & 1) && enabled_ && (mmr_ & (1u << 12))) {                                 // START of a read frame
         reading_ = true;
         inFrame_ = true;
         readIndex_ = 0;
@@ -97,7 +121,7 @@ bool Twi::write(uint32_t off, uint32_t v) {
         startByte();  // address byte; the first data byte follows
         busyUntil_ += byteCycles();
       }
-      if (v & 2) stopAsked_ = true;
+      if (v & 2) stopAsked_ = inFrame_;  // not kept for a later frame when no frame is open
       return true;
     case 0x04: mmr_ = v; return true;
     case 0x0C: iadr_ = v; return true;
@@ -109,13 +133,7 @@ bool Twi::write(uint32_t off, uint32_t v) {
       thr_ = static_cast<uint8_t>(v);
       thrFull_ = true;
       sr_ &= ~kTxrdy;
-      if (!inFrame_) {  // the first byte starts a write frame (address byte goes first)
-        inFrame_ = true;
-        reading_ = false;
-        frame_.clear();
-        sr_ &= ~kTxcomp;
-        startByte();
-      }
+      if (!inFrame_) startWriteFrame();  // the first byte starts a write frame (the address goes first)
       return true;
     default: return false;
   }

@@ -45,8 +45,7 @@ inline bool twiWrite(const uint8_t* b, int n) {
   REG(kTwiMmr) = 1u << 16;
   for (int i = 0; i < n; ++i) {
     while (!(REG(kTwiSr) & 4)) {}
-    if (i == n - 1) REG(kTwiCr) = 2;
-    REG(kTwiThr) = b[i];
+    REG(kTwiThr) = b[i];  // the first byte starts the frame; STOP follows by itself once THR runs dry
   }
   uint32_t sr;
   while (!((sr = REG(kTwiSr)) & 1)) {}
