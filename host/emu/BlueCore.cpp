@@ -11,6 +11,11 @@ constexpr uint64_t kPollCycles = kMckHz / 1000;       // the PC side is polled e
 // expect it), most significant byte first, then the seventh byte LEGO's messages carry (0). Reported for
 // GET_LOCAL_ADDR (0x27 -> 0x28) and as the caller's address in REQUEST_CONNECTION.
 const std::vector<uint8_t> kBdAddr{0x00, 0x16, 0x53, 0x0E, 0x4D, 0x5A, 0x00};
+// The PC that dials in: its name and class of device (major class computer, minor desktop), as LOOKUP_NAME
+// reports them. LIST_RESULT's status for a device stored (LEGO's c_comm.iom LR_SUCCESS).
+constexpr char kPcName[] = "nxtmap PC";
+const std::vector<uint8_t> kPcClass{0x00, 0x01, 0x04, 0x00};
+constexpr uint8_t kListSuccess = 0x50;
 std::vector<uint8_t> name16(const std::string& s) {
   std::vector<uint8_t> v(16, 0);
   std::copy_n(s.begin(), std::min<size_t>(s.size(), 15), v.begin());
@@ -89,7 +94,11 @@ void BlueCore::command(const std::vector<uint8_t>& f) {
       flushBurst();  // the stream's last bytes leave before the link closes
       connected_ = requested_ = streamOpen_ = false;
       reply(0x1A, {1, 1});
-      break;                                                                   // CLOSE_CONNECTION
+      break;                          // CLOSE_CONNECTION
+    case 0x04: lookUpName(f); break;  // LOOKUP_NAME
+    case 0x05:                        // ADD_DEVICE (address, name, class): stored -> LIST_RESULT LR_SUCCESS
+      reply(0x17, {kListSuccess});
+      break;
     case 0x0C: reply(0x0D, {0, 0}); break;                                     // START_HEART -> HEARTBEAT
     case 0x2F: reply(0x30, {1, 0x1F}); break;                                  // GET_VERSION
     case 0x27: reply(0x28, kBdAddr); break;                                    // GET_LOCAL_ADDR
@@ -106,6 +115,23 @@ void BlueCore::command(const std::vector<uint8_t>& f) {
     case 0x23: reply(0x24, {0xFF}); break;                                     // GET_LINK_QUALITY
     default: unknown_.push_back(cmd); break;
   }
+}
+
+// LOOKUP_NAME [address 7]: the connected PC answers with its name -> LOOKUP_NAME_RESULT [address 7][name 16]
+// [class of device 4] (LEGO's firmware asks it after accepting a connection, and adds the PC to its device
+// list); any other address is out of reach -> LOOKUP_NAME_FAILURE [address 7].
+void BlueCore::lookUpName(const std::vector<uint8_t>& f) {
+  std::vector<uint8_t> address(7, 0);
+  for (size_t i = 0; i < 7 && 1 + i < f.size(); ++i) address[i] = f[1 + i];
+  if (!connected_ || address != kBdAddr) {
+    reply(0x12, address);
+    return;
+  }
+  std::vector<uint8_t> p = address;
+  const std::vector<uint8_t> name = name16(kPcName);
+  p.insert(p.end(), name.begin(), name.end());
+  p.insert(p.end(), kPcClass.begin(), kPcClass.end());
+  reply(0x11, p);
 }
 
 void BlueCore::flushBurst() {

@@ -2,8 +2,10 @@
 // Command mode (ARM7_CMD = PA27 low): frames [len][cmd][payload][csum BE], TX checksum over cmd+payload,
 // RX checksum including the length byte. After RESET (PA11) rises it sends RESET_INDICATION; it answers the
 // usual queries; a PC connecting on the LinkEndpoint while the port is open raises REQUEST_CONNECTION;
-// ACCEPT_CONNECTION -> CONNECT_RESULT; OPEN_STREAM -> the CMD signal (ADC channel 6) goes high; then with
-// PA27 high bytes pass through unchanged both ways (stream mode).
+// ACCEPT_CONNECTION -> CONNECT_RESULT; LOOKUP_NAME of the connected PC -> LOOKUP_NAME_RESULT (its name and
+// class), ADD_DEVICE -> LIST_RESULT success (LEGO's firmware does both before it opens the stream);
+// OPEN_STREAM -> the CMD signal (ADC channel 6) goes high; then with PA27 high bytes pass through
+// unchanged both ways (stream mode).
 // The ARM selects the mode with ARM7_CMD (PA27): high = data, low = command. In data mode the ARM's bytes
 // are stream data (lost when no stream is open) and only the PC's bytes reach it; in command mode only
 // the module's messages do. So when the PC hangs up (the CMD signal drops, CLOSE_CONNECTION_RESULT is
@@ -66,6 +68,7 @@ class BlueCore : public SerialPeer, public IoDevice {
  private:
   void command(const std::vector<uint8_t>& f);  // [cmd][payload...] of a checked frame
   void reply(uint8_t cmd, const std::vector<uint8_t>& payload);
+  void lookUpName(const std::vector<uint8_t>& f);
   void pollLink();
   void flushBurst();                                        // hands the gathered stream bytes to the PC in one send
   bool dataMode() const { return pio_.level(kArmCmdPin); }  // ARM7_CMD high

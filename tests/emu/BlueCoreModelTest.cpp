@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
 #include <vector>
 
 namespace nxtmap::emu::test {
@@ -115,6 +116,47 @@ TEST(BlueCoreModel, TheHangUpMessageWaitsForCommandModeAndStreamBytesAreNeverCom
   EXPECT_EQ(arm.bc4.commandsSeen(), commands + 1);
   EXPECT_EQ(arm.bc4.badFrames(), 0u);
   EXPECT_TRUE(arm.pc.fromBrick.empty());
+}
+
+// LEGO's firmware 1.29 accepts a PC as c_comm.c's UPD_CONNECTREQ does: ACCEPT_CONNECTION, LOOKUP_NAME of the
+// caller, ADD_DEVICE, then OPEN_STREAM. Rows: the command, the module's answer (codes, then the payload of
+// the first), and whether a stream opens after OPEN_STREAM.
+TEST(BlueCoreModel, LegosConnectSequenceLooksUpThePcAndAddsItBeforeTheStreamOpens) {
+  const std::vector<uint8_t> caller{0x00, 0x16, 0x53, 0x0E, 0x4D, 0x5A, 0x00};  // as REQUEST_CONNECTION gives it
+  std::vector<uint8_t> lookUp{0x04};
+  lookUp.insert(lookUp.end(), caller.begin(), caller.end());
+  std::vector<uint8_t> other = lookUp;
+  other[6] = 0x77;
+  std::vector<uint8_t> addDevice{0x05};
+  addDevice.insert(addDevice.end(), caller.begin(), caller.end());
+  addDevice.resize(addDevice.size() + 16 + 4, 0);
+  ArmSide arm;
+  arm.command({0x03});
+  arm.messages();
+  arm.command(lookUp);
+  EXPECT_EQ(arm.messages(), std::vector<uint8_t>{0x12}) << "no PC connected: LOOKUP_NAME_FAILURE";
+  arm.pc.pcConnected = true;
+  arm.advanceMs(2);
+  EXPECT_EQ(arm.messages(), std::vector<uint8_t>{0x16});
+  arm.command({0x09, 1});
+  EXPECT_EQ(arm.messages(), std::vector<uint8_t>{0x13});
+  arm.command(other);
+  EXPECT_EQ(arm.messages(), std::vector<uint8_t>{0x12}) << "another address: LOOKUP_NAME_FAILURE";
+  arm.command(lookUp);
+  const std::vector<uint8_t> r = arm.received();
+  ASSERT_EQ(r.size(), 1u + 1 + 7 + 16 + 4 + 2);  // [len][0x11][address][name][class][checksum]
+  EXPECT_EQ(r[1], 0x11);
+  EXPECT_EQ(std::vector<uint8_t>(r.begin() + 2, r.begin() + 9), caller);
+  EXPECT_EQ(std::string(reinterpret_cast<const char*>(&r[9])), "nxtmap PC");
+  arm.command(addDevice);
+  const std::vector<uint8_t> list = arm.received();
+  ASSERT_EQ(list.size(), 5u);
+  EXPECT_EQ(list[1], 0x17);  // LIST_RESULT
+  EXPECT_EQ(list[2], 0x50);  // LR_SUCCESS
+  EXPECT_TRUE(arm.bc4.unknownCommands().empty());
+  arm.command({0x0B, 1});
+  arm.armCmd(true);
+  EXPECT_TRUE(arm.bc4.streaming());
 }
 
 TEST(BlueCoreModel, TheBytesOfALostLinkNeverReachTheNextPc) {

@@ -43,8 +43,9 @@ class Driver {
       : script_(script), o_(o), radio_(radio), out_(out) {}
 
   // One event boundary; true when the script is over.
-  bool step(double nowMs, bool streaming, double drivenCm) {
-    takeReplies(nowMs, drivenCm);
+  bool step(double nowMs, bool streaming, double drivenCm, double motorADeg) {
+    motorADeg_ = motorADeg;
+    takeReplies(nowMs, drivenCm, motorADeg);
     while (!waiting_.empty() && nowMs - out_.exchanges[waiting_.front()].sentMs > o_.replyTimeoutMs) {
       waiting_.pop_front();  // missing: the next reply goes to the next request
       readyAtMs_ = nowMs + o_.gapMs;
@@ -63,6 +64,7 @@ class Driver {
       e.request = r;
       e.sentMs = nowMs;
       e.drivenCmAtSend = drivenCm;
+      e.motorADegAtSend = motorADeg_;
       const Bytes f = framed(r);
       radio_.toBrick.insert(radio_.toBrick.end(), f.begin(), f.end());
       if (replySize(r) > 0) waiting_.push_back(out_.exchanges.size());
@@ -72,7 +74,7 @@ class Driver {
     readyAtMs_ = nowMs + o_.gapMs;
   }
 
-  void takeReplies(double nowMs, double drivenCm) {
+  void takeReplies(double nowMs, double drivenCm, double motorADeg) {
     if (!radio_.fromBrick.empty()) {
       splitter_.push(radio_.fromBrick.data(), radio_.fromBrick.size());
       radio_.fromBrick.clear();
@@ -93,6 +95,7 @@ class Driver {
       e.answered = true;
       e.repliedMs = nowMs;
       e.drivenCmAtReply = drivenCm;
+      e.motorADegAtReply = motorADeg;
       if (waiting_.empty()) readyAtMs_ = nowMs + o_.gapMs;
     }
   }
@@ -104,6 +107,7 @@ class Driver {
   TelegramSplitter splitter_;
   std::deque<size_t> waiting_;  // exchanges waiting for their reply, oldest first
   size_t next_ = 0;
+  double motorADeg_ = 0;
   double readyAtMs_ = 0;
 };
 
@@ -147,7 +151,8 @@ SessionResult runSession(const std::vector<Step>& script, const SessionOptions& 
   bool over = false;
   run.onEvent = [&](uint64_t cycles) {
     const Brick& b = emulated->brick();
-    over = driver.step(static_cast<double>(cycles) / kCyclesPerMs, b.blueCore().streaming(), b.drive().drivenCm());
+    over = driver.step(static_cast<double>(cycles) / kCyclesPerMs, b.blueCore().streaming(), b.drive().drivenCm(),
+                       b.drive().wheelDeg(0));
     return over;
   };
   EmulatedRun e(*load.image, *world.world, run);

@@ -26,6 +26,8 @@ struct Exchange {
   double repliedMs = 0;       // when its reply was whole on the PC's side
   double drivenCmAtSend = 0;  // the robot's driven distance then (cm), to tell exchanges while driving
   double drivenCmAtReply = 0;
+  double motorADegAtSend = 0;  // motor A's encoder in the emulated drive (degrees, signed)
+  double motorADegAtReply = 0;
   double roundTripMs() const { return repliedMs - sentMs; }
   bool whileDriving() const { return drivenCmAtReply > drivenCmAtSend; }
 };

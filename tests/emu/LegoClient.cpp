@@ -32,6 +32,13 @@ Bytes messageRead(uint8_t remoteInbox, uint8_t localInbox, bool remove) {
 }
 
 Bytes getOutputState(uint8_t port) { return command(kDirect, kGetOutputState, true, {port}); }
+Bytes setOutputState(uint8_t port, int8_t power, uint8_t mode, uint8_t regulation, int8_t turnRatio, uint8_t runState,
+                     uint32_t tachoLimit, bool reply) {
+  return command(kDirect, kSetOutputState, reply,
+                 {port, static_cast<uint8_t>(power), mode, regulation, static_cast<uint8_t>(turnRatio), runState,
+                  static_cast<uint8_t>(tachoLimit), static_cast<uint8_t>(tachoLimit >> 8),
+                  static_cast<uint8_t>(tachoLimit >> 16), static_cast<uint8_t>(tachoLimit >> 24)});
+}
 Bytes getInputValues(uint8_t port) { return command(kDirect, kGetInputValues, true, {port}); }
 Bytes playTone(uint16_t hz, uint16_t ms, bool reply) {
   return command(kDirect, kPlayTone, reply, {lo(hz), hi(hz), lo(ms), hi(ms)});

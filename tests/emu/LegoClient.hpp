@@ -50,6 +50,12 @@ Bytes keepAlive(bool reply = true);
 Bytes messageWrite(uint8_t inbox, const std::string& text, bool reply = true);  // text + NUL, 1..59 bytes
 Bytes messageRead(uint8_t remoteInbox, uint8_t localInbox, bool remove);
 Bytes getOutputState(uint8_t port);  // port 0..2 = A..C
+// SET_OUTPUT_STATE: power -100..100, mode bits (MOTORON 1, BRAKE 2, REGULATED 4), regulation mode (IDLE 0,
+// MOTOR_SPEED 1, MOTOR_SYNC 2), turn ratio -100..100, run state (IDLE 0, RAMPUP 0x10, RUNNING 0x20,
+// RAMPDOWN 0x40), tacho limit in degrees (0 = run forever).
+constexpr uint8_t kMotorOn = 0x01, kBrake = 0x02, kRegulated = 0x04, kRegulationSpeed = 0x01, kRunning = 0x20;
+Bytes setOutputState(uint8_t port, int8_t power, uint8_t mode, uint8_t regulation, int8_t turnRatio, uint8_t runState,
+                     uint32_t tachoLimit, bool reply = true);
 Bytes getInputValues(uint8_t port);  // port 0..3 = 1..4
 Bytes playTone(uint16_t hz, uint16_t ms, bool reply = true);
 Bytes setInputMode(uint8_t port, uint8_t type, uint8_t mode, bool reply = true);
