@@ -36,14 +36,23 @@ Pilot::Pilot(Explorer& explorer, const PilotConfig& config)
     : explorer_(explorer),
       config_(config),
       tracker_(config.noise),
+#ifndef NXTMAP_NO_START_SQUARING
+      squaring_(config.squareSweepMrad, config.squareStepMrad),
+#endif
       cellMm_(static_cast<int32_t>(explorer.config().geometry.cellCm) * 10),
-      poseCells_(poseCellsFor(explorer.config().geometry, config.poseRangeCm)) {}
+      poseCells_(poseCellsFor(explorer.config().geometry, config.poseRangeCm)) {
+}
 
 Counters Pilot::counters() const {
   Counters c = explorer_.counters();
   c.sensorRequests += poseReads_;
   c.rawSamples += poseSamples_;
   c.correctionMrad += correctionMrad_;
+#ifndef NXTMAP_NO_START_SQUARING
+  c.sensorRequests += squaring_.readings();
+  c.rawSamples += squaring_.samples();
+  c.correctionMrad += squaring_.turnedMrad();
+#endif
   return c;
 }
 
@@ -197,6 +206,28 @@ DriveAction Pilot::levelling() const {
   return DriveAction::rotate(-tracker_.thetaMrad());
 }
 
+DriveAction Pilot::startExplorer(int64_t headingVarianceMrad2) {
+  tracker_.reset(headingVarianceMrad2);
+  readHere_ = 0;
+  startRun();
+  return begin(explorer_.step(Event::startAt(startPose_)));
+}
+
+DriveAction Pilot::square(const DriveEvent& e) {
+#ifdef NXTMAP_NO_START_SQUARING
+  (void)e;
+  NXTMAP_CHECK(false);  // never in Phase::Square without the sweep
+  return DriveAction::done();
+#else
+  const DriveAction a = squaring_.step(e);
+  if (!squaring_.finished()) return a;
+  // Square (or as set down, with no wall seen): the tracker starts with what is left of the heading error.
+  const int64_t sigma = squaring_.result().found ? config_.squaredHeadingMrad : 0;
+  const int64_t residual = squaring_.residualMrad();
+  return startExplorer(config_.startHeadingVarianceMrad2 + sigma * sigma + residual * residual);
+#endif
+}
+
 DriveAction Pilot::begin(const Action& a) {
   pending_ = a;
   switch (a.kind) {
@@ -280,12 +311,16 @@ DriveAction Pilot::driveToCentre() {
 
 DriveAction Pilot::step(const DriveEvent& e) {
   switch (e.kind) {
-    case DriveEvent::Kind::Start:
-      tracker_.reset(config_.startHeadingVarianceMrad2);
-      readHere_ = 0;
-      startRun();
-      return begin(explorer_.step(Event::startAt(e.pose)));
+    case DriveEvent::Kind::Start: startPose_ = e.pose;
+#ifndef NXTMAP_NO_START_SQUARING
+      if (config_.squareSweepMrad > 0) {
+        phase_ = Phase::Square;
+        return squaring_.begin();
+      }
+#endif
+      return startExplorer(config_.startHeadingVarianceMrad2);
     case DriveEvent::Kind::Range:
+      if (phase_ == Phase::Square) return square(e);
       observe(e.sensor, e.reading);
       if (phase_ == Phase::PoseRead) {
         ++poseReads_;
@@ -296,6 +331,7 @@ DriveAction Pilot::step(const DriveEvent& e) {
         return begin(explorer_.step(Event::range(e.sensor, centred(e.sensor, e.reading))));
       break;
     case DriveEvent::Kind::Rotated:
+      if (phase_ == Phase::Square) return square(e);
       if (phase_ == Phase::Level) {
         tracker_.rotated(e.measured ? e.achieved : commandMrad_, 0);
         phase_ = Phase::ExplorerRead;

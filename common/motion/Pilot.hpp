@@ -7,6 +7,7 @@
 #include "common/motion/DriveAction.hpp"
 #include "common/motion/DriveEvent.hpp"
 #include "common/motion/PoseTracker.hpp"
+#include "common/motion/StartSquaring.hpp"
 
 namespace nxtmap {
 
@@ -35,6 +36,13 @@ struct PilotConfig {
   // How uncertain the heading is at the start (mrad^2): 0 for a robot put down on the axis; a robot
   // handed over by another pilot starts with that pilot's handOverHeadingVariance().
   int64_t startHeadingVarianceMrad2 = 0;
+  // A robot set down off square turns square to the room's walls before the explorer starts
+  // (StartSquaring): the half-width of its sweep, mrad (1571: +-90 deg, any angle). 0: it starts as it
+  // stands (the published set-up, and every room after the first, entered square through its doorway).
+  int16_t squareSweepMrad = 0;
+  int16_t squareStepMrad = 87;  // between the sweep's headings
+  // How well the squared heading is known (1 sigma, mrad): the estimate's spread plus the final turn's.
+  int16_t squaredHeadingMrad = 20;
 };
 
 // Pilot: between the explorer (cells, quarter turns) and the wheels (mm, mrad). It carries out
@@ -67,6 +75,10 @@ class Pilot {
   // The heading's variance (mrad^2) once levelling() is carried out: what the next pilot starts with.
   int64_t handOverHeadingVariance() const;
 
+  // What the start's sweep found (not found when the pilot does not square, see PilotConfig).
+#ifndef NXTMAP_NO_START_SQUARING
+  const StartSquaring& squaring() const { return squaring_; }
+#endif
   // The explorer's counters plus the pilot's own pose readings and correction rotations.
   Counters counters() const;
   const PoseTracker& tracker() const { return tracker_; }
@@ -74,8 +86,10 @@ class Pilot {
   uint32_t poseReadings() const { return poseReads_; }
 
  private:
-  enum class Phase : uint8_t { Idle, Level, ExplorerRead, PoseRead, Turn, Steer, Drive, Think, Done };
+  enum class Phase : uint8_t { Idle, Square, Level, ExplorerRead, PoseRead, Turn, Steer, Drive, Think, Done };
 
+  DriveAction startExplorer(int64_t headingVarianceMrad2);
+  DriveAction square(const DriveEvent& e);  // the start's sweep (Phase::Square)
   DriveAction begin(const Action& a);
   DriveAction beginMove();
   DriveAction driveToCentre();
@@ -98,6 +112,10 @@ class Pilot {
   Explorer& explorer_;
   PilotConfig config_;
   PoseTracker tracker_;
+#ifndef NXTMAP_NO_START_SQUARING  // the RAM-run firmware image has no room for the sweep's code
+  StartSquaring squaring_;
+#endif
+  Pose startPose_{};  // where the explorer starts once the robot is square
   int32_t cellMm_;
   int16_t poseCells_;  // cells out to which known walls are pose landmarks (>= the mapping range's)
   Phase phase_ = Phase::Idle;

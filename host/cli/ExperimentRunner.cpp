@@ -89,6 +89,7 @@ mapping::RunConfig scenarioConfig(const report::Scenario& s, const SuiteSettings
   mapping::RunConfig c = scenarioConfig(s, settings.strategy, parseNoise(settings.noise), seed);
   c.robot = settings.robot;
   c.startJitterDeg = settings.startJitterDeg;
+  c.squareAtStart = settings.squareAtStart;
   c.grid = settings.grid;
   return c;
 }

@@ -36,6 +36,7 @@ struct SuiteSettings {
   int seeds = 1;
   sim::RobotDescription robot = *sim::robotByName("published");
   double startJitterDeg = 0.0;
+  bool squareAtStart = false;  // the pilot turns square to the walls before mapping
   mapping::GridCapacity grid = mapping::GridCapacity::brick();
 };
 

@@ -69,6 +69,7 @@ CLI::App* addExperimentsCommand(CLI::App& app, ExperimentsOptions& o) {
   ex->add_option("--plots", o.plots, "write gnuplot figures fig5_3/fig5_4/fig5_6 (.png) into this directory");
   addWorldRunOptions(*ex, o.run);
   addGridOption(*ex, o.run);
+  addSquareOption(*ex, o.run);
   ex->add_option("--seeds", o.seeds, "runs per scenario with seeds 1..N, reported as means (default 1)");
   ex->add_option("--strategy", o.strategy, "propagation, frontier or both (default propagation)");
   return ex;
@@ -84,6 +85,7 @@ int runExperiments(const ExperimentsOptions& o) {
   settings.seeds = o.seeds;
   settings.robot = parseRobot(o.run.robot);
   settings.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
+  settings.squareAtStart = squareAtStart(o.run.square, settings.robot);
   settings.grid = gridOf(o.run);
   if (o.seeds < 1 || o.seeds > 1000) throw CliError("--seeds must lie in 1..1000, not " + std::to_string(o.seeds));
   if (!o.plots.empty() && report::findGnuplot().empty()) {

@@ -98,6 +98,7 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
   addRangeOption(*sim, o.run);
   addWorldRunOptions(*sim, o.run);
   addGridOption(*sim, o.run);
+  addSquareOption(*sim, o.run);
   sim->add_option("--seed", o.seed, "random seed of the noise (default 1)");
   sim->add_option("--strategy", o.strategy, "exploration strategy: propagation, frontier (default propagation)");
   sim->add_option("--show", o.show, "display: live, final, none (default final)");
@@ -107,6 +108,25 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
   return sim;
 }
 
+namespace {
+
+// What the start's sweep found (RunConfig::squareAtStart).
+std::string squareLine(const mapping::MappingRun& run) {
+  const WallDirectionEstimate& e = run.pilot().squaring().result();
+  std::ostringstream out;
+  out << "square           ";
+  if (!e.found) {
+    out << "no straight wall in range (" << int{e.dips} << " dips): mapped as set down";
+  } else {
+    out << "walls " << report::formatNumber(e.mrad * 0.18 / 3.141592653589793, 1) << " deg off the start heading ("
+        << int{e.agreeing} << " of " << int{e.dips} << " dips agree), turned square: left "
+        << report::formatNumber(run.squaredOffDeg(), 1) << " deg off them";
+  }
+  return out.str();
+}
+
+}  // namespace
+
 int runSim(const SimOptions& o) {
   if (printNoiseListIfAsked(o.run)) return kExitOk;
   requirePositional(o.world, "sim: world");
@@ -114,6 +134,7 @@ int runSim(const SimOptions& o) {
   const sim::RobotDescription robot = robotOf(o.run);
   config.robot = robot;
   config.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
+  config.squareAtStart = squareAtStart(o.run.square, robot);
   config.noise = parseNoise(o.run.noise);
   config.seed = parseSeed(o.seed);
   parseHeading(o.heading);
@@ -166,13 +187,14 @@ int runSim(const SimOptions& o) {
       << robot.cellCm << " cm, robot " << robot.name << ", start " << run.config().startCol << ","
       << run.config().startRow << " heading " << o.heading;
   if (config.startJitterDeg > 0.0) {
-    out << " (set down " << report::formatNumber(run.robot().frame().headingDeg, 1) << " deg off square)";
+    out << " (set down " << report::formatNumber(run.setDownFrameDeg(), 1) << " deg off square)";
   }
   out << ", strategy " << mapping::strategyName(config.strategy) << ", noise " << config.noise.name << ", seed "
       << config.seed << ", range " << report::formatNumber(robot.rangeM) << " m";
   if (!config.grid.isBrick()) out << ", grid " << config.grid.describe();
-  out << "\n"
-      << "end              " << endName(run.explorer().end())
+  out << "\n";
+  if (config.squareAtStart) out << squareLine(run) << "\n";
+  out << "end              " << endName(run.explorer().end())
       << (run.metGridEdge() && run.explorer().end() == ExplorerEnd::Complete ? " (up to the grid's edge)" : "") << "\n"
       << "time units       " << report::formatNumber(c.timeHalfUnits() / 2.0, 1) << "\n"
       << "sensor requests  " << c.sensorRequests << "\n"

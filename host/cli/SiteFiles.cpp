@@ -31,6 +31,13 @@ double checkStartJitter(double jitterDeg) {
   return jitterDeg;
 }
 
+bool squareAtStart(const std::string& square, const sim::RobotDescription& robot) {
+  if (square == "yes") return true;
+  if (square == "no") return false;
+  if (square == "auto") return robot.name == "brick";
+  throw CliError("--square must be auto, yes or no, not '" + square + "'");
+}
+
 namespace {
 
 // "X,Y" or "X,Y,YAW": finite numbers in metres and degrees.
@@ -101,6 +108,12 @@ void addWorldRunOptions(CLI::App& command, WorldRunOptions& o, const std::string
   command.add_option("--start-jitter", o.startJitterDeg,
                      "set the robot down off the start cell's centre and up to DEG degrees off square, drawn per "
                      "seed (0 = square on the centre, the default)");
+}
+
+void addSquareOption(CLI::App& command, WorldRunOptions& o) {
+  command.add_option("--square", o.square,
+                     "before mapping, sweep the sonars on the spot and turn square to the room's walls: auto (the "
+                     "default: the brick does, the published robot does not, as in the paper), yes, no");
 }
 
 void addRangeOption(CLI::App& command, WorldRunOptions& o) {

@@ -25,6 +25,9 @@ sim::Site loadSiteFile(const std::string& path, int cellCm);
 sim::RobotDescription parseRobot(const std::string& text);
 // 0 .. 45 degrees.
 double checkStartJitter(double jitterDeg);
+// --square for `robot`: auto (yes for the brick, no for the published robot, whose runs reproduce the
+// paper's), yes or no; anything else throws CliError.
+bool squareAtStart(const std::string& square, const sim::RobotDescription& robot);
 
 // The robot a firmware image is built for: nxtmap-sim.elf the published set-up, any other the brick.
 std::string robotForFirmware(const std::string& firmwarePath);
@@ -43,12 +46,15 @@ struct WorldRunOptions {
   std::string noise = "ideal";  // a preset name, or "list" to print the presets and exit
   std::string robot = "published";
   double startJitterDeg = 0.0;
-  double rangeM = 0.0;      // --range-m (addRangeOption), when rangeGiven
-  bool rangeGiven = false;  // otherwise the robot's own trusted range
-  std::string grid = "64";  // --grid (addGridOption): room grid cells per side, 64 the brick's
+  std::string square = "auto";  // --square: auto (the brick squares, the published robot does not), yes, no
+  double rangeM = 0.0;          // --range-m (addRangeOption), when rangeGiven
+  bool rangeGiven = false;      // otherwise the robot's own trusted range
+  std::string grid = "64";      // --grid (addGridOption): room grid cells per side, 64 the brick's
 };
 // robotNote: what an unset --robot means (default: "default published").
 void addWorldRunOptions(CLI::App& command, WorldRunOptions& o, const std::string& robotNote = "default published");
+// --square (sim, experiments): the start's wall sweep, see squareAtStart.
+void addSquareOption(CLI::App& command, WorldRunOptions& o);
 // --range-m (sim, sim-house): the trusted maximum range, overriding the robot's.
 void addRangeOption(CLI::App& command, WorldRunOptions& o);
 // --grid (sim, experiments, connect sim:): the room grid the explorer maps into, cells per side.

@@ -2,6 +2,9 @@
 
 #include "host/mapping/SimDrive.hpp"
 #include "host/sim/RobotPlacement.hpp"
+#include "host/sim/SceneAxes.hpp"
+#include "host/sim/StartJitter.hpp"
+#include "host/sim/TruthRaster.hpp"
 
 #include <cmath>
 
@@ -71,8 +74,10 @@ MappingRun::MappingRun(Setup setup, const RunConfig&)
              setup.placed.start.headingDeg, config_.noise, config_.seed, config_.sensorReachCm),
       buffer_(config_.grid),
       stack_(buffer_.memory(), explorerConfigFor(truth_, config_, setup.placed.robot.mountCm)) {
+  setDownFrameDeg_ = robot_.frame().headingDeg;
   PilotConfig pilot;
   pilot.correct = config_.poseCorrection;
+  if (config_.squareAtStart) pilot.squareSweepMrad = 1571;
   last_ = stack_.start(config_.strategy, pilot);
 }
 
@@ -84,7 +89,9 @@ DriveEvent MappingRun::carryOut(const DriveAction& a) {
 
 bool MappingRun::step() {
   if (stack_.finished()) return false;
+  const bool squaring = config_.squareAtStart && !squared_;
   last_ = stack_.step(carryOut(last_));
+  if (squaring && stack_.pilot() != nullptr && stack_.pilot()->squaring().finished()) layTruthSquare();
   return !stack_.finished();
 }
 
@@ -92,6 +99,27 @@ uint64_t MappingRun::runToEnd() {
   uint64_t n = 0;
   while (step()) ++n;
   return n;
+}
+
+void MappingRun::layTruthSquare() {
+  squared_ = true;
+  if (!stack_.pilot()->squaring().result().found) return;  // turned back to where it was set down
+  // The walls' axis nearest to where the robot now faces: the frame it believes it maps in.
+  const double heading = robot_.headingDeg();
+  const double off = std::remainder(heading - sim::sceneAxesDeg(robot_.scene()), 90.0);
+  const double axis = heading - off;
+  squaredOffDeg_ = std::fabs(off);
+  const sim::Heading quarter = static_cast<sim::Heading>(sim::squareQuarter(axis));
+  const double turn = sim::squareRemainderDeg(axis);
+  if (quarter == config_.heading && std::fabs(turn - robot_.frame().headingDeg) < 1e-6) return;  // as laid
+  const sim::Placement p =
+      sim::placeOnGrid(robot_.scene(), sim::Vec2(robot_.xCm(), robot_.yCm()), turn, robot_.frame().cellCm);
+  truth_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, truth_.name());
+  config_.startCol = p.startCol;
+  config_.startRow = p.startRow;
+  config_.heading = quarter;
+  frame_ = FrameTransform(p.startCol, p.startRow, quarter);
+  robot_.setFrame(p.frame);
 }
 
 bool MappingRun::metGridEdge() const {

@@ -23,6 +23,7 @@ struct RunConfig {
   sim::Heading heading = sim::Heading::N;   // initial heading in the world (when startPose is empty)
   std::optional<sim::StartPose> startPose;  // a start in the plane instead of a raster cell
   double startJitterDeg = 0.0;              // > 0: set down off the cell centre and up to this many degrees off square
+  bool squareAtStart = false;               // the pilot turns square to the walls before mapping (StartSquaring)
   // The robot: its cell, body and sensor mounts, and the range it trusts (its minRangeM/rangeM replace the
   // two below). Empty: a point robot of the raster's own cells with the ranges below (the published set-up).
   std::optional<sim::RobotDescription> robot;
@@ -73,6 +74,12 @@ class MappingRun {
   const ExplorerConfig& explorerConfig() const { return stack_.config(); }
   const GridCapacity& grid() const { return buffer_.capacity(); }
 
+  // The grid's turn as the robot was set down, compass degrees (the start jitter's turn).
+  double setDownFrameDeg() const { return setDownFrameDeg_; }
+  // Once the sweep found the walls (RunConfig::squareAtStart): how far, degrees (>= 0), the robot was left
+  // off their nearest axis, the error its map is scored with.
+  double squaredOffDeg() const { return squaredOffDeg_; }
+
   // Whether the room met the grid's edge: the run ended GridFull (a reading or a move beyond the grid), or
   // it left open space unmapped where the grid ends (the frontier explorer stops there and ends Complete).
   bool metGridEdge() const;
@@ -88,7 +95,15 @@ class MappingRun {
   MappingRun(Setup setup, const RunConfig& config);
   DriveEvent carryOut(const DriveAction& a);
 
+  // After the pilot turned square to the walls (RunConfig::squareAtStart): the truth laid again on the grid
+  // the robot now maps in, turned to the scene's walls nearest its heading (sim::sceneAxesDeg), centred where
+  // it stands; what is left of its heading error counts against it.
+  void layTruthSquare();
+
   RunConfig config_;
+  bool squared_ = false;        // layTruthSquare has run
+  double setDownFrameDeg_ = 0;  // the grid's turn as the robot was set down (sim::GridFrame::headingDeg)
+  double squaredOffDeg_ = 0;    // after the sweep: degrees from the robot's heading to the walls' nearest axis
   sim::World truth_;
   FrameTransform frame_;
   sim::SimRobot robot_;

@@ -66,6 +66,7 @@ class SimRobot {
   Heading nominalHeading() const;  // heading against the frame, rounded to 90 degrees
   double cellCm() const { return frame_.cellCm; }
   const GridFrame& frame() const { return frame_; }
+  void setFrame(const GridFrame& frame) { frame_ = frame; }  // the grid col()/row() answer in
   const Scene& scene() const { return *scene_; }
   const RobotDescription& description() const { return robot_; }
   const NoiseProfile& noise() const { return noise_; }

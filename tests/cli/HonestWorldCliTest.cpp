@@ -34,6 +34,21 @@ TEST(HonestWorldCli, ATurnedAndOffsetRoomLoadsRunsAndIsScoredInBothFrames) {
   EXPECT_NE(field(r.out, "aligned").find("to fit the world best: detected"), std::string::npos) << r.out;
 }
 
+TEST(HonestWorldCli, TheBrickTurnsSquareToTheWallsFirstThePublishedRobotOnlyWhenAsked) {
+  const std::string run = "sim " + kTurned + " --start-jitter 10 --show none --seed 2";
+  const RunOutput brick = runCli(run + " --robot brick --noise nxt");
+  ASSERT_EQ(brick.exitCode, 0) << brick.err;
+  EXPECT_EQ(field(brick.out, "square").rfind("square ", 0), 0u) << brick.out;
+  const RunOutput published = runCli(run + " --noise typical");
+  ASSERT_EQ(published.exitCode, 0) << published.err;
+  EXPECT_EQ(field(published.out, "square"), "") << published.out;
+  const RunOutput asked = runCli(run + " --noise typical --square yes");
+  ASSERT_EQ(asked.exitCode, 0) << asked.err;
+  // The room is turned 10 degrees, the robot set down off it: the sweep finds the walls and turns onto them.
+  EXPECT_NE(field(asked.out, "square").find("turned square: left "), std::string::npos) << asked.out;
+  EXPECT_NE(field(asked.out, "square").find("deg off the start heading"), std::string::npos) << asked.out;
+}
+
 TEST(HonestWorldCli, SameSeedSameRunAnotherSeedAnotherStart) {
   const std::string run = "sim " + kLiving + " --robot brick --noise nxt --start-jitter 10 --show none --seed ";
   const RunOutput a = runCli(run + "4"), b = runCli(run + "4"), c = runCli(run + "5");
@@ -92,6 +107,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadWorldCase{"unknownRobot", "sim " + kTurned + " --robot tank", "--robot must be one of published, brick"},
         BadWorldCase{"jitterTooLarge", "sim " + kTurned + " --start-jitter 60", "--start-jitter must be 0 .. 45"},
         BadWorldCase{"jitterNegative", "sim " + kTurned + " --start-jitter=-1", "--start-jitter"},
+        BadWorldCase{"squareMaybe", "sim " + kTurned + " --square maybe", "--square must be auto, yes or no"},
         BadWorldCase{"unknownPreset", "sim " + kTurned + " --noise lego", "--noise must be one of ideal"},
         BadWorldCase{"noWorld", "sim --noise nxt", "sim: world is required"},
         BadWorldCase{"experimentsRobot", "experiments worlds/seed-appendix-a --robot tank", "--robot"},

@@ -1,0 +1,80 @@
+#include "common/motion/StartSquaring.hpp"
+
+#include "common/check/Check.hpp"
+
+namespace nxtmap {
+namespace {
+
+constexpr int32_t abs32(int32_t v) { return v < 0 ? -v : v; }
+
+// A reading's range for the sweep: an echo within the trusted range, or one beyond it the samples agree
+// on (RangeReading::cm of TooFar); 0 for no echo, too near or inconsistent.
+int16_t sweepCm(const RangeReading& r) {
+  if (r.status == RangeStatus::Good || r.status == RangeStatus::TooFar) return r.cm;
+  return 0;
+}
+
+}  // namespace
+
+StartSquaring::StartSquaring(int32_t sweepMrad, int32_t stepMrad) : sweepMrad_(sweepMrad), stepMrad_(stepMrad) {
+  NXTMAP_CHECK(stepMrad > 0 && sweepMrad >= 0 && 2 * sweepMrad / stepMrad < WallDirection::kMaxSteps);
+}
+
+DriveAction StartSquaring::begin() {
+  walls_.clear();
+  result_ = WallDirectionEstimate{};
+  headingMrad_ = targetMrad_ = 0;
+  readings_ = samples_ = turnedMrad_ = 0;
+  return turn(Phase::ToStart, -sweepMrad_);
+}
+
+DriveAction StartSquaring::turn(Phase next, int32_t mrad) {
+  phase_ = next;
+  commandMrad_ = mrad;
+  turnedMrad_ += static_cast<uint32_t>(abs32(mrad));
+  return DriveAction::rotate(mrad);
+}
+
+DriveAction StartSquaring::readNext() {
+  if (sensor_ < kSensorCount) {
+    phase_ = Phase::Read;
+    return DriveAction::read(static_cast<Sensor>(sensor_));
+  }
+  // Every sensor read at this heading: the next one, or the end of the sweep (a last step would pass
+  // +sweep by more than half a step).
+  if (headingMrad_ + stepMrad_ <= sweepMrad_ + stepMrad_ / 2 && walls_.steps() < WallDirection::kMaxSteps)
+    return turn(Phase::Step, stepMrad_);
+  result_ = walls_.estimate();
+  targetMrad_ = result_.found ? result_.mrad : 0;
+  return turn(Phase::ToWalls, targetMrad_ - headingMrad_);
+}
+
+DriveAction StartSquaring::step(const DriveEvent& e) {
+  switch (phase_) {
+    case Phase::ToStart:
+    case Phase::Step:
+    case Phase::ToWalls:
+      if (e.kind != DriveEvent::Kind::Rotated) break;
+      headingMrad_ += e.measured ? e.achieved : commandMrad_;
+      if (phase_ == Phase::ToWalls) {
+        phase_ = Phase::Done;
+        return DriveAction::done();
+      }
+      walls_.addHeading(headingMrad_);
+      sensor_ = 0;
+      return readNext();
+    case Phase::Read:
+      if (e.kind != DriveEvent::Kind::Range || static_cast<uint8_t>(e.sensor) != sensor_) break;
+      walls_.addReading(e.sensor, sweepCm(e.reading));
+      ++readings_;
+      samples_ += e.reading.samples;
+      ++sensor_;
+      return readNext();
+    case Phase::Idle:
+    case Phase::Done: break;
+  }
+  NXTMAP_CHECK(false);  // an event that does not answer the action in progress: a caller's mistake
+  return DriveAction::done();
+}
+
+}  // namespace nxtmap

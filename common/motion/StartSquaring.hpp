@@ -1,0 +1,51 @@
+#pragma once
+#include <cstdint>
+
+#include "common/motion/DriveAction.hpp"
+#include "common/motion/DriveEvent.hpp"
+#include "common/sensing/WallDirection.hpp"
+
+namespace nxtmap {
+
+// StartSquaring: a robot set down a few degrees off square turns square to the room's walls before it
+// maps. Events in, actions out, as the pilot's: it turns to -sweep, then reads its four sensors at every
+// step up to +sweep (the headings the wheels report: DriveEvent::rotatedBy, or as commanded), asks
+// WallDirection where the walls' normals are, and turns onto the nearest one to the heading it was set down
+// on, so the map's north stays within 45 degrees of the robot's start heading. With no wall found it turns
+// back to where it started. Memory: one WallDirection (about 0.5 KiB).
+class StartSquaring {
+ public:
+  // sweepMrad: the sweep's half-width (the default +-90 deg sees a wall at any angle whole);
+  // stepMrad: between headings (5 deg: a dip is 60-75 deg wide). At most WallDirection::kMaxSteps headings.
+  explicit StartSquaring(int32_t sweepMrad = 1571, int32_t stepMrad = 87);
+
+  DriveAction begin();
+  // The answer to the previous action; returns the next. DriveAction::done() once square.
+  DriveAction step(const DriveEvent& e);
+  bool finished() const { return phase_ == Phase::Done; }
+
+  const WallDirectionEstimate& result() const { return result_; }
+  // The robot's heading minus the walls' axis it turned onto, as the encoders tell it (mrad, + clockwise).
+  int32_t residualMrad() const { return headingMrad_ - targetMrad_; }
+  uint32_t readings() const { return readings_; }
+  uint32_t samples() const { return samples_; }
+  uint32_t turnedMrad() const { return turnedMrad_; }
+
+ private:
+  enum class Phase : uint8_t { Idle, ToStart, Read, Step, ToWalls, Done };
+
+  DriveAction turn(Phase next, int32_t mrad);
+  DriveAction readNext();
+
+  int32_t sweepMrad_, stepMrad_;
+  Phase phase_ = Phase::Idle;
+  WallDirection walls_;
+  WallDirectionEstimate result_;
+  int32_t headingMrad_ = 0;  // since the start, as the encoders tell it (+ clockwise)
+  int32_t commandMrad_ = 0;  // the rotation in progress
+  int32_t targetMrad_ = 0;   // the heading to end on
+  uint8_t sensor_ = 0;       // the next sensor to read at this heading
+  uint32_t readings_ = 0, samples_ = 0, turnedMrad_ = 0;
+};
+
+}  // namespace nxtmap

@@ -1,0 +1,150 @@
+// WallDirection against sweeps computed here from geometry: a sonar with a cone (the nearest wall point
+// within +-b of the axis, whole cm) turned on the spot in a rectangular room set at a known angle.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "common/sensing/WallDirection.hpp"
+
+namespace nxtmap {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Room {
+  double west = 80, east = 120, south = 70, north = 90;  // wall distances from the robot's centre, cm
+  double turnedDeg = 0;                                  // the room turned clockwise against the start heading
+};
+
+// Distance from (x, y) along compass angle deg (0 = north, clockwise) to the rectangle's walls (room frame).
+double rayToWalls(const Room& r, double x, double y, double deg) {
+  const double dx = std::sin(deg * kPi / 180), dy = std::cos(deg * kPi / 180);
+  double best = 1e9;
+  if (dx > 1e-9) best = std::min(best, (r.east - x) / dx);
+  if (dx < -1e-9) best = std::min(best, (-r.west - x) / dx);
+  if (dy > 1e-9) best = std::min(best, (r.north - y) / dy);
+  if (dy < -1e-9) best = std::min(best, (-r.south - y) / dy);
+  return best;
+}
+
+// One reading: the sensor `mountCm` out along its axis, facing `facingDeg` (robot frame); cone half-angle b.
+int16_t reading(const Room& r, double facingDeg, double mountCm, double coneDeg) {
+  const double inRoom = facingDeg - r.turnedDeg;  // the ray's compass angle in the room's frame
+  const double fx = mountCm * std::sin(inRoom * kPi / 180), fy = mountCm * std::cos(inRoom * kPi / 180);
+  double best = 1e9;
+  for (double c = -coneDeg; c <= coneDeg + 1e-9; c += 0.25) best = std::min(best, rayToWalls(r, fx, fy, inRoom + c));
+  return best > 255 ? 0 : static_cast<int16_t>(std::lround(best));
+}
+
+// A sweep of +-90 deg in 5 deg steps (as the pilot turns it); `errorCm` adds a fixed error per pose and
+// sensor (-1, 0, +1 cm, repeatable, as the NXT sensor's).
+WallDirection sweep(const Room& r, double mountCm, double coneDeg, bool errorCm = false) {
+  WallDirection w;
+  for (int k = 0; k <= 36; ++k) {
+    const int32_t mrad = -1571 + 87 * k;
+    w.addHeading(mrad);
+    for (int s = 0; s < kSensorCount; ++s) {
+      int16_t cm = reading(r, mrad * 0.18 / kPi + 90.0 * s, mountCm, coneDeg);
+      if (errorCm && cm > 0) cm = static_cast<int16_t>(cm + ((k * 7 + s * 3) % 3) - 1);
+      w.addReading(static_cast<Sensor>(s), cm);
+    }
+  }
+  return w;
+}
+
+struct Row {
+  double turnedDeg, mountCm, coneDeg;
+  bool error;
+  double expectDeg;  // the walls' normals modulo 90, in [-45, 45)
+  double withinDeg;
+};
+
+TEST(WallDirection, FindsTheWallsOfARectangularRoomTurnedAnyWay) {
+  const Row rows[] = {
+      {0, 0, 12, false, 0, 1.0},   {3, 0, 12, false, 3, 1.0},    {10, 0, 12, false, 10, 1.0},
+      {44, 0, 12, false, 44, 1.0}, {-7, 6, 15, false, -7, 1.0},  {3, 6, 10, true, 3, 1.5},
+      {10, 6, 15, true, 10, 1.5},  {-25, 6, 12, true, -25, 1.5}, {44, 6, 12, true, 44, 1.5},
+      {60, 6, 12, true, -30, 1.5}, {-44, 0, 12, true, -44, 1.5}, {90, 0, 12, false, 0, 1.0},
+  };
+  for (const Row& row : rows) {
+    Room room;
+    room.turnedDeg = row.turnedDeg;
+    const WallDirectionEstimate e = sweep(room, row.mountCm, row.coneDeg, row.error).estimate();
+    ASSERT_TRUE(e.found) << "turned " << row.turnedDeg;
+    double got = e.mrad * 0.18 / kPi, diff = got - row.expectDeg;
+    while (diff > 45) diff -= 90;
+    while (diff < -45) diff += 90;
+    EXPECT_LE(std::fabs(diff), row.withinDeg) << "turned " << row.turnedDeg << " got " << got;
+    EXPECT_GE(e.agreeing, 3) << "turned " << row.turnedDeg << ": each wall in range should agree";
+  }
+}
+
+TEST(WallDirection, NoWallInRangeIsNoEstimate) {
+  Room far;
+  far.west = far.east = far.north = far.south = 400;  // every echo beyond the sensor's 255 cm
+  const WallDirectionEstimate e = sweep(far, 6, 12).estimate();
+  EXPECT_FALSE(e.found);
+  EXPECT_EQ(e.dips, 0);
+  EXPECT_EQ(e.mrad, 0);
+}
+
+TEST(WallDirection, ARoundRoomHasNoWallDirection) {
+  WallDirection w;
+  for (int k = 0; k <= 36; ++k) {
+    w.addHeading(-1571 + 87 * k);
+    for (int s = 0; s < kSensorCount; ++s) w.addReading(static_cast<Sensor>(s), 60);
+  }
+  EXPECT_FALSE(w.estimate().found);
+}
+
+TEST(WallDirection, OneWallInRangeIsEnough) {
+  Room one;
+  one.west = one.east = one.south = 400;
+  one.north = 50;
+  one.turnedDeg = 8;
+  const WallDirectionEstimate e = sweep(one, 6, 12).estimate();
+  ASSERT_TRUE(e.found);
+  EXPECT_EQ(e.dips, 1);
+  EXPECT_NEAR(e.mrad * 0.18 / kPi, 8.0, 1.0);
+}
+
+TEST(WallDirection, HandComputedDipCentreAndObjectEdge) {
+  // Front sensor, headings -435..435 mrad in steps of 87. Floor 50 cm, so the level is 50 + 50 / 10 = 55.
+  const int16_t wall[] = {60, 54, 51, 50, 50, 50, 50, 50, 51, 54, 60};
+  WallDirection w;
+  for (int k = 0; k < 11; ++k) {
+    w.addHeading(-435 + 87 * k);
+    w.addReading(Sensor::Front, wall[k]);
+  }
+  WallDirection::Dip d[4];
+  ASSERT_EQ(w.dips(d, 4), 1);
+  // Left flank: inside at -348 (54), outside at -435 (60): crossing at -348 - 87 * 1 / 6 = -362 (whole mrad).
+  // Right flank likewise at +362: centre 0, width 724.
+  EXPECT_EQ(d[0].centreMrad, 0);
+  EXPECT_EQ(d[0].widthMrad, 724);
+  EXPECT_EQ(d[0].floorCm, 50);
+
+  // The same floor, but past its right flank the echo jumps to 130 cm (above 55 + 50 / 4 + 4): an object's edge.
+  const int16_t object[] = {60, 54, 51, 50, 50, 50, 50, 50, 51, 130, 130};
+  WallDirection o;
+  for (int k = 0; k < 11; ++k) {
+    o.addHeading(-435 + 87 * k);
+    o.addReading(Sensor::Front, object[k]);
+  }
+  EXPECT_EQ(o.dips(d, 4), 0);
+}
+
+TEST(WallDirection, HeadingsMustIncreaseAndFitTheCapacity) {
+  WallDirection w;
+  EXPECT_TRUE(w.addHeading(0));
+  EXPECT_FALSE(w.addHeading(0));
+  EXPECT_FALSE(w.addHeading(-10));
+  for (int k = 1; k < WallDirection::kMaxSteps; ++k) EXPECT_TRUE(w.addHeading(10 * k));
+  EXPECT_FALSE(w.addHeading(100000));
+  EXPECT_EQ(w.steps(), WallDirection::kMaxSteps);
+}
+
+}  // namespace
+}  // namespace nxtmap
