@@ -15,7 +15,10 @@ namespace nxtmap::fw {
 // THR (no START) and ends with the STOP the TWI sends by itself once THR and the shifter are empty (no
 // STOP asked); a read starts with START and asks STOP while its last byte arrives; the next transfer
 // starts only once SR.TXCOMP says the previous STOP went out. A transfer still busy after kTimeoutMs,
-// a NACK, or kMaxBadFrames bad checksums in a row restart from the handshake.
+// a NACK, or kMaxBadFrames bad checksums in a row restart from the handshake. Every transfer ends with
+// the TWI's interrupts disabled: its line to the AIC is SR & IMR, and TXRDY stays set after a write, so
+// a bit left enabled would hold the edge-triggered line high and the next read's RXRDY would make no
+// edge: the read would stall to the time-out and the link would keep restarting.
 // Bus: read(addr) / write(addr, value) register access.
 template <class Bus>
 class AvrLink {

@@ -24,8 +24,13 @@ struct TwiAvr {
   int reads = 0, startsInWrite = 0, stopsInWrite = 0;
   bool reading = false, active = false, nackNext = false, nacking = false, txcompHeld = false;
 
+  uint32_t imr = 0;  // the TWI's interrupt mask (IER/IDR)
+
   void open() {
     EXPECT_EQ((bus.regs[kTwiMmr] >> 16) & 0x7F, 1u);  // AVR address
+    // The TWI's interrupt line is SR & IMR; the AIC takes it on a rising edge, so a bit left enabled (TXRDY
+    // stays set after a write) would hold it high and the next transfer's first RXRDY would make no edge.
+    EXPECT_EQ(imr, 0u) << "a transfer started with TWI interrupts still enabled";
     EXPECT_FALSE(active) << "a transfer started before the last one ended";
     EXPECT_FALSE(txcompHeld) << "a transfer started before TXCOMP";
     active = true;
@@ -35,6 +40,8 @@ struct TwiAvr {
 
   TwiAvr() {
     bus.onWrite = [this](uint32_t a, uint32_t v) {
+      if (a == kTwiIer) imr |= v;
+      if (a == kTwiIdr) imr &= ~v;
       const bool mread = (bus.regs[kTwiMmr] & kTwiMmrMread) != 0;
       if (a == kTwiCr && (v & kTwiCrStart)) {
         if (!mread) {
