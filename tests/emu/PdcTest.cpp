@@ -78,6 +78,71 @@ TEST(Pdc, RegisterWritesGiveTheDatasheetsReads) {
   }
 }
 
+// ENDTX/ENDRX are set whenever the current counter is 0 and TXBUFE/RXBUFF whenever both counters are: levels
+// of the counters (cleared only by a counter written non-zero, or chained in), never events a read clears.
+// Each row: register writes, transfers taken, then the four flags read twice.
+TEST(Pdc, EndAndBufferFlagsAreLevelsOfTheCounters) {
+  struct FlagRow {
+    const char* what;
+    std::vector<Write> writes;
+    int txTaken, rxPut;
+    bool endTx, txBufe, endRx, rxBuff;
+  };
+  const FlagRow rows[] = {
+      {"reset: both counters 0", {}, 0, 0, true, true, true, true},
+      {"TCR written non-zero clears ENDTX and TXBUFE", {{kTpr, kRam}, {kTcr, 2}}, 0, 0, false, false, true, true},
+      {"RCR written non-zero clears ENDRX and RXBUFF", {{kRpr, kRam}, {kRcr, 2}}, 0, 0, true, true, false, false},
+      {"the last transfer sets ENDTX and TXBUFE again",
+       {{kTpr, kRam}, {kTcr, 2}, {kPtcr, 0x100}},
+       2,
+       0,
+       true,
+       true,
+       true,
+       true},
+      {"a next buffer waiting: ENDTX, not TXBUFE",
+       {{kTpr, kRam}, {kTcr, 1}, {kTnpr, kRam + 8}, {kTncr, 1}, {kPtcr, 0x100}},
+       1,
+       0,
+       false,
+       false,
+       true,
+       true},
+      {"both buffers sent",
+       {{kTpr, kRam}, {kTcr, 1}, {kTnpr, kRam + 8}, {kTncr, 1}, {kPtcr, 0x100}},
+       2,
+       0,
+       true,
+       true,
+       true,
+       true},
+      {"TNCR while TCR = 0 chains at once: ENDTX cleared", {{kTnpr, kRam}, {kTncr, 3}}, 0, 0, false, false, true, true},
+      {"TCR written 0 sets ENDTX", {{kTpr, kRam}, {kTcr, 5}, {kTcr, 0}}, 0, 0, true, true, true, true},
+      {"receive filled: ENDRX and RXBUFF", {{kRpr, kRam}, {kRcr, 1}, {kPtcr, 1}}, 0, 1, true, true, true, true},
+      {"disabled with data left: no ENDTX", {{kTpr, kRam}, {kTcr, 4}, {kPtcr, 0x200}}, 0, 0, false, false, true, true},
+  };
+  for (const FlagRow& r : rows) {
+    Ram ram;
+    Pdc p(ram);
+    for (const Write& w : r.writes) EXPECT_TRUE(p.write(w.off, w.value)) << r.what;
+    for (int i = 0; i < r.txTaken; ++i) {
+      uint8_t b = 0;
+      ASSERT_TRUE(p.txActive()) << r.what;
+      ASSERT_TRUE(p.takeTx(b)) << r.what;
+    }
+    for (int i = 0; i < r.rxPut; ++i) {
+      ASSERT_TRUE(p.rxActive()) << r.what;
+      ASSERT_TRUE(p.putRx(0x42)) << r.what;
+    }
+    for (int read = 0; read < 2; ++read) {
+      EXPECT_EQ(p.endTx(), r.endTx) << r.what << ", read " << read;
+      EXPECT_EQ(p.txBufferEmpty(), r.txBufe) << r.what << ", read " << read;
+      EXPECT_EQ(p.endRx(), r.endRx) << r.what << ", read " << read;
+      EXPECT_EQ(p.rxBufferFull(), r.rxBuff) << r.what << ", read " << read;
+    }
+  }
+}
+
 TEST(Pdc, PtsrAndPtcrAreTheOnlyControlRegistersAndPtsrIsReadOnly) {
   Ram ram;
   Pdc p(ram);
