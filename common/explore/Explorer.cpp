@@ -18,6 +18,7 @@ void Explorer::apply(const Event& e) {
   switch (e.kind) {
     case Event::Kind::Start:
       pose_ = e.pose;
+      startCell_ = e.pose.cell;
       started_ = true;
       if (!map_.markVisited(pose_.cell)) end_ = ExplorerEnd::GridFull;
       break;
@@ -25,7 +26,9 @@ void Explorer::apply(const Event& e) {
       ++counters_.sensorRequests;
       counters_.rawSamples += e.reading.samples;
       const Dir d = sensorDir(pose_.heading, e.sensor);
-      const RayMarkResult r = markRay(map_, config_.geometry, pose_.cell, d, e.reading);
+      // Where it was set down the robot takes its blind zone as clear (a robot is put down in the open),
+      // everywhere else only what it saw from farther away (RangeGeometry::blindCm).
+      const RayMarkResult r = markRay(map_, config_.geometry, pose_.cell, d, e.reading, pose_.cell == startCell_);
       if (r.conclusive) map_.setRead(pose_.cell, d);
       break;
     }

@@ -87,6 +87,7 @@ class Explorer {
   uint32_t actions_ = 0;
   ExplorerEnd end_ = ExplorerEnd::Running;
   bool started_ = false;
+  Cell startCell_{};  // where the run started (the blind zone is trusted there)
   bool searching_ = false;
   uint8_t searchPurpose_ = 0;
 };

@@ -2,7 +2,8 @@
 
 namespace nxtmap {
 
-RayMarkResult markRay(MapLayers& map, const RangeGeometry& geometry, Cell from, Dir d, const RangeReading& reading) {
+RayMarkResult markRay(MapLayers& map, const RangeGeometry& geometry, Cell from, Dir d, const RangeReading& reading,
+                      bool trustBlind) {
   RayMarkResult result;
   int16_t freeUpTo = 0;  // last cell (1 = adjacent) to observe as free
   int16_t hitAt = 0;     // cell to observe as occupied, 0 = none
@@ -14,6 +15,14 @@ RayMarkResult markRay(MapLayers& map, const RangeGeometry& geometry, Cell from, 
       break;
     case RangeStatus::TooNear: hitAt = 1; break;
     case RangeStatus::NoEcho:
+      for (int16_t k = 1; k <= geometry.blindCells(); ++k) {
+        if (!trustBlind && map.at(advance(from, d, k)) != CellState::Free) {
+          result.conclusive = true;  // read, and nothing can be concluded from it
+          return result;
+        }
+      }
+      freeUpTo = geometry.freeCells();
+      break;
     case RangeStatus::TooFar: freeUpTo = geometry.freeCells(); break;
     case RangeStatus::Inconsistent: return result;
   }

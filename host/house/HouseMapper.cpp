@@ -9,6 +9,7 @@ namespace {
 ExplorerConfig explorerConfigFor(const sim::World& world, const HouseConfig& c, int mountCm) {
   ExplorerConfig e;
   e.geometry = mapping::sonarGeometryFor(world, c.minRangeM, c.rangeM, c.noise.sonar.coneHalfAngleDeg, mountCm);
+  e.geometry.blindCm = mapping::sonarBlindCm(c.noise.sonar);
   return e;
 }
 

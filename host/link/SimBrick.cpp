@@ -15,6 +15,7 @@ ExplorerConfig explorerConfigFor(const sim::World& world, const mapping::RunConf
   e.geometry = mapping::sonarGeometryFor(
       world, c.minRangeM, c.rangeM, c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.sonar.coneHalfAngleDeg,
       mountCm);
+  e.geometry.blindCm = mapping::sonarBlindCm(c.noise.sonar);
   e.searchSliceStates = c.searchSliceStates;
   return e;
 }

@@ -23,6 +23,7 @@ ExplorerConfig explorerConfigFor(const sim::World& truth, const RunConfig& c, in
   e.geometry =
       sonarGeometryFor(truth, c.minRangeM, c.rangeM,
                        c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.sonar.coneHalfAngleDeg, mountCm);
+  e.geometry.blindCm = c.blindCm >= 0 ? static_cast<int16_t>(c.blindCm) : sonarBlindCm(c.noise.sonar);
   e.searchSliceStates = c.searchSliceStates;
   return e;
 }

@@ -34,6 +34,7 @@ struct RunConfig {
   uint64_t seed = 1;
   Strategy strategy = Strategy::Propagation;
   double beamHalfAngleDeg = -1.0;  // the robot's sonar beam, known to it (< 0: the noise profile's cone)
+  int blindCm = -1;                // the sensor's blind zone, known to it (< 0: the noise profile's, sonarBlindCm)
   bool poseCorrection = true;      // the pilot keeps the robot on the grid (off: dead reckoning)
   uint16_t searchSliceStates = 8;  // travel-search states per explorer step (brick CPU budget)
   // The firmware pings one sensor at a time (single shot, SonarSequencer); true fires every read as if the

@@ -23,6 +23,12 @@ RangeGeometry sonarGeometryFor(const sim::World& world, double minRangeM, double
   return g;
 }
 
+int16_t sonarBlindCm(const sim::SonarNoise& sonar) {
+  if (!(sonar.nearFieldCm > 0.0)) return 0;
+  const double blind = sonar.nearFieldMode == sim::NearField::NoEcho ? sonar.nearFieldCm : sim::kNearFieldBlindCm;
+  return static_cast<int16_t>(std::ceil(blind));
+}
+
 DriveEvent carryOutOnRobot(sim::SimRobot& robot, const DriveAction& a, const RangeGeometry& geometry,
                            bool othersFiring) {
   switch (a.kind) {

@@ -8,6 +8,7 @@
 #include "common/motion/DriveEvent.hpp"
 #include "common/sensing/RangeGeometry.hpp"
 #include "host/sim/SimRobot.hpp"
+#include "host/sim/SonarNoise.hpp"
 #include "host/sim/World.hpp"
 
 namespace nxtmap::mapping {
@@ -18,6 +19,10 @@ namespace nxtmap::mapping {
 // mountCm: the sensors' faces ahead of the robot's centre (RangeGeometry::mountCm).
 RangeGeometry sonarGeometryFor(const sim::World& world, double minRangeM, double rangeM, double beamHalfAngleDeg,
                                int mountCm = 0);
+
+// The sensor's blind zone as the robot knows its sonar (RangeGeometry::blindCm), whole cm: the near field
+// where the modelled sensor returns no echo at all (0: none, as the published model).
+int16_t sonarBlindCm(const sim::SonarNoise& sonar);
 
 // othersFiring: every ping hears the other sensors pinging at the same moment (see RunConfig::sensorsTogether).
 DriveEvent carryOutOnRobot(sim::SimRobot& robot, const DriveAction& a, const RangeGeometry& geometry,

@@ -41,6 +41,56 @@ TEST(RayMarker, MarkingRulesFromTable) {
   for (const auto& t : table) EXPECT_EQ(markEast(t.status, t.cm), t.expected) << t.name;
 }
 
+// The same from (0,0) East with a sensor blind below blindCm (mountCm 6 for the brick's 20 cm cells).
+std::string markBlind(RangeStatus status, int16_t cm, const RangeGeometry& g, const std::string& before,
+                      bool trustBlind) {
+  test::GridFixture f;
+  if (!before.empty()) f.draw({before});
+  (void)f.map.markVisited(Cell{0, 0});
+  RangeReading r;
+  r.status = status;
+  r.cm = cm;
+  const RayMarkResult m = markRay(f.map, g, Cell{0, 0}, Dir::East, r, trustBlind);
+  EXPECT_TRUE(m.conclusive);
+  std::string row;
+  for (int16_t x = 0; x <= 11; ++x) {
+    const CellState s = f.map.at(Cell{x, 0});
+    row += s == CellState::Free ? '.' : s == CellState::Occupied ? '#' : '?';
+  }
+  return row;
+}
+
+TEST(RayMarker, NoEchoVouchesForNothingWhileTheBlindZoneIsUnknown) {
+  const RangeGeometry published{10, 5, 100, 0, 0, 7};  // 10 cm cells, sensor at the centre, blind below 7 cm
+  const RangeGeometry brick{20, 7, 120, 6, 0, 7};      // 20 cm cells, sensor 6 cm out: cell 1 from 4 cm
+  const RangeGeometry deep{10, 5, 100, 0, 0, 16};      // blind to 16 cm: cells 1 and 2 (near faces 5, 15 cm)
+  EXPECT_EQ(published.blindCells(), 1);
+  EXPECT_EQ(brick.blindCells(), 1);
+  EXPECT_EQ(deep.blindCells(), 2);
+  EXPECT_EQ((RangeGeometry{10, 5, 100, 0, 0, 5}).blindCells(), 0);  // the near face at 5 cm is seen
+  const struct {
+    const char* name;
+    RangeStatus status;
+    int16_t cm;
+    RangeGeometry g;
+    const char* before;
+    bool trust;
+    const char* expected;
+  } table[] = {
+      {"no echo, adjacent cell unknown: nothing", RangeStatus::NoEcho, 0, published, "", false, ".???????????"},
+      {"no echo, adjacent cell known free", RangeStatus::NoEcho, 0, published, "..", false, "..........??"},
+      {"no echo where the robot was set down", RangeStatus::NoEcho, 0, published, "", true, "..........??"},
+      {"no echo, a known wall in the blind zone", RangeStatus::NoEcho, 0, published, ".#", false, ".#??????????"},
+      {"too far: an echo came back, nothing blind", RangeStatus::TooFar, 130, published, "", false, "..........??"},
+      {"an echo is unchanged", RangeStatus::Good, 35, published, "", false, "....#???????"},
+      {"brick: adjacent cell unknown", RangeStatus::NoEcho, 0, brick, "", false, ".???????????"},
+      {"brick: adjacent cell known free", RangeStatus::NoEcho, 0, brick, "..", false, "......??????"},
+      {"two blind cells, one known", RangeStatus::NoEcho, 0, deep, "..", false, "..??????????"},
+      {"two blind cells, both known", RangeStatus::NoEcho, 0, deep, "...", false, "..........??"},
+  };
+  for (const auto& t : table) EXPECT_EQ(markBlind(t.status, t.cm, t.g, t.before, t.trust), t.expected) << t.name;
+}
+
 TEST(RayMarker, DoesNotReadThroughAKnownWall) {
   // A wall already known 3 cells away: a no-echo reading stops there (and weakens it once).
   const std::string row = markEast(RangeStatus::NoEcho, 0, {"...#"});
