@@ -23,19 +23,18 @@ constexpr DoorwayLimits kDoorways{4, 15, 3, 2};
 // tacho edges come next, then the soft I2C clock; the BlueCore's USART has its PDC and waits long; the
 // speaker's PDC has a buffer queued ahead and waits longest.
 using Trigger = Aic<Mmio>::Trigger;
-struct IrqRoute {
-  reg::PeripheralId id;
-  uint32_t priority;
+struct IrqRoute {  // 8 bytes: the RAM-run image holds this table too
   IrqHandler handler;
+  uint8_t id, priority;
   Trigger trigger;
 };
 constexpr IrqRoute kIrqRoutes[] = {
-    {reg::kIdTwi, 7, nxtmapIsrTwi, Trigger::Edge},
-    {reg::kIdSys, 6, nxtmapIsrSystem, Trigger::Level},
-    {reg::kIdPioa, 6, nxtmapIsrPio, Trigger::Level},
-    {reg::kIdTc0, 5, nxtmapIsrTc0, Trigger::Level},
-    {reg::kIdUsart1, 4, nxtmapIsrUsart1, Trigger::Level},
-    {static_cast<reg::PeripheralId>(ssc::kId), 3, nxtmapIsrSsc, Trigger::Level},
+    {nxtmapIsrTwi, reg::kIdTwi, 7, Trigger::Edge},
+    {nxtmapIsrSystem, reg::kIdSys, 6, Trigger::Level},
+    {nxtmapIsrPio, reg::kIdPioa, 6, Trigger::Level},
+    {nxtmapIsrTc0, reg::kIdTc0, 5, Trigger::Level},
+    {nxtmapIsrUsart1, reg::kIdUsart1, 4, Trigger::Level},
+    {nxtmapIsrSsc, static_cast<uint8_t>(ssc::kId), 3, Trigger::Level},
 };
 
 // The link as the brick runs it, telling the PC how its sensors read (HelloReply).

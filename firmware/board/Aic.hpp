@@ -25,7 +25,7 @@ class Aic {
   }
   // How an internal source interrupts: while its line is high (Level), or once per rising edge (Edge,
   // latched by the AIC and cleared when IVR hands it out).
-  enum class Trigger : uint32_t { Level = 0, Edge = 1u << 5 };  // SMR SRCTYPE, bits 5-6
+  enum class Trigger : uint8_t { Level = 0, Edge = 1u << 5 };  // SMR SRCTYPE, bits 5-6
   // Internal source `id` at `priority` (0..7, 7 highest), handler at `address`.
   void install(uint32_t id, uint32_t priority, uint32_t address, Trigger trigger = Trigger::Level) {
     using namespace reg;
