@@ -38,6 +38,8 @@ Pilot::Pilot(Explorer& explorer, const PilotConfig& config)
       tracker_(config.noise),
 #ifndef NXTMAP_NO_START_SQUARING
       squaring_(config.squareSweepMrad, config.squareStepMrad),
+      calibration_(squaring_, config.calibrateTurns),
+      turnErrorPpm_(config.turnErrorPpm),
 #endif
       cellMm_(static_cast<int32_t>(explorer.config().geometry.cellCm) * 10),
       poseCells_(poseCellsFor(explorer.config().geometry, config.poseRangeCm)) {
@@ -49,9 +51,10 @@ Counters Pilot::counters() const {
   c.rawSamples += poseSamples_;
   c.correctionMrad += correctionMrad_;
 #ifndef NXTMAP_NO_START_SQUARING
-  c.sensorRequests += squaring_.readings();
-  c.rawSamples += squaring_.samples();
-  c.correctionMrad += squaring_.turnedMrad();
+  const bool calibrated = config_.calibrateTurns > 0;
+  c.sensorRequests += calibrated ? calibration_.readings() : squaring_.readings();
+  c.rawSamples += calibrated ? calibration_.samples() : squaring_.samples();
+  c.correctionMrad += calibrated ? calibration_.turnedMrad() : squaring_.turnedMrad();
 #endif
   return c;
 }
@@ -219,8 +222,14 @@ DriveAction Pilot::square(const DriveEvent& e) {
   NXTMAP_CHECK(false);  // never in Phase::Square without the sweep
   return DriveAction::done();
 #else
-  const DriveAction a = squaring_.step(e);
-  if (!squaring_.finished()) return a;
+  if (config_.calibrateTurns > 0) {
+    const DriveAction a = calibration_.step(e);
+    if (!calibration_.finished()) return a;
+    if (calibration_.found()) turnErrorPpm_ += calibration_.errorPpm();
+  } else {
+    const DriveAction a = squaring_.step(e);
+    if (!squaring_.finished()) return a;
+  }
   // Square (or as set down, with no wall seen): the tracker starts with what is left of the heading error.
   const int64_t sigma = squaring_.result().found ? config_.squaredHeadingMrad : 0;
   const int64_t residual = squaring_.residualMrad();
@@ -310,12 +319,30 @@ DriveAction Pilot::driveToCentre() {
 }
 
 DriveAction Pilot::step(const DriveEvent& e) {
+#ifdef NXTMAP_NO_START_SQUARING
+  return stepCorrected(e);
+#else
+  // The wheels turn by (1 + e) times what they are told, and the encoders count what was told: the
+  // pilot thinks in true angles and the wheels are told and heard through the correction.
+  if (turnErrorPpm_ == 0) return stepCorrected(e);
+  const int64_t scale = 1000000 + turnErrorPpm_;
+  DriveEvent heard = e;
+  if (e.kind == DriveEvent::Kind::Rotated && e.measured)
+    heard.achieved = static_cast<int32_t>(static_cast<int64_t>(e.achieved) * scale / 1000000);
+  DriveAction a = stepCorrected(heard);
+  if (a.kind == DriveAction::Kind::Rotate)
+    a.value = static_cast<int32_t>(static_cast<int64_t>(a.value) * 1000000 / scale);
+  return a;
+#endif
+}
+
+DriveAction Pilot::stepCorrected(const DriveEvent& e) {
   switch (e.kind) {
     case DriveEvent::Kind::Start: startPose_ = e.pose;
 #ifndef NXTMAP_NO_START_SQUARING
       if (config_.squareSweepMrad > 0) {
         phase_ = Phase::Square;
-        return squaring_.begin();
+        return config_.calibrateTurns > 0 ? calibration_.begin() : squaring_.begin();
       }
 #endif
       return startExplorer(config_.startHeadingVarianceMrad2);

@@ -8,6 +8,7 @@
 #include "common/motion/DriveEvent.hpp"
 #include "common/motion/PoseTracker.hpp"
 #include "common/motion/StartSquaring.hpp"
+#include "common/motion/TurnCalibration.hpp"
 
 namespace nxtmap {
 
@@ -43,6 +44,12 @@ struct PilotConfig {
   int16_t squareStepMrad = 87;  // between the sweep's headings
   // How well the squared heading is known (1 sigma, mrad): the estimate's spread plus the final turn's.
   int16_t squaredHeadingMrad = 20;
+  // With the sweep on: first measure how far the turns are off (TurnCalibration, this many whole turns
+  // between two sweeps; 0: no calibration) and correct every turn by it for the rest of the run.
+  uint8_t calibrateTurns = 0;
+  // The turns' error known from before (actual / commanded - 1, ppm): every rotation is commanded
+  // divided by (1 + e) and what the encoders report multiplied by it. A calibration adds what it measures.
+  int32_t turnErrorPpm = 0;
 };
 
 // Pilot: between the explorer (cells, quarter turns) and the wheels (mm, mrad). It carries out
@@ -63,6 +70,8 @@ class Pilot {
   // Feeds one event (DriveEvent::start() first) and returns what to do next.
   DriveAction step(const DriveEvent& e);
   bool finished() const { return phase_ == Phase::Done; }
+  // The explorer has started: the start's sweep (and calibration) is over, or there was none.
+  bool explorerStarted() const { return phase_ != Phase::Idle && phase_ != Phase::Square; }
 
   // Cells the caller holds closed without their being walls (a doorway kept shut while a room is
   // mapped): never a landmark for a pose reading. Non-owning: the set must outlive the pilot or be
@@ -78,6 +87,11 @@ class Pilot {
   // What the start's sweep found (not found when the pilot does not square, see PilotConfig).
 #ifndef NXTMAP_NO_START_SQUARING
   const StartSquaring& squaring() const { return squaring_; }
+  const TurnCalibration& calibration() const { return calibration_; }
+  // The turns' error the pilot corrects by (ppm, see PilotConfig::turnErrorPpm).
+  int32_t turnErrorPpm() const { return turnErrorPpm_; }
+#else
+  int32_t turnErrorPpm() const { return 0; }
 #endif
   // The explorer's counters plus the pilot's own pose readings and correction rotations.
   Counters counters() const;
@@ -88,6 +102,7 @@ class Pilot {
  private:
   enum class Phase : uint8_t { Idle, Square, Level, ExplorerRead, PoseRead, Turn, Steer, Drive, Think, Done };
 
+  DriveAction stepCorrected(const DriveEvent& e);  // step() in the robot's true angles
   DriveAction startExplorer(int64_t headingVarianceMrad2);
   DriveAction square(const DriveEvent& e);  // the start's sweep (Phase::Square)
   DriveAction begin(const Action& a);
@@ -112,8 +127,10 @@ class Pilot {
   Explorer& explorer_;
   PilotConfig config_;
   PoseTracker tracker_;
-#ifndef NXTMAP_NO_START_SQUARING  // the RAM-run firmware image has no room for the sweep's code
-  StartSquaring squaring_;
+#ifndef NXTMAP_NO_START_SQUARING  // the RAM-run firmware image has no room for the sweep, the
+  StartSquaring squaring_;        // calibration and the turn correction (PilotConfig's are ignored there)
+  TurnCalibration calibration_;
+  int32_t turnErrorPpm_;  // see PilotConfig::turnErrorPpm
 #endif
   Pose startPose_{};  // where the explorer starts once the robot is square
   int32_t cellMm_;

@@ -90,6 +90,7 @@ mapping::RunConfig scenarioConfig(const report::Scenario& s, const SuiteSettings
   c.robot = settings.robot;
   c.startJitterDeg = settings.startJitterDeg;
   c.squareAtStart = settings.squareAtStart;
+  c.calibrateTurns = settings.calibrateTurns;
   c.grid = settings.grid;
   return c;
 }

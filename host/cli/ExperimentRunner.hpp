@@ -37,6 +37,7 @@ struct SuiteSettings {
   sim::RobotDescription robot = *sim::robotByName("published");
   double startJitterDeg = 0.0;
   bool squareAtStart = false;  // the pilot turns square to the walls before mapping
+  int calibrateTurns = 0;      // > 0: and measures its turns' error first (RunConfig::calibrateTurns)
   mapping::GridCapacity grid = mapping::GridCapacity::brick();
 };
 

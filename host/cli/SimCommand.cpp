@@ -125,6 +125,20 @@ std::string squareLine(const mapping::MappingRun& run) {
   return out.str();
 }
 
+// What the start's turn calibration measured (RunConfig::calibrateTurns).
+std::string calibrationLine(const mapping::MappingRun& run) {
+  const TurnCalibration& c = run.pilot().calibration();
+  std::ostringstream out;
+  out << "calibrated       ";
+  if (!c.found()) {
+    out << "no straight wall in range: turns not corrected";
+  } else {
+    out << "turns " << (c.errorPpm() >= 0 ? "+" : "") << report::formatNumber(c.errorPpm() / 10000.0, 2) << " % off ("
+        << int{c.turns()} << " whole turns between two sweeps): every turn corrected by it";
+  }
+  return out.str();
+}
+
 }  // namespace
 
 int runSim(const SimOptions& o) {
@@ -135,6 +149,10 @@ int runSim(const SimOptions& o) {
   config.robot = robot;
   config.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
   config.squareAtStart = squareAtStart(o.run.square, robot);
+  if (o.run.calibrate) {
+    if (o.run.square == "no") throw CliError("--calibrate measures against the walls: it needs --square yes or auto");
+    config.calibrateTurns = 4;
+  }
   config.noise = parseNoise(o.run.noise);
   config.seed = parseSeed(o.seed);
   parseHeading(o.heading);
@@ -193,7 +211,8 @@ int runSim(const SimOptions& o) {
       << config.seed << ", range " << report::formatNumber(robot.rangeM) << " m";
   if (!config.grid.isBrick()) out << ", grid " << config.grid.describe();
   out << "\n";
-  if (config.squareAtStart) out << squareLine(run) << "\n";
+  if (run.config().squareAtStart) out << squareLine(run) << "\n";
+  if (config.calibrateTurns > 0) out << calibrationLine(run) << "\n";
   out << "end              " << endName(run.explorer().end())
       << (run.metGridEdge() && run.explorer().end() == ExplorerEnd::Complete ? " (up to the grid's edge)" : "") << "\n"
       << "time units       " << report::formatNumber(c.timeHalfUnits() / 2.0, 1) << "\n"

@@ -114,6 +114,9 @@ void addSquareOption(CLI::App& command, WorldRunOptions& o) {
   command.add_option("--square", o.square,
                      "before mapping, sweep the sonars on the spot and turn square to the room's walls: auto (the "
                      "default: the brick does, the published robot does not, as in the paper), yes, no");
+  command.add_flag("--calibrate", o.calibrate,
+                   "before mapping, measure how far the robot's turns are off against the walls (two sweeps with "
+                   "4 whole turns between them) and correct every turn by it; squares to the walls as well");
 }
 
 void addRangeOption(CLI::App& command, WorldRunOptions& o) {

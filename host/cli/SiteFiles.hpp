@@ -46,10 +46,12 @@ struct WorldRunOptions {
   std::string noise = "ideal";  // a preset name, or "list" to print the presets and exit
   std::string robot = "published";
   double startJitterDeg = 0.0;
-  std::string square = "auto";  // --square: auto (the brick squares, the published robot does not), yes, no
-  double rangeM = 0.0;          // --range-m (addRangeOption), when rangeGiven
-  bool rangeGiven = false;      // otherwise the robot's own trusted range
-  std::string grid = "64";      // --grid (addGridOption): room grid cells per side, 64 the brick's
+  std::string square = "auto";
+  bool calibrate =
+      false;  // --calibrate: measure and correct the turns' error first (sim, experiments)  // --square: auto (the brick squares, the published robot does not), yes, no
+  double rangeM = 0.0;      // --range-m (addRangeOption), when rangeGiven
+  bool rangeGiven = false;  // otherwise the robot's own trusted range
+  std::string grid = "64";  // --grid (addGridOption): room grid cells per side, 64 the brick's
 };
 // robotNote: what an unset --robot means (default: "default published").
 void addWorldRunOptions(CLI::App& command, WorldRunOptions& o, const std::string& robotNote = "default published");

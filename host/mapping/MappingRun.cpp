@@ -78,7 +78,9 @@ MappingRun::MappingRun(Setup setup, const RunConfig&)
   setDownFrameDeg_ = robot_.frame().headingDeg;
   PilotConfig pilot;
   pilot.correct = config_.poseCorrection;
+  if (config_.calibrateTurns > 0) config_.squareAtStart = true;
   if (config_.squareAtStart) pilot.squareSweepMrad = 1571;
+  pilot.calibrateTurns = static_cast<uint8_t>(config_.calibrateTurns);
   last_ = stack_.start(config_.strategy, pilot);
 }
 
@@ -92,7 +94,7 @@ bool MappingRun::step() {
   if (stack_.finished()) return false;
   const bool squaring = config_.squareAtStart && !squared_;
   last_ = stack_.step(carryOut(last_));
-  if (squaring && stack_.pilot() != nullptr && stack_.pilot()->squaring().finished()) layTruthSquare();
+  if (squaring && stack_.pilot() != nullptr && stack_.pilot()->explorerStarted()) layTruthSquare();
   return !stack_.finished();
 }
 

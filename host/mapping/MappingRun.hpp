@@ -24,6 +24,8 @@ struct RunConfig {
   std::optional<sim::StartPose> startPose;  // a start in the plane instead of a raster cell
   double startJitterDeg = 0.0;              // > 0: set down off the cell centre and up to this many degrees off square
   bool squareAtStart = false;               // the pilot turns square to the walls before mapping (StartSquaring)
+  int calibrateTurns = 0;                   // > 0: and first measures its turns' error (TurnCalibration; implies
+                                            // squareAtStart), correcting every turn after it
   // The robot: its cell, body and sensor mounts, and the range it trusts (its minRangeM/rangeM replace the
   // two below). Empty: a point robot of the raster's own cells with the ranges below (the published set-up).
   std::optional<sim::RobotDescription> robot;

@@ -406,3 +406,38 @@ TEST(Pilot, ReadingsAreMarkedFromTheCellCentreWhenTheRobotIsKnownToBeOffIt) {
 
 }  // namespace
 }  // namespace nxtmap
+
+namespace nxtmap {
+namespace {
+
+// A known turn error (PilotConfig::turnErrorPpm): every rotation is told divided by 1 + e, and what the
+// encoders count (what was told) is heard multiplied by it, so the pilot's own angles stay true.
+TEST(Pilot, CorrectsEveryTurnByTheKnownTurnError) {
+  PilotConfig c;
+  c.squareSweepMrad = 1571;  // the start's sweep: its first action is a rotation
+  const struct {
+    int32_t ppm;
+    int32_t firstTold;  // -1571 / (1 + e)
+    int32_t stepTold;   // 87 / (1 + e)
+  } table[] = {{0, -1571, 87}, {20000, -1540, 85}, {-20000, -1603, 88}, {100000, -1428, 79}};
+  for (const auto& t : table) {
+    c.turnErrorPpm = t.ppm;
+    Rig rig(c);
+    const DriveAction first = rig.pilot.step(DriveEvent::start());
+    ASSERT_EQ(first.kind, DriveAction::Kind::Rotate);
+    EXPECT_EQ(first.value, t.firstTold) << t.ppm;
+    // The encoders count what was told; the sweep then reads its four sensors at that heading.
+    DriveAction a = rig.pilot.step(DriveEvent::rotatedBy(first.value));
+    for (int s = 0; s < kSensorCount; ++s) {
+      ASSERT_EQ(a.kind, DriveAction::Kind::Read) << t.ppm;
+      RangeReading none;
+      a = rig.pilot.step(DriveEvent::range(a.sensor, none));
+    }
+    ASSERT_EQ(a.kind, DriveAction::Kind::Rotate);
+    EXPECT_EQ(a.value, t.stepTold) << t.ppm;
+    EXPECT_EQ(rig.pilot.turnErrorPpm(), t.ppm);
+  }
+}
+
+}  // namespace
+}  // namespace nxtmap

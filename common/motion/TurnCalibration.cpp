@@ -1,0 +1,72 @@
+#include "common/motion/TurnCalibration.hpp"
+
+#include "common/check/Check.hpp"
+
+namespace nxtmap {
+
+TurnCalibration::TurnCalibration(StartSquaring& squaring, uint8_t turns) : squaring_(squaring), turns_(turns) {
+  NXTMAP_CHECK(turns <= 8);  // 0: not used (begin() needs at least one)
+}
+
+DriveAction TurnCalibration::begin() {
+  NXTMAP_CHECK(turns_ >= 1);
+  found_ = false;
+  errorPpm_ = 0;
+  readings_ = samples_ = turnedMrad_ = 0;
+  phase_ = Phase::FirstSweep;
+  sweeping_ = true;
+  return squaring_.begin();
+}
+
+DriveAction TurnCalibration::afterFirstSweep() {
+  readings_ = squaring_.readings();
+  samples_ = squaring_.samples();
+  turnedMrad_ = squaring_.turnedMrad();
+  sweeping_ = false;
+  if (!squaring_.result().found) {  // no walls to measure against: the turns would tell nothing
+    phase_ = Phase::Done;
+    return DriveAction::done();
+  }
+  phase_ = Phase::Turning;
+  quartersLeft_ = static_cast<uint8_t>(4 * turns_);
+  return DriveAction::rotate(-kQuarterMrad);  // counter-clockwise: the sweep ended turning clockwise
+}
+
+void TurnCalibration::measure() {
+  const WallDirectionEstimate& w = squaring_.result();
+  found_ = w.found;
+  if (!found_) return;
+  // The walls seen w.mrad clockwise of the robot after N turns counter-clockwise of 2 pi (1 + e) each:
+  // the robot stands 2 pi N e counter-clockwise of square, so w.mrad = 2 pi N e.
+  const int64_t turned = static_cast<int64_t>(turns_) * 4 * kQuarterMrad;
+  errorPpm_ = static_cast<int32_t>(static_cast<int64_t>(w.mrad) * 1000000 / turned);
+}
+
+DriveAction TurnCalibration::step(const DriveEvent& e) {
+  switch (phase_) {
+    case Phase::FirstSweep: {
+      const DriveAction a = squaring_.step(e);
+      return squaring_.finished() ? afterFirstSweep() : a;
+    }
+    case Phase::Turning:
+      NXTMAP_CHECK(e.kind == DriveEvent::Kind::Rotated);
+      turnedMrad_ += kQuarterMrad;
+      if (--quartersLeft_ > 0) return DriveAction::rotate(-kQuarterMrad);
+      phase_ = Phase::SecondSweep;
+      sweeping_ = true;
+      return squaring_.begin();
+    case Phase::SecondSweep: {
+      const DriveAction a = squaring_.step(e);
+      if (!squaring_.finished()) return a;
+      measure();
+      phase_ = Phase::Done;
+      return DriveAction::done();
+    }
+    case Phase::Idle:
+    case Phase::Done: break;
+  }
+  NXTMAP_CHECK(false);  // an event that does not answer the action in progress: a caller's mistake
+  return DriveAction::done();
+}
+
+}  // namespace nxtmap

@@ -1,0 +1,60 @@
+#pragma once
+#include <cstdint>
+
+#include "common/motion/DriveAction.hpp"
+#include "common/motion/DriveEvent.hpp"
+#include "common/motion/StartSquaring.hpp"
+
+namespace nxtmap {
+
+// TurnCalibration: how far the robot's turns on the spot are off (the effective track width's error,
+// UMBmark's Eb: every turn scaled by one factor), measured against the room's walls. Events in, actions
+// out: it squares to the walls (StartSquaring), turns `turns` whole turns the other way round, and squares
+// again; the second sweep finds the walls turned by the turns' error (N whole turns of 2 pi (1 + e)
+// counter-clockwise leave the robot 2 pi N e past square), so e = (second sweep's estimate) / (2 pi N).
+// It ends square to the walls.
+// Resolution: the sweeps agree to about a degree, so 4 turns give e to about 0.1 %; |e| must stay under
+// 1 / (8 N) (the walls repeat every quarter turn). The sweep object is the caller's (the pilot's).
+class TurnCalibration {
+ public:
+  // The whole turns are made in quarter turns (a turn's random error grows with its size), of
+  // 1570.796 mrad rounded: 4 N of them make N whole turns to 0.8 mrad.
+  static constexpr int32_t kQuarterMrad = 1571;
+
+  TurnCalibration(StartSquaring& squaring, uint8_t turns);
+
+  DriveAction begin();
+  // The answer to the previous action; returns the next. DriveAction::done() once calibrated.
+  DriveAction step(const DriveEvent& e);
+  bool finished() const { return phase_ == Phase::Done; }
+
+  // Both sweeps saw the walls: errorPpm() holds the measurement.
+  bool found() const { return found_; }
+  // Actual turn / commanded turn - 1, parts per million (+: the robot turns too far). 0 when not found.
+  int32_t errorPpm() const { return errorPpm_; }
+  uint8_t turns() const { return turns_; }
+
+ private:
+  enum class Phase : uint8_t { Idle, FirstSweep, Turning, SecondSweep, Done };
+
+  DriveAction afterFirstSweep();
+  void measure();
+
+  StartSquaring& squaring_;
+  uint8_t turns_;
+  uint8_t quartersLeft_ = 0;
+  Phase phase_ = Phase::Idle;
+  bool found_ = false;
+  int32_t errorPpm_ = 0;
+  // Spent before the sweep in progress (the first sweep once done, and the whole turns).
+  uint32_t readings_ = 0, samples_ = 0, turnedMrad_ = 0;
+  bool sweeping_ = false;  // squaring_ holds a sweep of this calibration not yet added above
+
+ public:
+  // Readings, raw samples and rotation (mrad) spent, for the run's figures.
+  uint32_t readings() const { return readings_ + (sweeping_ ? squaring_.readings() : 0); }
+  uint32_t samples() const { return samples_ + (sweeping_ ? squaring_.samples() : 0); }
+  uint32_t turnedMrad() const { return turnedMrad_ + (sweeping_ ? squaring_.turnedMrad() : 0); }
+};
+
+}  // namespace nxtmap
