@@ -1,5 +1,6 @@
 #include "host/emu/Machine.hpp"
 
+#include "host/emu/AlignedLoads.hpp"
 #include "host/emu/StoreSite.hpp"
 #include "host/emu/UnicornFastPath.hpp"
 #include "host/log/Log.hpp"
@@ -146,6 +147,14 @@ struct Machine::Hooks {
 
   static void interrupt(uc_engine* uc, uint32_t intno, void* user) {
     auto* m = static_cast<Machine*>(user);
+    constexpr uint32_t kDataAbort = 4;  // QEMU's EXCP_DATA_ABORT
+    if (intno == kDataAbort) {
+      if (const std::optional<uint32_t> a = takeUnalignedLoad()) {  // the load did not run
+        m->setFault(FaultKind::Unaligned, *a, m->unalignedLoadWhat());
+        uc_emu_stop(uc);
+        return;
+      }
+    }
     static const char* names[] = {
         "reset",      "undefined instruction", "SWI",        "prefetch abort", "data abort", "IRQ", "FIQ",
         "breakpoint", "exception return",      "kernel trap"};
@@ -215,6 +224,7 @@ Machine::Machine(const ElfImage& image, const MachineOptions& options)
   if (trace_ && !log::enabled(log::Level::Debug)) log::setLevel(log::Level::Debug);
   if (std::getenv("NXTMAP_EMU_NOALIGN")) options_.checkAlignment = false;
   if (std::getenv("NXTMAP_EMU_SLOW_STORES")) setUnicornFastStores(false);
+  if (std::getenv("NXTMAP_EMU_LOAD_HOOK")) setAlignedLoadsAllowed(false);
   flashRestore_.reserve(64);
   if (!flash_ || !ram_) throw std::bad_alloc();
   std::memcpy(flash_, image.flash().data(), kFlashSize);
@@ -260,9 +270,12 @@ Machine::Machine(const ElfImage& image, const MachineOptions& options)
   guardLow_ = options.guardLow.value_or(ebss.value_or(0));
   stackLimit_ = options.stackLimit.value_or(limit.value_or(0));
   const bool guard = stackLimit_ > guardLow_;
-  if (options.checkAlignment || guard)
-    check(uc_hook_add(uc_, &h, UC_HOOK_MEM_READ | UC_HOOK_MEM_WRITE, reinterpret_cast<void*>(&Hooks::memAccess), this,
-                      1, 0),
+  // Loads are checked by Unicorn itself where it can (AlignedLoads); a hook on loads slows every load.
+  alignedLoads_ = options_.checkAlignment && alignedLoadsAvailable();
+  const bool hookLoads = options_.checkAlignment && !alignedLoads_;
+  if (options_.checkAlignment || guard)
+    check(uc_hook_add(uc_, &h, UC_HOOK_MEM_WRITE | (hookLoads ? UC_HOOK_MEM_READ : 0),
+                      reinterpret_cast<void*>(&Hooks::memAccess), this, 1, 0),
           "memory hook");
 
   if (options.timedFunction) {
@@ -440,6 +453,20 @@ void Machine::irqAfterStore(uint32_t address, unsigned bytes, uint32_t value) {
   stepBeforeIrq_ = true;
 }
 
+std::string Machine::unalignedLoadWhat() const {
+  uint32_t cpsr = 0;
+  uc_reg_read(uc_, UC_ARM_REG_CPSR, &cpsr);
+  const bool thumb = (cpsr & kCpsrT) != 0;
+  const uint32_t pc = currentPc();
+  uint32_t insn = 0;
+  for (uint32_t i = 0; i < (thumb ? 2u : 4u); ++i) {
+    uint8_t b = 0;
+    if (readByte(pc + i, b)) insn |= uint32_t{b} << (8 * i);
+  }
+  const unsigned bytes = loadBytes(insn, thumb);
+  return bytes ? "read of " + std::to_string(bytes) + " bytes" : std::string("read");
+}
+
 uint32_t Machine::instructionBytes(uint32_t pc, bool thumb) const {
   if (!thumb) return 4;
   uint8_t hi = 0;
@@ -525,6 +552,7 @@ bool Machine::run(uint64_t until, const std::function<bool()>& stop) {
     // The step translates afresh, so that Unicorn stops at `end`: a block cached at pc would run on past it.
     if (step) uc_ctl_remove_cache(uc_, pc, pc + 1);
     const uint64_t end = step ? pc + instructionBytes(pc, (cpsr & kCpsrT) != 0) : 0xFFFFFFF0ull;
+    setAlignedLoads(alignedLoads_);
     const uc_err e = uc_emu_start(uc_, begin, end, 0, 0);
     restoreFlash();
     if (stoppedAt_ != 0 && !fault_) {

@@ -23,6 +23,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 struct uc_struct;
@@ -30,7 +31,7 @@ struct uc_struct;
 namespace nxtmap::emu {
 
 struct MachineOptions {
-  bool checkAlignment = true;  // trap unaligned loads/stores (costs a memory hook on every access)
+  bool checkAlignment = true;  // trap unaligned loads/stores (stores by the memory hook, loads see AlignedLoads)
   bool realtime = false;       // pace emulated time to the wall clock
   // Lowest address the stacks may use: writes in [guardLow, stackLimit) are a stack overflow.
   // Taken from the ELF (_ebss/__bss_end__ .. __stack_limit__/__stacks_start__) when not set.
@@ -111,6 +112,7 @@ class Machine : public GuestMemory {
   // instruction of latency, as the ARM7's nIRQ synchroniser gives), instead of at the block's end.
   void irqAfterStore(uint32_t address, unsigned bytes, uint32_t value);
   uint32_t instructionBytes(uint32_t pc, bool thumb) const;
+  std::string unalignedLoadWhat() const;      // "read of N bytes" for the load at PC
   void enterIrq(uint32_t cpsr, uint32_t pc);  // IRQ mode, LR = pc + 4, PC = 0x18
   void paceToWall();
   void restoreFlash();
@@ -155,7 +157,9 @@ class Machine : public GuestMemory {
   uint32_t lastBlockBytes_ = 0;
   uint32_t blockWrites_ = 0;  // memory writes made in the current block (0 = unknown: no memory hook)
   uint64_t lateIrqs_ = 0;
-  bool stepBeforeIrq_ = false;  // run one instruction before taking the IRQ a store raised
+  bool stepBeforeIrq_ = false;
+  bool alignedLoads_ =
+      false;  // Unicorn checks load alignment (AlignedLoads): the memory hook sees stores only  // run one instruction before taking the IRQ a store raised
   // Per halfword of code (address 0 window, flash, RAM): 0 unknown, 1 ARM, 2 Thumb. Code at an address keeps
   // its state; self-modifying code that switches state at an address is not supported.
   std::vector<uint8_t> modes_ = std::vector<uint8_t>((2 * kFlashSize + kRamSize) / 2, 0);
