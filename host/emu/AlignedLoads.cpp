@@ -5,6 +5,8 @@
 #include <dlfcn.h>
 
 #include <atomic>
+#include <cstdio>
+#include <cstdlib>
 
 namespace nxtmap::emu {
 namespace {
@@ -76,6 +78,15 @@ unsigned loadBytes(uint32_t insn, bool thumb) {
   return 0;
 }
 
+// libunicorn without the function interposed: no code could be translated, so stop at once and say why
+// (alignedLoadsAvailable() keeps this path to Unicorn 2.0, which exports both).
+namespace {
+[[noreturn]] void missing(const char* symbol) {
+  std::fprintf(stderr, "nxtmap emulator: libunicorn does not export %s; run with NXTMAP_EMU_LOAD_HOOK=1\n", symbol);
+  std::abort();
+}
+}  // namespace
+
 }  // namespace nxtmap::emu
 
 // Interposed over libunicorn's own definitions (the executable's definitions win: libunicorn calls both
@@ -86,7 +97,8 @@ void tcg_gen_qemu_ld_i32_arm(void* s, void* val, void* addr, uintptr_t idx, int 
   static const auto real = reinterpret_cast<Fn>(dlsym(RTLD_NEXT, "tcg_gen_qemu_ld_i32_arm"));
   using nxtmap::emu::kMoAlign;
   if (nxtmap::emu::t_align && (memop & nxtmap::emu::kMoSize) != 0 && (memop & kMoAlign) == 0) memop |= kMoAlign;
-  if (real) real(s, val, addr, idx, memop);
+  if (real == nullptr) nxtmap::emu::missing("tcg_gen_qemu_ld_i32_arm");
+  real(s, val, addr, idx, memop);
 }
 void arm_cpu_do_unaligned_access_arm(void* cpu, uint64_t vaddr, int accessType, int mmuIdx, uintptr_t retaddr) {
   using Fn = void (*)(void*, uint64_t, int, int, uintptr_t);
@@ -95,6 +107,7 @@ void arm_cpu_do_unaligned_access_arm(void* cpu, uint64_t vaddr, int accessType, 
     nxtmap::emu::t_seen = true;
     nxtmap::emu::t_address = static_cast<uint32_t>(vaddr);
   }
-  if (real) real(cpu, vaddr, accessType, mmuIdx, retaddr);  // raises the data abort; does not return
+  if (real == nullptr) nxtmap::emu::missing("arm_cpu_do_unaligned_access_arm");
+  real(cpu, vaddr, accessType, mmuIdx, retaddr);  // raises the data abort; does not return
 }
 }
