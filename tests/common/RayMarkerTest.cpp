@@ -6,19 +6,23 @@
 namespace nxtmap {
 namespace {
 
-// Marks one reading from (0,0) looking East and returns the row y = 0 from x = 0 to 11.
-std::string markEast(RangeStatus status, int16_t cm, const std::vector<std::string>& before = {}) {
+// Marks one reading from (0,0) looking East with `g` (the published geometry unless given) and returns the
+// row y = 0 from x = 0 to 11; `conclusive` receives what markRay said of the reading.
+std::string markEast(RangeStatus status, int16_t cm, const std::vector<std::string>& before = {},
+                     const RangeGeometry& g = RangeGeometry{10, 5, 100, 0}, bool trustBlind = false,
+                     bool* conclusive = nullptr) {
   test::GridFixture f;
   if (!before.empty()) f.draw(before);
   (void)f.map.markVisited(Cell{0, 0});
   RangeReading r;
   r.status = status;
   r.cm = cm;
-  (void)markRay(f.map, RangeGeometry{10, 5, 100, 0}, Cell{0, 0}, Dir::East, r);
+  const RayMarkResult m = markRay(f.map, g, Cell{0, 0}, Dir::East, r, trustBlind);
+  if (conclusive != nullptr) *conclusive = m.conclusive;
   std::string row;
   for (int16_t x = 0; x <= 11; ++x) {
-    const CellState s = f.map.at(Cell{x, 0});
-    row += s == CellState::Free ? '.' : s == CellState::Occupied ? '#' : '?';
+    const CellState st = f.map.at(Cell{x, 0});
+    row += st == CellState::Free ? '.' : st == CellState::Occupied ? '#' : '?';
   }
   return row;
 }
@@ -41,22 +45,15 @@ TEST(RayMarker, MarkingRulesFromTable) {
   for (const auto& t : table) EXPECT_EQ(markEast(t.status, t.cm), t.expected) << t.name;
 }
 
-// The same from (0,0) East with a sensor blind below blindCm (mountCm 6 for the brick's 20 cm cells).
+// The same with a sensor blind below blindCm (mountCm 6 for the brick's 20 cm cells): the reading is always
+// taken as said (conclusive), whatever it marks.
 std::string markBlind(RangeStatus status, int16_t cm, const RangeGeometry& g, const std::string& before,
                       bool trustBlind) {
-  test::GridFixture f;
-  if (!before.empty()) f.draw({before});
-  (void)f.map.markVisited(Cell{0, 0});
-  RangeReading r;
-  r.status = status;
-  r.cm = cm;
-  const RayMarkResult m = markRay(f.map, g, Cell{0, 0}, Dir::East, r, trustBlind);
-  EXPECT_TRUE(m.conclusive);
-  std::string row;
-  for (int16_t x = 0; x <= 11; ++x) {
-    const CellState s = f.map.at(Cell{x, 0});
-    row += s == CellState::Free ? '.' : s == CellState::Occupied ? '#' : '?';
-  }
+  bool conclusive = false;
+  const std::string row =
+      markEast(status, cm, before.empty() ? std::vector<std::string>{} : std::vector<std::string>{before}, g,
+               trustBlind, &conclusive);
+  EXPECT_TRUE(conclusive);
   return row;
 }
 
