@@ -221,6 +221,7 @@ int main(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "plan") return nxtmap::bench::runPlanBench();        // that section alone
     if (argc > 1 && std::string(argv[1]) == "house") return nxtmap::bench::runHouseBench();      // that section alone
     if (argc > 1 && std::string(argv[1]) == "realism") return nxtmap::bench::runRealismBench();  // that section alone
+    if (argc > 1 && std::string(argv[1]) == "emu") return nxtmap::bench::runEmuBench(scenarioDir(1, argv));
     if (argc > 1 && std::string(argv[1]) == "lego") return nxtmap::bench::runLegoRoundTripBench(scenarioDir(1, argv));
     if (argc > 1 && std::string(argv[1]) == "link") {  // that section alone
       nxtmap::bench::printLinkBench(scenarioDir(1, argv) + "/occupancy-120.map", 1, 20);
