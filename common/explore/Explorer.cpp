@@ -6,7 +6,14 @@
 namespace nxtmap {
 
 Explorer::Explorer(MapLayers& map, TravelPlanner& planner, const ExplorerConfig& config)
-    : map_(map), planner_(planner), config_(config) {}
+    : map_(map), planner_(planner), config_(config) {
+  planner_.setTurnNeedsRoom(config.turnNeedsRoom);
+}
+
+bool Explorer::canHead(Dir d) const {
+  return isVertical(d) == isVertical(pose_.heading) || !config_.turnNeedsRoom ||
+         TravelPlanner::roomToTurn(map_.grid(), pose_.cell);
+}
 
 Action Explorer::finish(ExplorerEnd why) {
   end_ = why;
@@ -144,7 +151,7 @@ bool Explorer::travelTo(Cell target, uint16_t cost) { return planner_.routeTo(ma
 
 Action Explorer::follow() {
   const Dir d = route_.front();
-  if (!map_.grid().isFree(advance(pose_.cell, d))) {  // the map changed under the route
+  if (!map_.grid().isFree(advance(pose_.cell, d)) || !canHead(d)) {  // the map changed under the route
     route_.clear();
     return decide();
   }

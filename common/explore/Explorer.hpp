@@ -66,6 +66,9 @@ class Explorer {
   Action follow();
   bool routeEmpty() const { return route_.empty(); }
   void dropRoute() { route_.clear(); }
+  // Whether the robot can set off along d from where it stands: d is on its axis, or it has room to turn
+  // (ExplorerConfig::turnNeedsRoom).
+  bool canHead(Dir d) const;
   // Number of known-free cells from c along d before the first non-free one.
   int16_t openCells(Cell c, Dir d) const;
 

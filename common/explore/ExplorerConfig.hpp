@@ -15,6 +15,11 @@ struct ExplorerConfig {
   // Travel searches run in slices of this many search states per step (answering Action::think
   // in between), so one step stays within the brick's CPU budget (1 ms at 48 MHz).
   uint16_t searchSliceStates = 8;
+  // The robot's body reaches into the four neighbouring cells when it turns on the spot (a 16 x 18 cm
+  // body sweeps 12 cm from its centre; a 20 cm cell leaves 10): it turns only in a cell whose four
+  // neighbours are known free, and drives along its axis (forward or backward) elsewhere. false: a
+  // body that turns inside its own cell (the published point robot).
+  bool turnNeedsRoom = false;
 };
 
 }  // namespace nxtmap

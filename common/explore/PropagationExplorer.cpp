@@ -50,7 +50,7 @@ Action PropagationExplorer::atStart() {
   const int sx = propagationDx(prop_), sy = propagationDy(prop_);
   if (map_.diagonalUsed(c, sx, sy)) return ended(PropagationOutcome::Reused);
   const Dir v = verticalDir(prop_), h = horizontalDir(prop_);
-  const bool freeV = passable(advance(c, v)), freeH = passable(advance(c, h));
+  const bool freeV = passable(advance(c, v)) && canHead(v), freeH = passable(advance(c, h)) && canHead(h);
   if (!freeV && !freeH) return ended(PropagationOutcome::Corner);
   first_ = freeV ? v : h;  // forward (or backward) first, sideways when that is blocked
   second_ = freeV ? h : v;
@@ -63,7 +63,7 @@ Action PropagationExplorer::atStart() {
 Action PropagationExplorer::mid() {
   const int sx = propagationDx(prop_), sy = propagationDy(prop_);
   const Cell target = offset(stepFrom_, sx, sy);
-  if (passable(target)) {
+  if (passable(target) && canHead(second_)) {
     map_.setDiagonalUsed(stepFrom_, sx, sy);
     idleTransitions_ = 0;
     phase_ = Phase::AtStart;

@@ -14,6 +14,12 @@ TravelPlanner::TravelPlanner(const Storage& storage, int16_t width, int16_t heig
   NXTMAP_CHECK(isPowerOfTwo(width) && isPowerOfTwo(height) && capacity_ > 0);
 }
 
+bool TravelPlanner::roomToTurn(const RoomGrid& grid, Cell c) {
+  for (int d = 0; d < 4; ++d)
+    if (!grid.isFree(advance(c, static_cast<Dir>(d)))) return false;
+  return true;
+}
+
 void TravelPlanner::begin() {
   labels_.fill(kUnseen);
   reported_.fill(0);

@@ -10,7 +10,8 @@ namespace nxtmap {
 
 // Shortest travel in the robot's time units over known-free cells: a state is a cell and an
 // axis (the robot drives forward or backward along its axis without turning); a one-cell move
-// costs 1 and a 90 degree turn costs 1. Breadth-first, so costs come out in order. Memory is
+// costs 1 and a 90 degree turn costs 1. With setTurnNeedsRoom(true) a turn is taken only where
+// roomToTurn() holds (a body that sweeps into the neighbouring cells). Breadth-first, so costs come out in order. Memory is
 // caller-owned and small enough for the brick: the distance of each state is kept modulo 3
 // (2 bits), which is all a path walk-back needs; plus one bit per cell and a ring queue.
 class TravelPlanner {
@@ -37,6 +38,11 @@ class TravelPlanner {
   Status proceed(const RoomGrid& grid, Visit&& visit, uint16_t maxStates);
   bool overflowed() const { return overflow_; }
 
+  // Turns only where the body has room (ExplorerConfig::turnNeedsRoom); off by default.
+  void setTurnNeedsRoom(bool on) { turnNeedsRoom_ = on; }
+  // Whether a body that sweeps into the neighbouring cells can turn at c: its four neighbours are known free.
+  static bool roomToTurn(const RoomGrid& grid, Cell c);
+
   // After search(): the route to `target`, a cell visited with cost `cost`. Keeps the first
   // Route::kCapacity moves when longer. False when target was not reached.
   bool routeTo(const RoomGrid& grid, Cell target, uint16_t cost, Route& out) const;
@@ -57,6 +63,7 @@ class TravelPlanner {
   uint16_t layerEnd_ = 0;  // states left in the current distance layer
   uint16_t dist_ = 0;      // cost of the current layer
   bool overflow_ = false;
+  bool turnNeedsRoom_ = false;
   int16_t width_, height_;
 };
 
@@ -90,7 +97,7 @@ TravelPlanner::Status TravelPlanner::proceed(const RoomGrid& grid, Visit&& visit
     }
     const uint8_t axis = id & 1u;
     const uint8_t next = static_cast<uint8_t>((dist_ + 1) % 3);
-    tryPush(static_cast<uint16_t>(id ^ 1u), next);  // turn onto the other axis
+    if (!turnNeedsRoom_ || roomToTurn(grid, c)) tryPush(static_cast<uint16_t>(id ^ 1u), next);  // the other axis
     const Dir a = axis == 0 ? Dir::North : Dir::East;
     const Cell n1 = advance(c, a), n2 = advance(c, opposite(a));
     if (grid.isFree(n1)) tryPush(stateId(n1, axis), next);

@@ -207,6 +207,12 @@ int runSim(const SimOptions& o) {
   if (config.startJitterDeg > 0.0) {
     out << " (set down " << report::formatNumber(run.setDownFrameDeg(), 1) << " deg off square)";
   }
+  if (run.startMovedCm() > 0.0) {
+    out << " (carried " << num(run.startMovedCm())
+        << " cm from where it was asked to be set down, to have room to turn)";
+  } else if (run.startMovedCm() < 0.0) {
+    out << " (no room to turn anywhere near where it was set down)";
+  }
   out << ", strategy " << mapping::strategyName(config.strategy) << ", noise " << config.noise.name << ", seed "
       << config.seed << ", range " << report::formatNumber(robot.rangeM) << " m";
   if (!config.grid.isBrick()) out << ", grid " << config.grid.describe();

@@ -6,8 +6,10 @@
 namespace nxtmap::house {
 namespace {
 
-ExplorerConfig explorerConfigFor(const sim::World& world, const HouseConfig& c, int mountCm) {
+ExplorerConfig explorerConfigFor(const sim::World& world, const HouseConfig& c, const sim::RobotDescription& robot) {
+  const int mountCm = robot.mountCm;
   ExplorerConfig e;
+  e.turnNeedsRoom = robot.turnNeedsRoom();
   e.geometry = mapping::sonarGeometryFor(world, c.minRangeM, c.rangeM, c.noise.sonar.coneHalfAngleDeg, mountCm);
   e.geometry.blindCm = mapping::sonarBlindCm(c.noise.sonar);
   return e;
@@ -61,7 +63,7 @@ HouseMapper::HouseMapper(const sim::Site& site, const HouseConfig& config)
 HouseMapper::HouseMapper(sim::RobotPlacement placed, const HouseConfig& config)
     : world_(std::move(placed.truth)),
       config_(placedConfig(placed, config)),
-      explorerConfig_(explorerConfigFor(world_, config_, placed.robot.mountCm)),
+      explorerConfig_(explorerConfigFor(world_, config_, placed.robot)),
       frame_(config_.startCol, config_.startRow, config_.heading),
       robot_(placed.scene, placed.robot, placed.grid.frame, placed.start.cm, placed.start.headingDeg, config_.noise,
              config_.seed, config_.sensorReachCm),

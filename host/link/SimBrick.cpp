@@ -10,8 +10,11 @@ using namespace protocol;
 
 namespace {
 
-ExplorerConfig explorerConfigFor(const sim::World& world, const mapping::RunConfig& c, int mountCm) {
+ExplorerConfig explorerConfigFor(const sim::World& world, const mapping::RunConfig& c,
+                                 const sim::RobotDescription& robot) {
+  const int mountCm = robot.mountCm;
   ExplorerConfig e;
+  e.turnNeedsRoom = robot.turnNeedsRoom();
   e.geometry = mapping::sonarGeometryFor(
       world, c.minRangeM, c.rangeM, c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.sonar.coneHalfAngleDeg,
       mountCm);
@@ -72,7 +75,7 @@ SimBrick::SimBrick(sim::RobotPlacement placed, const SimBrickConfig& config)
       robot_(placed.scene, placed.robot, placed.grid.frame, placed.start.cm, placed.start.headingDeg, config_.run.noise,
              config_.run.seed, config_.run.sensorReachCm),
       buffer_(config_.run.grid),
-      stack_(buffer_.memory(), explorerConfigFor(world_, config_.run, placed.robot.mountCm)),
+      stack_(buffer_.memory(), explorerConfigFor(world_, config_.run, placed.robot)),
       reach_(packedBytes(config_.run.grid.cells, config_.run.grid.cells, 1)),
       confinement_(reach_.data(), config_.run.grid.cells, config_.run.grid.cells, DoorwayLimits{4, 15, 3, 2},
                    stack_.config().geometry.hitCells()),

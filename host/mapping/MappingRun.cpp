@@ -18,8 +18,10 @@ struct MappingRun::Setup {
 
 namespace {
 
-ExplorerConfig explorerConfigFor(const sim::World& truth, const RunConfig& c, int mountCm) {
+ExplorerConfig explorerConfigFor(const sim::World& truth, const RunConfig& c, const sim::RobotDescription& robot) {
+  const int mountCm = robot.mountCm;
   ExplorerConfig e;
+  e.turnNeedsRoom = robot.turnNeedsRoom();
   e.geometry =
       sonarGeometryFor(truth, c.minRangeM, c.rangeM,
                        c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.sonar.coneHalfAngleDeg, mountCm);
@@ -74,8 +76,9 @@ MappingRun::MappingRun(Setup setup, const RunConfig&)
       robot_(setup.placed.scene, setup.placed.robot, setup.placed.grid.frame, setup.placed.start.cm,
              setup.placed.start.headingDeg, config_.noise, config_.seed, config_.sensorReachCm),
       buffer_(config_.grid),
-      stack_(buffer_.memory(), explorerConfigFor(truth_, config_, setup.placed.robot.mountCm)) {
+      stack_(buffer_.memory(), explorerConfigFor(truth_, config_, setup.placed.robot)) {
   setDownFrameDeg_ = robot_.frame().headingDeg;
+  startMovedCm_ = setup.placed.startMovedCm;
   PilotConfig pilot;
   pilot.correct = config_.poseCorrection;
   if (config_.calibrateTurns > 0) config_.squareAtStart = true;
@@ -114,9 +117,17 @@ void MappingRun::layTruthSquare() {
   squaredOffDeg_ = std::fabs(off);
   const sim::Heading quarter = static_cast<sim::Heading>(sim::squareQuarter(axis));
   const double turn = sim::squareRemainderDeg(axis);
-  if (quarter == config_.heading && std::fabs(turn - robot_.frame().headingDeg) < 1e-6) return;  // as laid
-  const sim::Placement p =
-      sim::placeOnGrid(robot_.scene(), sim::Vec2(robot_.xCm(), robot_.yCm()), turn, robot_.frame().cellCm);
+  // The cell's centre where the pilot believes it: off the robot by the offset the nearest walls gave it.
+  const PoseTracker& tracker = stack_.pilot()->tracker();
+  const Dir h = explorer().pose().heading;
+  const double forwardCm = tracker.along(h) / 10.0, rightCm = tracker.along(rotate(h, 1)) / 10.0;
+  const double rad = axis * 3.14159265358979323846 / 180.0;
+  const sim::Vec2 forward(std::sin(rad), -std::cos(rad)), right(std::cos(rad), std::sin(rad));
+  const sim::Vec2 centre = sim::Vec2(robot_.xCm(), robot_.yCm()) - forwardCm * forward - rightCm * right;
+  if (quarter == config_.heading && std::fabs(turn - robot_.frame().headingDeg) < 1e-6 && forwardCm == 0.0 &&
+      rightCm == 0.0)
+    return;  // as laid
+  const sim::Placement p = sim::placeOnGrid(robot_.scene(), centre, turn, robot_.frame().cellCm);
   truth_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, truth_.name());
   config_.startCol = p.startCol;
   config_.startRow = p.startRow;

@@ -79,6 +79,9 @@ class MappingRun {
 
   // The grid's turn as the robot was set down, compass degrees (the start jitter's turn).
   double setDownFrameDeg() const { return setDownFrameDeg_; }
+  // How far the robot was carried from where it was asked to be set down, to have room to turn (cm; 0 not
+  // moved, < 0 no spot nearby had room): sim::RobotPlacement::startMovedCm.
+  double startMovedCm() const { return startMovedCm_; }
   // Once the sweep found the walls (RunConfig::squareAtStart): how far, degrees (>= 0), the robot was left
   // off their nearest axis, the error its map is scored with.
   double squaredOffDeg() const { return squaredOffDeg_; }
@@ -104,7 +107,8 @@ class MappingRun {
   void layTruthSquare();
 
   RunConfig config_;
-  bool squared_ = false;        // layTruthSquare has run
+  bool squared_ = false;  // layTruthSquare has run
+  double startMovedCm_ = 0;
   double setDownFrameDeg_ = 0;  // the grid's turn as the robot was set down (sim::GridFrame::headingDeg)
   double squaredOffDeg_ = 0;    // after the sweep: degrees from the robot's heading to the walls' nearest axis
   sim::World truth_;

@@ -54,6 +54,11 @@ std::vector<std::array<double, 2>> RobotDescription::footprint(double xCm, doubl
   return corners;
 }
 
+double RobotDescription::sweepRadiusCm() const {
+  if (bodyLengthCm <= 0.0 || bodyWidthCm <= 0.0) return 0.0;
+  return std::hypot(bodyLengthCm / 2.0, bodyWidthCm / 2.0);
+}
+
 std::optional<RobotDescription> robotByName(const std::string& name) {
   if (name == "published") return published();
   if (name == "brick") return brick();

@@ -32,6 +32,10 @@ struct RobotDescription {
 
   // The body's corners in the plane for a robot at (xCm, yCm) facing headingDeg; empty for a point.
   std::vector<std::array<double, 2>> footprint(double xCm, double yCm, double headingDeg) const;
+  // How far the body's corners reach from its centre (cm; 0 for a point): what turning on the spot sweeps.
+  double sweepRadiusCm() const;
+  // Whether the body sweeps out of its own cell when it turns on the spot (ExplorerConfig::turnNeedsRoom).
+  bool turnNeedsRoom() const { return 2.0 * sweepRadiusCm() > cellCm; }
 };
 
 // "published": the seed method's experiments: 10 cm cells, four sensors at the centre, 5 cm - 1 m trusted,

@@ -1,5 +1,6 @@
 #include "host/sim/RobotPlacement.hpp"
 
+#include "host/sim/StartClearance.hpp"
 #include "host/sim/StartJitter.hpp"
 
 #include <cmath>
@@ -24,18 +25,20 @@ bool onRasterGrid(const Site& site, const RobotDescription& robot, const StartPo
 
 RobotPlacement placeRobot(const Site& site, const RobotDescription& robot, const StartPose& nominal,
                           double startJitterDeg, uint64_t seed) {
-  const StartPose start = jitterStart(nominal, robot.cellCm, startJitterDeg, seed);
+  ClearStart clear{jitterStart(nominal, robot.cellCm, startJitterDeg, seed), 0.0};
+  if (robot.turnNeedsRoom()) clear = withRoomToTurn(*site.scene, clear.pose, robot.cellCm, robot.sweepRadiusCm() + 1.0);
+  const StartPose& start = clear.pose;
   const Heading heading = static_cast<Heading>(squareQuarter(start.headingDeg));
   int col = 0, row = 0;
   if (onRasterGrid(site, robot, start, col, row)) {
     const double cell = robot.cellCm;
     Placement grid{GridFrame{Vec2(0.5 * cell, 0.5 * cell), 0.0, cell}, col, row, site.raster->width(),
                    site.raster->height()};
-    return RobotPlacement{site.scene, robot, start, grid, *site.raster, heading};
+    return RobotPlacement{site.scene, robot, start, grid, *site.raster, heading, clear.movedCm};
   }
   const Placement grid = placeOnGrid(*site.scene, start.cm, squareRemainderDeg(start.headingDeg), robot.cellCm);
   World truth = rasterizeScene(*site.scene, grid.frame, grid.width, grid.height, site.name);
-  return RobotPlacement{site.scene, robot, start, grid, std::move(truth), heading};
+  return RobotPlacement{site.scene, robot, start, grid, std::move(truth), heading, clear.movedCm};
 }
 
 RobotPlacement placeRobot(const Site& site, const PlacementRequest& r) {

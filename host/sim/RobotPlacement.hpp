@@ -22,9 +22,13 @@ struct RobotPlacement {
   Placement grid;   // the robot's grid over the whole scene; grid.startCol/startRow hold the start
   World truth;      // the truth on that grid
   Heading heading;  // the start heading against the grid (N, E, S, W)
+  // How far a body that sweeps out of its cell was moved from where it was set down to have room to turn
+  // (StartClearance): 0 not moved, < 0 no spot nearby had room (set down where asked).
+  double startMovedCm = 0.0;
 };
 
-// The robot's grid is the raster's own (and the raster itself the truth, cell numbers kept) when the site's
+// A robot whose body sweeps out of its cell when it turns is set down with room to turn (withRoomToTurn: the
+// jittered start moved by whole cells, +1 cm to spare). The robot's grid is the raster's own (and the raster itself the truth, cell numbers kept) when the site's
 // scene is a raster of the robot's cells and the true start is square on one of its cell centres; otherwise the
 // grid is laid over the scene from the true start (placeOnGrid) and the truth rasterised on it.
 RobotPlacement placeRobot(const Site& site, const RobotDescription& robot, const StartPose& nominal,

@@ -49,6 +49,60 @@ TEST(TravelPlanner, CostsCountMovesAndTurns) {
   }
 }
 
+// A body that sweeps into the neighbouring cells turns only where its four neighbours are known free
+// (ExplorerConfig::turnNeedsRoom); elsewhere it drives along its axis, forward or backward.
+TEST(TravelPlanner, ABodyThatNeedsRoomTurnsOnlyWhereItsFourNeighboursAreFree) {
+  struct RoomCase {
+    const char* name;
+    Pose from;
+    Cell to;
+    int costAnywhere, costWithRoom;  // -1 = unreachable
+  };
+  // A room of 5 x 3 free cells inside its walls: only the middle row's inner cells (2..4, 2) have room.
+  const std::vector<std::string> rows = {"#######", "#.....#", "#.....#", "#.....#", "#######"};
+  const std::vector<RoomCase> cases = {
+      {"along its axis: no turn needed", {{1, 1}, Dir::North}, {1, 3}, 2, 2},
+      {"beside the west wall it cannot leave its column", {{1, 1}, Dir::North}, {5, 1}, 5, -1},
+      {"turns one cell on, where there is room", {{3, 1}, Dir::North}, {5, 2}, 4, 4},
+      {"the row along the south wall only from its axis", {{3, 1}, Dir::East}, {5, 1}, 2, 2},
+      {"the south row cannot be joined across", {{3, 3}, Dir::North}, {5, 1}, 5, -1},
+      {"backwards along its axis", {{3, 2}, Dir::East}, {1, 2}, 2, 2},
+      {"a corner cell: reached only along a line it need not turn on", {{4, 2}, Dir::North}, {5, 3}, 3, -1},
+      {"the same corner from its column", {{5, 1}, Dir::North}, {5, 3}, 2, 2},
+  };
+  for (const bool room : {false, true}) {
+    for (const RoomCase& c : cases) {
+      test::GridFixture f;
+      f.draw(rows);
+      TravelStorage<32, 32, 512> storage;
+      TravelPlanner planner(storage.view(), 32, 32);
+      planner.setTurnNeedsRoom(room);
+      int found = -1;
+      ASSERT_TRUE(planner.search(f.grid(), c.from, [&](Cell cell, uint16_t cost) {
+        if (cell == c.to) found = cost;
+        return cell == c.to;
+      })) << c.name;
+      EXPECT_EQ(found, room ? c.costWithRoom : c.costAnywhere) << c.name << (room ? " (room)" : "");
+      if (found <= 0) continue;
+      // Every turn of the route is taken in a cell with room.
+      Route route;
+      ASSERT_TRUE(planner.routeTo(f.grid(), c.to, static_cast<uint16_t>(found), route)) << c.name;
+      Cell at = c.from.cell;
+      bool vertical = isVertical(c.from.heading);
+      while (!route.empty()) {
+        if (isVertical(route.front()) != vertical) {
+          EXPECT_TRUE(!room || TravelPlanner::roomToTurn(f.grid(), at))
+              << c.name << " turns at " << at.x << "," << at.y;
+          vertical = !vertical;
+        }
+        at = advance(at, route.front());
+        route.pop();
+      }
+      EXPECT_EQ(at, c.to) << c.name;
+    }
+  }
+}
+
 TEST(TravelPlanner, ReportsQueueOverflowInsteadOfOverrunning) {
   test::GridFixture f;
   f.draw({"..........", "..........", "..........", "..........", ".........."});
