@@ -302,6 +302,9 @@ DriveAction Pilot::stepCorrected(const DriveEvent& e) {
       return startExplorer(config_.startHeadingVarianceMrad2);
     case DriveEvent::Kind::Range:
       if (phase_ == Phase::Square) return square(e);
+#ifndef NXTMAP_NO_START_SQUARING
+      if (phase_ == Phase::Snap) return snap(e);
+#endif
       observe(e.sensor, e.reading);
       if (phase_ == Phase::PoseRead) {
         ++poseReads_;

@@ -44,6 +44,10 @@ struct PilotConfig {
   int16_t squareStepMrad = 87;  // between the sweep's headings
   // How well the squared heading is known (1 sigma, mrad): the estimate's spread plus the final turn's.
   int16_t squaredHeadingMrad = 20;
+  // Once square, the nearest wall no farther than this (cm) across and along lays the cells' edges on its
+  // face: the robot starts off its cell's centre by what that takes (walls in the honest world are not on
+  // a cell edge where the robot was set down; the pose readings take their faces to be).
+  int16_t snapRangeCm = 100;
   // With the sweep on: first measure how far the turns are off (TurnCalibration, this many whole turns
   // between two sweeps; 0: no calibration) and correct every turn by it for the rest of the run.
   uint8_t calibrateTurns = 0;
@@ -71,7 +75,7 @@ class Pilot {
   DriveAction step(const DriveEvent& e);
   bool finished() const { return phase_ == Phase::Done; }
   // The explorer has started: the start's sweep (and calibration) is over, or there was none.
-  bool explorerStarted() const { return phase_ != Phase::Idle && phase_ != Phase::Square; }
+  bool explorerStarted() const { return phase_ != Phase::Idle && phase_ != Phase::Square && phase_ != Phase::Snap; }
 
   // Cells the caller holds closed without their being walls (a doorway kept shut while a room is
   // mapped): never a landmark for a pose reading. Non-owning: the set must outlive the pilot or be
@@ -100,11 +104,12 @@ class Pilot {
   uint32_t poseReadings() const { return poseReads_; }
 
  private:
-  enum class Phase : uint8_t { Idle, Square, Level, ExplorerRead, PoseRead, Turn, Steer, Drive, Think, Done };
+  enum class Phase : uint8_t { Idle, Square, Snap, Level, ExplorerRead, PoseRead, Turn, Steer, Drive, Think, Done };
 
   DriveAction stepCorrected(const DriveEvent& e);  // step() in the robot's true angles
   DriveAction startExplorer(int64_t headingVarianceMrad2);
   DriveAction square(const DriveEvent& e);  // the start's sweep (Phase::Square)
+  DriveAction snap(const DriveEvent& e);    // once square, the cell's lattice laid on the nearest walls
   DriveAction begin(const Action& a);
   DriveAction beginMove();
   DriveAction driveToCentre();
@@ -131,6 +136,11 @@ class Pilot {
   StartSquaring squaring_;        // calibration and the turn correction (PilotConfig's are ignored there)
   TurnCalibration calibration_;
   int32_t turnErrorPpm_;  // see PilotConfig::turnErrorPpm
+  // Phase::Snap: per axis (0 across the start heading's columns, 1 along its rows) the nearest wall's
+  // distance from the robot's centre (mm, 0 = none yet) and the offset from the cell centre that puts its
+  // face on a cell edge (mm, the tracker's x and y).
+  int32_t snapDistMm_[2] = {0, 0};
+  int32_t snapMm_[2] = {0, 0};
 #endif
   Pose startPose_{};  // where the explorer starts once the robot is square
   int32_t cellMm_;

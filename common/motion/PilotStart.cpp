@@ -6,6 +6,9 @@ namespace nxtmap {
 
 DriveAction Pilot::startExplorer(int64_t headingVarianceMrad2) {
   tracker_.reset(headingVarianceMrad2);
+#ifndef NXTMAP_NO_START_SQUARING
+  tracker_.place(snapMm_[0], snapMm_[1]);
+#endif
   readHere_ = 0;
   startRun();
   return begin(explorer_.step(Event::startAt(startPose_)));
@@ -25,12 +28,38 @@ DriveAction Pilot::square(const DriveEvent& e) {
     const DriveAction a = squaring_.step(e);
     if (!squaring_.finished()) return a;
   }
-  // Square (or as set down, with no wall seen): the tracker starts with what is left of the heading error.
-  const int64_t sigma = squaring_.result().found ? config_.squaredHeadingMrad : 0;
-  const int64_t residual = squaring_.residualMrad();
-  return startExplorer(config_.startHeadingVarianceMrad2 + sigma * sigma + residual * residual);
+  if (squaring_.result().found) {  // square: now where the walls are across and along
+    phase_ = Phase::Snap;
+    return DriveAction::read(Sensor::Front);
+  }
+  const int64_t residual = squaring_.residualMrad();  // as set down, with no wall seen
+  return startExplorer(config_.startHeadingVarianceMrad2 + residual * residual);
 #endif
 }
+
+#ifndef NXTMAP_NO_START_SQUARING
+DriveAction Pilot::snap(const DriveEvent& e) {
+  NXTMAP_CHECK(e.kind == DriveEvent::Kind::Range);
+  const Dir d = sensorDir(startPose_.heading, e.sensor);
+  const int32_t distMm = (static_cast<int32_t>(e.reading.cm) + explorer_.config().geometry.mountCm) * 10;
+  const int axis = isVertical(d) ? 1 : 0;
+  if (e.reading.status == RangeStatus::Good && e.reading.cm <= config_.snapRangeCm &&
+      (snapDistMm_[axis] == 0 || distMm < snapDistMm_[axis])) {
+    // The face lies (k - 1/2) cells from the cell's centre (where the pose readings take it to be): the
+    // offset along d is that minus the distance, the one of them within half a cell.
+    int32_t along = (cellMm_ / 2 - distMm) % cellMm_;
+    if (along <= -cellMm_ / 2) along += cellMm_;
+    if (along > cellMm_ / 2) along -= cellMm_;
+    snapDistMm_[axis] = distMm;
+    snapMm_[axis] = (isVertical(d) ? dy(d) : dx(d)) * along;
+  }
+  const int next = static_cast<int>(e.sensor) + 1;
+  if (next < kSensorCount) return DriveAction::read(static_cast<Sensor>(next));
+  const int64_t sigma = config_.squaredHeadingMrad;
+  const int64_t residual = squaring_.residualMrad();
+  return startExplorer(config_.startHeadingVarianceMrad2 + sigma * sigma + residual * residual);
+}
+#endif
 
 DriveAction Pilot::step(const DriveEvent& e) {
 #ifdef NXTMAP_NO_START_SQUARING

@@ -18,6 +18,13 @@ void PoseTracker::reset(int64_t thetaVarianceMrad2) {
   p_[2][2] = thetaVarianceMrad2 > 0 ? thetaVarianceMrad2 : 0;
 }
 
+void PoseTracker::place(int32_t xMm, int32_t yMm) {
+  x_ = xMm;
+  y_ = yMm;
+  if (xMm != 0) p_[0][0] += readingVariance();
+  if (yMm != 0) p_[1][1] += readingVariance();
+}
+
 void PoseTracker::rotated(int32_t mrad, int quarters) {
   // The heading error changes by what was turned minus what is believed, kept to the microradian
   // so that thousands of quarter turns do not add up rounding.

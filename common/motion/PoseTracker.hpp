@@ -36,6 +36,8 @@ class PoseTracker {
   // Exactly at the centre and, to `thetaVarianceMrad2` (mrad^2; 0: exactly), on the axis (the start
   // of a run; a robot handed over by another pilot keeps that pilot's heading uncertainty).
   void reset(int64_t thetaVarianceMrad2 = 0);
+  // The robot stands xMm east and yMm north of its cell's centre, known as well as one reading (after reset).
+  void place(int32_t xMm, int32_t yMm);
 
   // The robot turned in place by `mrad` (clockwise +) while the believed heading changed by
   // `quarters` quarter turns.
