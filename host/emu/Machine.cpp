@@ -1,6 +1,9 @@
 #include "host/emu/Machine.hpp"
 
-#include "host/emu/AlignedLoads.hpp"
+#include "host/emu/AccessBytes.hpp"
+#include "host/emu/AlignedAccess.hpp"
+#include "host/emu/DirectStores.hpp"
+#include "host/emu/MachineHooks.hpp"
 #include "host/emu/StoreSite.hpp"
 #include "host/emu/UnicornFastPath.hpp"
 #include "host/log/Log.hpp"
@@ -20,10 +23,10 @@
 namespace nxtmap::emu {
 
 namespace {
-constexpr uint64_t kMmioBase = 0xFFFA0000;
-constexpr uint64_t kMmioSize = 0x60000;
-constexpr uint32_t kCpsrT = 1u << 5, kCpsrI = 1u << 7;
-constexpr uint32_t kPaint = 0xA5;
+constexpr uint8_t kPaint = 0xA5;
+// The guard's bytes on pages shared with .bss and the stacks are checked this often (and when run() returns):
+// after every slice cost 2 % of the host time.
+constexpr uint64_t kPaintCheckCycles = cyclesFromMs(1);
 constexpr uint64_t kMaskedPoll = 256;  // re-check a masked pending IRQ every this many cycles
 
 double cpuNow() {
@@ -41,174 +44,7 @@ void check(uc_err e, const char* what) {
   if (e != UC_ERR_OK) throw std::runtime_error(std::string("unicorn: ") + what + ": " + uc_strerror(e));
 }
 
-std::string hex(uint32_t v) {
-  char b[16];
-  std::snprintf(b, sizeof b, "0x%08x", static_cast<unsigned>(v));
-  return b;
-}
 }  // namespace
-
-struct Machine::Hooks {
-  static void block(uc_engine* uc, uint64_t address, uint32_t size, void* user) {
-    auto* m = static_cast<Machine*>(user);
-    if (!m->flashRestore_.empty()) m->restoreFlash();
-    if (m->efc_.busy() && m->inFlash(static_cast<uint32_t>(address))) {
-      m->setFault(FaultKind::BadMemory, static_cast<uint32_t>(address),
-                  "instruction fetch from flash while the flash controller programs it (FRDY 0)");
-      uc_emu_stop(uc);
-      return;
-    }
-    if (m->timedReturn_ != 0 && static_cast<uint32_t>(address) == m->timedReturn_) {
-      m->maxTimed_ = std::max(m->maxTimed_, m->clock_.now - m->timedStart_);
-      ++m->timedCalls_;
-      m->timedReturn_ = 0;
-    }
-    if (m->clock_.now >= m->clock_.stopAt) {
-      uc_emu_stop(uc);  // before the block: PC == address, the block does not run
-      m->stoppedAt_ = static_cast<uint32_t>(address);
-      return;
-    }
-    // ARM or Thumb: learnt once per code address (reading CPSR in every block costs ~5 %).
-    const int slot = m->modeSlot(static_cast<uint32_t>(address));
-    uint32_t cpsr = 0;
-    if (slot < 0 || m->modes_[static_cast<size_t>(slot)] == 0 || m->trace_) {
-      uc_reg_read(uc, UC_ARM_REG_CPSR, &cpsr);
-      if (slot >= 0) m->modes_[static_cast<size_t>(slot)] = (cpsr & kCpsrT) ? 2 : 1;
-    } else if (m->modes_[static_cast<size_t>(slot)] == 2) {
-      cpsr = kCpsrT;
-    }
-    if (m->trace_)
-      log::debug("emu", "block %08x size %u cpsr %08x t=%llu", static_cast<unsigned>(address), size, cpsr,
-                 static_cast<unsigned long long>(m->clock_.now));
-    const uint64_t n = (cpsr & kCpsrT) ? size / 2 : size / 4;
-    m->blockStart_ = m->clock_.now;
-    m->clock_.now += n;
-    m->executed_ += n;
-    m->lastBlock_ = static_cast<uint32_t>(address);
-    m->lastBlockBytes_ = size;
-    m->blockWrites_ = 0;
-  }
-
-  static void timedEntry(uc_engine* uc, uint64_t, uint32_t, void* user) {
-    auto* m = static_cast<Machine*>(user);
-    if (m->timedReturn_ != 0) return;  // nested or recursive: time the outermost call only
-    uint32_t lr = 0;
-    uc_reg_read(uc, UC_ARM_REG_LR, &lr);
-    m->timedReturn_ = lr & ~1u;
-    m->timedStart_ = m->blockStart_;  // the entry starts its block (it is reached by a branch)
-  }
-
-  static void memAccess(uc_engine* uc, uc_mem_type type, uint64_t address, int size, int64_t, void* user) {
-    auto* m = static_cast<Machine*>(user);
-    const auto a = static_cast<uint32_t>(address);
-    if (type == UC_MEM_WRITE) ++m->blockWrites_;
-    if (m->options_.checkAlignment && (a & static_cast<uint32_t>(size - 1)) != 0) {
-      m->setFault(FaultKind::Unaligned, a,
-                  std::string(type == UC_MEM_WRITE ? "write" : "read") + " of " + std::to_string(size) + " bytes");
-      uc_emu_stop(uc);
-      return;
-    }
-    if (type == UC_MEM_WRITE && a >= m->guardLow_ && a < m->stackLimit_) {
-      m->setFault(FaultKind::StackOverflow, a, "write below the stack limit " + hex(m->stackLimit_));
-      uc_emu_stop(uc);
-    }
-  }
-
-  static bool badMemory(uc_engine* uc, uc_mem_type type, uint64_t address, int size, int64_t value, void* user) {
-    auto* m = static_cast<Machine*>(user);
-    const auto a = static_cast<uint32_t>(address);
-    if (type == UC_MEM_WRITE_PROT && m->inFlash(a)) {  // the EFC latch (the store itself is undone)
-      const uint32_t off = (a >= kFlashBase ? a - kFlashBase : a) & ~3u;
-      FlashWord w{off, {}};
-      std::memcpy(w.bytes, m->flash_ + off, 4);
-      m->flashRestore_.push_back(w);
-      m->efc_.latchWrite(a >= kFlashBase ? a - kFlashBase : a, static_cast<uint32_t>(value), size);
-      return true;
-    }
-    uint32_t sp = 0;
-    uc_reg_read(uc, UC_ARM_REG_SP, &sp);
-    const char* what = "access";
-    switch (type) {
-      case UC_MEM_READ_UNMAPPED: what = "read of unmapped memory"; break;
-      case UC_MEM_WRITE_UNMAPPED: what = "write to unmapped memory"; break;
-      case UC_MEM_FETCH_UNMAPPED: what = "instruction fetch from unmapped memory"; break;
-      case UC_MEM_WRITE_PROT: what = "write to read-only memory (flash)"; break;
-      case UC_MEM_FETCH_PROT: what = "instruction fetch from non-executable memory"; break;
-      default: break;
-    }
-    const bool stackish = (type == UC_MEM_WRITE_UNMAPPED || type == UC_MEM_WRITE_PROT) && a + 64 >= sp &&
-                          a <= sp + 64 && a < kRamBase + kRamSize;
-    if (stackish)
-      m->setFault(FaultKind::StackOverflow, a, std::string(what) + " at the stack pointer " + hex(sp));
-    else
-      m->setFault(FaultKind::BadMemory, a, std::string(what) + " (" + std::to_string(size) + " bytes)");
-    return false;
-  }
-
-  static void interrupt(uc_engine* uc, uint32_t intno, void* user) {
-    auto* m = static_cast<Machine*>(user);
-    constexpr uint32_t kDataAbort = 4;  // QEMU's EXCP_DATA_ABORT
-    if (intno == kDataAbort) {
-      if (const std::optional<uint32_t> a = takeUnalignedLoad()) {  // the load did not run
-        m->setFault(FaultKind::Unaligned, *a, m->unalignedLoadWhat());
-        uc_emu_stop(uc);
-        return;
-      }
-    }
-    static const char* names[] = {
-        "reset",      "undefined instruction", "SWI",        "prefetch abort", "data abort", "IRQ", "FIQ",
-        "breakpoint", "exception return",      "kernel trap"};
-    const std::string name = intno < 10 ? names[intno] : "exception " + std::to_string(intno);
-    m->setFault(FaultKind::Exception, 0, name + " (no handler is emulated)");
-    uc_emu_stop(uc);
-  }
-
-  static bool invalidInsn(uc_engine*, void* user) {
-    auto* m = static_cast<Machine*>(user);
-    m->setFault(FaultKind::Exception, 0, "undefined instruction (or one the ARMv4T ARM7TDMI lacks)");
-    return false;
-  }
-
-  static Slot* slotFor(Machine* m, uint64_t offset) {
-    const uint8_t idx = m->page_[offset >> 4];
-    return idx ? &m->slots_[idx - 1u] : nullptr;
-  }
-
-  static uint64_t mmioRead(uc_engine* uc, uint64_t offset, unsigned size, void* user) {
-    auto* m = static_cast<Machine*>(user);
-    const auto a = static_cast<uint32_t>(kMmioBase + offset);
-    Slot* s = slotFor(m, offset);
-    uint32_t v = 0;
-    if (!s || !s->device->read((a - s->base) & ~3u, v)) {
-      m->setFault(FaultKind::UnmodelledIo, a,
-                  std::string("read of ") + (s ? s->device->name() : "an unmapped peripheral") + " register +" +
-                      hex(s ? a - s->base : offset));
-      uc_emu_stop(uc);
-      return 0;
-    }
-    if (size < 4) v >>= 8 * (a & 3);
-    return v;
-  }
-
-  static void mmioWrite(uc_engine* uc, uint64_t offset, unsigned size, uint64_t value, void* user) {
-    auto* m = static_cast<Machine*>(user);
-    const auto a = static_cast<uint32_t>(kMmioBase + offset);
-    Slot* s = slotFor(m, offset);
-    auto v = static_cast<uint32_t>(value);
-    if (size < 4) v <<= 8 * (a & 3);
-    if (!s || !s->device->write((a - s->base) & ~3u, v)) {
-      m->setFault(FaultKind::UnmodelledIo, a,
-                  std::string("write of ") + hex(v) + " to " + (s ? s->device->name() : "an unmapped peripheral") +
-                      " register +" + hex(s ? a - s->base : offset));
-      uc_emu_stop(uc);
-      return;
-    }
-    if (s->device->writeReplans((a - s->base) & ~3u)) {
-      m->clock_.poke();  // re-plan at the next block
-      m->irqAfterStore(a, size, static_cast<uint32_t>(value));
-    }
-  }
-};
 
 Machine::Machine(const ElfImage& image, const MachineOptions& options)
     : image_(image),
@@ -224,7 +60,7 @@ Machine::Machine(const ElfImage& image, const MachineOptions& options)
   if (trace_ && !log::enabled(log::Level::Debug)) log::setLevel(log::Level::Debug);
   if (std::getenv("NXTMAP_EMU_NOALIGN")) options_.checkAlignment = false;
   if (std::getenv("NXTMAP_EMU_SLOW_STORES")) setUnicornFastStores(false);
-  if (std::getenv("NXTMAP_EMU_LOAD_HOOK")) setAlignedLoadsAllowed(false);
+  if (std::getenv("NXTMAP_EMU_LOAD_HOOK")) setAlignedAccessAllowed(false);
   flashRestore_.reserve(64);
   if (!flash_ || !ram_) throw std::bad_alloc();
   std::memcpy(flash_, image.flash().data(), kFlashSize);
@@ -238,9 +74,19 @@ Machine::Machine(const ElfImage& image, const MachineOptions& options)
   check(uc_open(UC_ARCH_ARM, UC_MODE_ARM, &uc_), "open");
   // Must come before the first mapping, or Unicorn silently uses a Cortex-A15.
   check(uc_ctl_set_cpu_model(uc_, UC_CPU_ARM_TI925T), "cpu model TI925T");
-  check(uc_mem_map_ptr(uc_, kFlashBase, kFlashSize, UC_PROT_READ | UC_PROT_EXEC, flash_), "map flash");
-  check(uc_mem_map_ptr(uc_, kRamBase, kRamSize, UC_PROT_ALL, ram_), "map RAM");
-  check(uc_mem_map_ptr(uc_, 0, kFlashSize, UC_PROT_READ | UC_PROT_EXEC, flash_), "map flash mirror at 0");
+  mapFlash(kFlashBase);
+  mapFlash(0);  // the mirror until the remap
+  // Alignment is checked by Unicorn itself where it can (AlignedAccess); otherwise a hook on every load and
+  // store checks it, and the stack guard too. Any memory hook sends every load and store down Unicorn's slow
+  // path, so without one the guard is made of pages (StackGuard).
+  alignedAccess_ = options_.checkAlignment && alignedAccessAvailable();
+  hookMemory_ = options_.checkAlignment && !alignedAccess_;
+  // RAM stores stay in Unicorn's translated code (DirectStores) while no code runs from RAM.
+  directRam_ = !hookMemory_ && directStoresAvailable() && !ramImage;
+  const auto ebss = image.firstSymbol({"_ebss", "__bss_end__", "_end", "end"});
+  const auto limit = image.firstSymbol({"__stack_limit__", "__stacks_start__", "__stack_limit", "_sstack"});
+  guard_ = StackGuard(options.guardLow.value_or(ebss.value_or(0)), options.stackLimit.value_or(limit.value_or(0)));
+  guard_.mapRam(uc_, ram_, !hookMemory_);
   check(uc_mmio_map(uc_, kMmioBase, kMmioSize, &Hooks::mmioRead, this, &Hooks::mmioWrite, this), "map MMIO");
 
   page_.assign(kMmioSize >> 4, 0);
@@ -265,17 +111,9 @@ Machine::Machine(const ElfImage& image, const MachineOptions& options)
   check(uc_hook_add(uc_, &h, UC_HOOK_INSN_INVALID, reinterpret_cast<void*>(&Hooks::invalidInsn), this, 1, 0),
         "invalid instruction hook");
 
-  const auto ebss = image.firstSymbol({"_ebss", "__bss_end__", "_end", "end"});
-  const auto limit = image.firstSymbol({"__stack_limit__", "__stacks_start__", "__stack_limit", "_sstack"});
-  guardLow_ = options.guardLow.value_or(ebss.value_or(0));
-  stackLimit_ = options.stackLimit.value_or(limit.value_or(0));
-  const bool guard = stackLimit_ > guardLow_;
-  // Loads are checked by Unicorn itself where it can (AlignedLoads); a hook on loads slows every load.
-  alignedLoads_ = options_.checkAlignment && alignedLoadsAvailable();
-  const bool hookLoads = options_.checkAlignment && !alignedLoads_;
-  if (options_.checkAlignment || guard)
-    check(uc_hook_add(uc_, &h, UC_HOOK_MEM_WRITE | (hookLoads ? UC_HOOK_MEM_READ : 0),
-                      reinterpret_cast<void*>(&Hooks::memAccess), this, 1, 0),
+  if (hookMemory_)
+    check(uc_hook_add(uc_, &h, UC_HOOK_MEM_WRITE | UC_HOOK_MEM_READ, reinterpret_cast<void*>(&Hooks::memAccess), this,
+                      1, 0),
           "memory hook");
 
   if (options.timedFunction) {
@@ -333,17 +171,6 @@ uint32_t Machine::currentPc() const {
   return pc ? pc : lastBlock_;
 }
 
-int Machine::modeSlot(uint32_t a) const {
-  if (a < kFlashSize) return static_cast<int>(a >> 1);
-  if (a - kFlashBase < kFlashSize) return static_cast<int>((kFlashSize + (a - kFlashBase)) >> 1);
-  if (a - kRamBase < kRamSize) return static_cast<int>((2 * kFlashSize + (a - kRamBase)) >> 1);
-  return -1;
-}
-
-bool Machine::inFlash(uint32_t a) const {
-  return (a >= kFlashBase && a - kFlashBase < kFlashSize) || (!remapped_ && a < kFlashSize);
-}
-
 void Machine::restoreFlash() {
   for (const FlashWord& w : flashRestore_) std::memcpy(flash_ + w.offset, w.bytes, 4);
   flashRestore_.clear();
@@ -366,7 +193,26 @@ void Machine::applyRemap() {
   if (remapped_)
     check(uc_mem_map_ptr(uc_, 0, kRamSize, UC_PROT_ALL, ram_), "remap RAM to 0");
   else
-    check(uc_mem_map_ptr(uc_, 0, kFlashSize, UC_PROT_READ | UC_PROT_EXEC, flash_), "remap flash to 0");
+    mapFlash(0);
+}
+
+void Machine::mapFlash(uint64_t at) {
+  check(uc_mem_map_ptr(uc_, at, kFlashSize, UC_PROT_READ | UC_PROT_EXEC, flash_), "map flash");
+  // uc_mem_map_ptr records the permissions but leaves the pages writable for translated code without a
+  // memory hook; protecting them again marks them read-only, so a store takes the path that checks them (the
+  // EFC latch or a fault, see Hooks::badMemory) and leaves the flash as it was.
+  check(uc_mem_protect(uc_, at, kFlashSize, UC_PROT_READ | UC_PROT_EXEC), "protect flash");
+}
+
+void Machine::checkGuardPaint() {
+  paintCheckAt_ = clock_.now + kPaintCheckCycles;
+  if (fault_) return;
+  if (const std::optional<uint32_t> lost = guard_.paintLost(kPaint))
+    stackOverflow(*lost, " (found painted over after the store: the PC is where the CPU stopped)");
+}
+
+void Machine::stackOverflow(uint32_t address, const char* how) {
+  setFault(FaultKind::StackOverflow, address, "write below the stack limit " + hexWord(guard_.limit()) + how);
 }
 
 bool Machine::readByte(uint32_t a, uint8_t& v) const {
@@ -432,7 +278,18 @@ void Machine::irqAfterStore(uint32_t address, unsigned bytes, uint32_t value) {
   std::array<uint32_t, 16> regs{};
   for (int i = 0; i < 15; ++i) uc_reg_read(uc_, ids[i], &regs[static_cast<size_t>(i)]);
   const bool thumb = (cpsr & kCpsrT) != 0;
-  const auto site = findStoreSite(*this, lastBlock_, lastBlockBytes_, thumb, regs, address, bytes, value, blockWrites_);
+  // Without a memory hook the store is known exactly (DirectStores): decode it alone. Otherwise the block is
+  // searched, the hook's count of its writes telling stores that look alike apart.
+  uint32_t from = lastBlock_, span = lastBlockBytes_;
+  unsigned ordinal = blockWrites_;
+  uint32_t pc = 0;
+  if (!hookMemory_ && directStoresAvailable() && restoreStorePc(cpu_) &&
+      uc_reg_read(uc_, UC_ARM_REG_PC, &pc) == UC_ERR_OK && pc - lastBlock_ < lastBlockBytes_) {
+    from = pc;
+    span = thumb ? 2 : 4;
+    ordinal = 1;
+  }
+  const auto site = findStoreSite(*this, from, span, thumb, regs, address, bytes, value, ordinal);
   if (!site) {
     ++lateIrqs_;  // taken at the block's end, as before
     log::debug("emu",
@@ -453,7 +310,7 @@ void Machine::irqAfterStore(uint32_t address, unsigned bytes, uint32_t value) {
   stepBeforeIrq_ = true;
 }
 
-std::string Machine::unalignedLoadWhat() const {
+std::string Machine::unalignedWhat(bool store) const {
   uint32_t cpsr = 0;
   uc_reg_read(uc_, UC_ARM_REG_CPSR, &cpsr);
   const bool thumb = (cpsr & kCpsrT) != 0;
@@ -463,8 +320,9 @@ std::string Machine::unalignedLoadWhat() const {
     uint8_t b = 0;
     if (readByte(pc + i, b)) insn |= uint32_t{b} << (8 * i);
   }
-  const unsigned bytes = loadBytes(insn, thumb);
-  return bytes ? "read of " + std::to_string(bytes) + " bytes" : std::string("read");
+  const char* what = store ? "write" : "read";
+  const unsigned bytes = store ? storeBytes(insn, thumb) : loadBytes(insn, thumb);
+  return bytes ? what + (" of " + std::to_string(bytes) + " bytes") : std::string(what);
 }
 
 uint32_t Machine::instructionBytes(uint32_t pc, bool thumb) const {
@@ -552,9 +410,13 @@ bool Machine::run(uint64_t until, const std::function<bool()>& stop) {
     // The step translates afresh, so that Unicorn stops at `end`: a block cached at pc would run on past it.
     if (step) uc_ctl_remove_cache(uc_, pc, pc + 1);
     const uint64_t end = step ? pc + instructionBytes(pc, (cpsr & kCpsrT) != 0) : 0xFFFFFFF0ull;
-    setAlignedLoads(alignedLoads_);
+    setAlignedAccess(alignedAccess_);
+    setDirectRamStores(directRam_ ? kRamBase : 0, directRam_ ? kRamBase + kRamSize : 0);
+    setCpuSlot(&cpu_);
     const uc_err e = uc_emu_start(uc_, begin, end, 0, 0);
+    setCpuSlot(nullptr);
     restoreFlash();
+    if (clock_.now >= paintCheckAt_) checkGuardPaint();
     if (stoppedAt_ != 0 && !fault_) {
       // Stopped by the block hook before that block ran. Unicorn 2.0.1 sometimes leaves PC past the
       // block's first instructions (seen on a chained Thumb cmp/beq block); the block did not execute,
@@ -567,6 +429,7 @@ bool Machine::run(uint64_t until, const std::function<bool()>& stop) {
     if (e != UC_ERR_OK && !fault_) setFault(FaultKind::BadMemory, 0, std::string("unicorn: ") + uc_strerror(e));
     paceToWall();
   }
+  checkGuardPaint();
   wallSeconds_ += wallNow() - wallStart;
   cpuSeconds_ += cpuNow() - cpuStart;
   return !fault_;

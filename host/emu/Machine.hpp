@@ -17,6 +17,7 @@
 #include "host/emu/Pit.hpp"
 #include "host/emu/Pmc.hpp"
 #include "host/emu/ResetController.hpp"
+#include "host/emu/StackGuard.hpp"
 #include "host/emu/Watchdog.hpp"
 
 #include <cstdlib>
@@ -31,7 +32,7 @@ struct uc_struct;
 namespace nxtmap::emu {
 
 struct MachineOptions {
-  bool checkAlignment = true;  // trap unaligned loads/stores (stores by the memory hook, loads see AlignedLoads)
+  bool checkAlignment = true;  // trap unaligned loads/stores (Unicorn checks them, see AlignedAccess, or a hook)
   bool realtime = false;       // pace emulated time to the wall clock
   // Lowest address the stacks may use: writes in [guardLow, stackLimit) are a stack overflow.
   // Taken from the ELF (_ebss/__bss_end__ .. __stack_limit__/__stacks_start__) when not set.
@@ -104,6 +105,7 @@ class Machine : public GuestMemory {
   void setFault(FaultKind kind, uint32_t address, std::string what, std::optional<uint32_t> pc = {});
   uint32_t currentPc() const;
   void applyRemap();
+  void mapFlash(uint64_t at);
   void advanceModels();
   uint64_t nextEvent() const;
   void takeIrq();
@@ -112,8 +114,10 @@ class Machine : public GuestMemory {
   // instruction of latency, as the ARM7's nIRQ synchroniser gives), instead of at the block's end.
   void irqAfterStore(uint32_t address, unsigned bytes, uint32_t value);
   uint32_t instructionBytes(uint32_t pc, bool thumb) const;
-  std::string unalignedLoadWhat() const;      // "read of N bytes" for the load at PC
-  void enterIrq(uint32_t cpsr, uint32_t pc);  // IRQ mode, LR = pc + 4, PC = 0x18
+  std::string unalignedWhat(bool store) const;  // "read of N bytes" / "write of N bytes" for the access at PC
+  void stackOverflow(uint32_t address, const char* how = "");  // a store into the stack guard
+  void checkGuardPaint();                                      // the guard's painted bytes (StackGuard::paintLost)
+  void enterIrq(uint32_t cpsr, uint32_t pc);                   // IRQ mode, LR = pc + 4, PC = 0x18
   void paceToWall();
   void restoreFlash();
   void flashProgrammed(uint32_t offset, uint32_t bytes);
@@ -157,16 +161,26 @@ class Machine : public GuestMemory {
   uint32_t lastBlockBytes_ = 0;
   uint32_t blockWrites_ = 0;  // memory writes made in the current block (0 = unknown: no memory hook)
   uint64_t lateIrqs_ = 0;
-  bool stepBeforeIrq_ = false;
-  bool alignedLoads_ =
-      false;  // Unicorn checks load alignment (AlignedLoads): the memory hook sees stores only  // run one instruction before taking the IRQ a store raised
+  bool stepBeforeIrq_ = false;  // run one instruction before taking the IRQ a store raised
+  bool alignedAccess_ = false;  // Unicorn checks alignment (AlignedAccess)
+  bool hookMemory_ = false;     // a hook on every load and store (alignment, guard, blockWrites_); else none
+  bool directRam_ = false;      // RAM stores stay in the translated code (DirectStores): no code ran from RAM
+  void* cpu_ = nullptr;         // QEMU's CPUState of uc_ (DirectStores), once the CPU has run
   // Per halfword of code (address 0 window, flash, RAM): 0 unknown, 1 ARM, 2 Thumb. Code at an address keeps
   // its state; self-modifying code that switches state at an address is not supported.
   std::vector<uint8_t> modes_ = std::vector<uint8_t>((2 * kFlashSize + kRamSize) / 2, 0);
-  int modeSlot(uint32_t address) const;  // index into modes_, -1 outside
-  bool inFlash(uint32_t address) const;  // flash, or its mirror at 0 before the remap
-  uint32_t stoppedAt_ = 0;               // block at which the block hook stopped the CPU (0 = none)
-  uint32_t guardLow_ = 0, stackLimit_ = 0;
+  int modeSlot(uint32_t a) const {  // index into modes_, -1 outside
+    if (a < kFlashSize) return static_cast<int>(a >> 1);
+    if (a - kFlashBase < kFlashSize) return static_cast<int>((kFlashSize + (a - kFlashBase)) >> 1);
+    if (a - kRamBase < kRamSize) return static_cast<int>((2 * kFlashSize + (a - kRamBase)) >> 1);
+    return -1;
+  }
+  bool inFlash(uint32_t a) const {  // flash, or its mirror at 0 before the remap
+    return (a >= kFlashBase && a - kFlashBase < kFlashSize) || (!remapped_ && a < kFlashSize);
+  }
+  uint32_t stoppedAt_ = 0;  // block at which the block hook stopped the CPU (0 = none)
+  StackGuard guard_{0, 0};
+  uint64_t paintCheckAt_ = 0;  // clock at which the guard's paint is checked next
   uint32_t timedEntry_ = 0;
   uint32_t timedReturn_ = 0;  // 0 = not inside a timed call
   uint64_t timedStart_ = 0;
