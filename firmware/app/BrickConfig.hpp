@@ -25,11 +25,9 @@ struct BrickConfig {
   int16_t minCm = 7;       // the LEGO sensor is unreliable closer than this
   int16_t maxCm = 120;     // and beyond this
   int16_t mountCm = 6;     // sensor faces ahead of the robot's centre
-  // The 16 x 18 cm body sweeps 12 cm from its centre when it turns, more than half a cell: it should turn
-  // only where the four cells around it are known free (ExplorerConfig::turnNeedsRoom). Off until the
-  // explorer stops re-reading a side whose "no echo" the blind zone leaves inconclusive (with nowhere to
-  // turn, a room that answers nothing keeps it reading to its action limit).
-  bool turnNeedsRoom = false;
+  // The 16 x 18 cm body sweeps 12 cm from its centre when it turns, more than half a cell: it turns only
+  // where the four cells around it are known free (ExplorerConfig::turnNeedsRoom).
+  bool turnNeedsRoom = true;
 #endif
 
   ExplorerConfig explorer() const {

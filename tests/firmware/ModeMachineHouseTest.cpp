@@ -15,7 +15,7 @@ namespace {
 using Mode = protocol::BrickMode;
 using protocol::PathState;
 
-constexpr uint32_t kDriveLimitMs = 120000;  // far more than any command here takes with the rig's wheels
+constexpr uint32_t kDriveLimitMs = 240000;  // far more than any command here takes with the rig's wheels
 
 protocol::Command confinedExplore() {
   protocol::Command c = commandOf(protocol::CommandKind::Explore);
