@@ -9,14 +9,27 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdint>
+#include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace nxtmap::emu::test {
 
 inline std::string probePath(const std::string& name) {
   return std::string(NXTMAP_EMU_PROBE_DIR) + "/" + name + ".elf";
+}
+
+// A raw flash image of little-endian ARM words written to `path` and loaded at the flash base.
+inline ElfLoad loadWords(const std::string& path, const std::vector<uint32_t>& words) {
+  {
+    std::ofstream out(path, std::ios::binary);
+    for (uint32_t w : words)
+      for (int b = 0; b < 4; ++b) out.put(static_cast<char>(w >> (8 * b)));
+  }
+  return ElfImage::load(path);
 }
 
 inline ElfImage loadProbe(const std::string& name) {

@@ -5,10 +5,10 @@
 #include "../support/TempDir.hpp"
 #include "host/emu/AlignedAccess.hpp"
 #include "host/emu/Machine.hpp"
+#include "tests/emu/EmuTestSupport.hpp"
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -38,12 +38,7 @@ void runRows(const char* name, uint32_t low, uint32_t limit, const std::vector<R
     for (const Row& r : rows) {
       SCOPED_TRACE(std::string(r.what) + (hook ? ", hook on every access" : ", pages"));
       const std::string path = dir.path("probe.bin");
-      {
-        std::ofstream out(path, std::ios::binary);
-        for (uint32_t w : program(r))
-          for (int b = 0; b < 4; ++b) out.put(static_cast<char>(w >> (8 * b)));
-      }
-      const ElfLoad l = ElfImage::load(path);
+      const ElfLoad l = nxtmap::emu::test::loadWords(path, program(r));
       ASSERT_TRUE(l.image) << l.error;
       MachineOptions o;
       o.guardLow = low;

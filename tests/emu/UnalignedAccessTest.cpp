@@ -5,10 +5,10 @@
 #include "host/emu/AccessBytes.hpp"
 #include "host/emu/AlignedAccess.hpp"
 #include "host/emu/Machine.hpp"
+#include "tests/emu/EmuTestSupport.hpp"
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -65,12 +65,7 @@ TEST(UnalignedAccess, StopsAtTheLoadOrStoreWithItsAddressAndSize) {
       SCOPED_TRACE(std::string(r.what) + (unicornChecks ? ", Unicorn checks" : ", hook on every access"));
       setAlignedAccessAllowed(unicornChecks);
       const std::string path = dir.path("probe.bin");
-      {
-        std::ofstream out(path, std::ios::binary);
-        for (uint32_t w : program(r))
-          for (int b = 0; b < 4; ++b) out.put(static_cast<char>(w >> (8 * b)));
-      }
-      const ElfLoad l = ElfImage::load(path);
+      const ElfLoad l = nxtmap::emu::test::loadWords(path, program(r));
       ASSERT_TRUE(l.image) << l.error;
       Machine m(*l.image, MachineOptions{});
       setAlignedAccessAllowed(true);
@@ -97,12 +92,7 @@ TEST(UnalignedAccess, SwitchedOffAnUnalignedLoadRuns) {
   const Row r{"ARM LDR", false, 0xE5901000, 0x200101, nullptr};
   nxtmap::test::TempDir dir("unaligned_off");
   const std::string path = dir.path("probe.bin");
-  {
-    std::ofstream out(path, std::ios::binary);
-    for (uint32_t w : program(r))
-      for (int b = 0; b < 4; ++b) out.put(static_cast<char>(w >> (8 * b)));
-  }
-  const ElfLoad l = ElfImage::load(path);
+  const ElfLoad l = nxtmap::emu::test::loadWords(path, program(r));
   ASSERT_TRUE(l.image) << l.error;
   MachineOptions o;
   o.checkAlignment = false;

@@ -9,7 +9,7 @@
 #include "host/mapping/MapScore.hpp"
 #include "host/mapping/MappingRun.hpp"
 #include "host/sim/NoiseProfile.hpp"
-#include "host/sim/WorldFile.hpp"
+#include "tests/mapping/WorldText.hpp"
 
 namespace nxtmap::mapping {
 namespace {
@@ -22,13 +22,7 @@ sim::Site room(double turnDeg, double x, double y) {
       "start: {x: " +
       std::to_string(x) + ", y: " + std::to_string(y) +
       ", yaw: 90}\ntransform: {rotate_deg: " + std::to_string(turnDeg) + "}\n";
-  const sim::WorldFileLoad load = sim::parseWorldFile(text, "room.yaml");
-  EXPECT_TRUE(load.world) << load.error;
-  sim::Site site;
-  site.name = "room";
-  site.scene = load.world->scene;
-  site.start = sim::StartPose{load.world->startCm, load.world->startHeadingDeg};
-  return site;
+  return test::siteFromWorldText(text);
 }
 
 RunConfig brickConfig(const sim::Site& site, const std::string& noise, uint64_t seed, double jitterDeg) {

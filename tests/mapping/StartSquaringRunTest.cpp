@@ -11,7 +11,7 @@
 #include "host/sim/NoiseProfile.hpp"
 #include "host/sim/SceneAxes.hpp"
 #include "host/sim/WheelModel.hpp"
-#include "host/sim/WorldFile.hpp"
+#include "tests/mapping/WorldText.hpp"
 
 namespace nxtmap::mapping {
 namespace {
@@ -24,13 +24,7 @@ sim::Site room(double turnDeg, double w = 3.0, double h = 2.4, double x = 0.2, d
                            std::to_string(-w / 2) + ", " + std::to_string(h / 2) +
                            "]]\nstart: {x: " + std::to_string(x) + ", y: " + std::to_string(y) +
                            ", yaw: 90}\ntransform: {rotate_deg: " + std::to_string(turnDeg) + "}\n";
-  const sim::WorldFileLoad load = sim::parseWorldFile(text, "room.yaml");
-  EXPECT_TRUE(load.world) << load.error;
-  sim::Site site;
-  site.name = "room";
-  site.scene = load.world->scene;
-  site.start = sim::StartPose{load.world->startCm, load.world->startHeadingDeg};
-  return site;
+  return test::siteFromWorldText(text);
 }
 
 // Degrees from `headingDeg` to the nearest of the scene's wall directions.
