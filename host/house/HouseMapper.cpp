@@ -6,15 +6,6 @@
 namespace nxtmap::house {
 namespace {
 
-ExplorerConfig explorerConfigFor(const sim::World& world, const HouseConfig& c, const sim::RobotDescription& robot) {
-  const int mountCm = robot.mountCm;
-  ExplorerConfig e;
-  e.turnNeedsRoom = robot.turnNeedsRoom();
-  e.geometry = mapping::sonarGeometryFor(world, c.minRangeM, c.rangeM, c.noise.sonar.coneHalfAngleDeg, mountCm);
-  e.geometry.blindCm = mapping::sonarBlindCm(c.noise.sonar);
-  return e;
-}
-
 sim::RobotPlacement placementFor(const sim::Site& site, const HouseConfig& c) {
   return sim::placeRobot(site, sim::PlacementRequest{c.robot, c.startPose, c.startCol, c.startRow, c.heading,
                                                      c.startJitterDeg, c.seed, 0.0});
@@ -63,7 +54,8 @@ HouseMapper::HouseMapper(const sim::Site& site, const HouseConfig& config)
 HouseMapper::HouseMapper(sim::RobotPlacement placed, const HouseConfig& config)
     : world_(std::move(placed.truth)),
       config_(placedConfig(placed, config)),
-      explorerConfig_(explorerConfigFor(world_, config_, placed.robot)),
+      explorerConfig_(mapping::explorerConfigFor(world_, placed.robot, config_.noise.sonar, config_.minRangeM,
+                                                 config_.rangeM, -1.0, -1, ExplorerConfig{}.searchSliceStates)),
       frame_(config_.startCol, config_.startRow, config_.heading),
       robot_(placed.scene, placed.robot, placed.grid.frame, placed.start.cm, placed.start.headingDeg, config_.noise,
              config_.seed, config_.sensorReachCm),

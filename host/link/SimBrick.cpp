@@ -10,19 +10,6 @@ using namespace protocol;
 
 namespace {
 
-ExplorerConfig explorerConfigFor(const sim::World& world, const mapping::RunConfig& c,
-                                 const sim::RobotDescription& robot) {
-  const int mountCm = robot.mountCm;
-  ExplorerConfig e;
-  e.turnNeedsRoom = robot.turnNeedsRoom();
-  e.geometry = mapping::sonarGeometryFor(
-      world, c.minRangeM, c.rangeM, c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.sonar.coneHalfAngleDeg,
-      mountCm);
-  e.geometry.blindCm = mapping::sonarBlindCm(c.noise.sonar);
-  e.searchSliceStates = c.searchSliceStates;
-  return e;
-}
-
 // The link as configured, telling the PC the explorer's geometry (HelloReply).
 BrickLinkConfig linkConfigFor(BrickLinkConfig link, const RangeGeometry& geometry) {
   link.geometry = rangeGeometryMsgOf(geometry);
@@ -75,7 +62,10 @@ SimBrick::SimBrick(sim::RobotPlacement placed, const SimBrickConfig& config)
       robot_(placed.scene, placed.robot, placed.grid.frame, placed.start.cm, placed.start.headingDeg, config_.run.noise,
              config_.run.seed, config_.run.sensorReachCm),
       buffer_(config_.run.grid),
-      stack_(buffer_.memory(), explorerConfigFor(world_, config_.run, placed.robot)),
+      stack_(buffer_.memory(),
+             mapping::explorerConfigFor(world_, placed.robot, config_.run.noise.sonar, config_.run.minRangeM,
+                                        config_.run.rangeM, config_.run.beamHalfAngleDeg, -1,
+                                        config_.run.searchSliceStates)),
       reach_(packedBytes(config_.run.grid.cells, config_.run.grid.cells, 1)),
       confinement_(reach_.data(), config_.run.grid.cells, config_.run.grid.cells, DoorwayLimits{4, 15, 3, 2},
                    stack_.config().geometry.hitCells()),

@@ -18,18 +18,6 @@ struct MappingRun::Setup {
 
 namespace {
 
-ExplorerConfig explorerConfigFor(const sim::World& truth, const RunConfig& c, const sim::RobotDescription& robot) {
-  const int mountCm = robot.mountCm;
-  ExplorerConfig e;
-  e.turnNeedsRoom = robot.turnNeedsRoom();
-  e.geometry =
-      sonarGeometryFor(truth, c.minRangeM, c.rangeM,
-                       c.beamHalfAngleDeg >= 0.0 ? c.beamHalfAngleDeg : c.noise.sonar.coneHalfAngleDeg, mountCm);
-  e.geometry.blindCm = c.blindCm >= 0 ? static_cast<int16_t>(c.blindCm) : sonarBlindCm(c.noise.sonar);
-  e.searchSliceStates = c.searchSliceStates;
-  return e;
-}
-
 // A free cell of the map beside an unknown one the grid cannot hold: open space cut off by the grid's edge.
 bool openAtGridEdge(const RoomGrid& grid) {
   const Bounds w = grid.window();
@@ -76,7 +64,9 @@ MappingRun::MappingRun(Setup setup, const RunConfig&)
       robot_(setup.placed.scene, setup.placed.robot, setup.placed.grid.frame, setup.placed.start.cm,
              setup.placed.start.headingDeg, config_.noise, config_.seed, config_.sensorReachCm),
       buffer_(config_.grid),
-      stack_(buffer_.memory(), explorerConfigFor(truth_, config_, setup.placed.robot)) {
+      stack_(buffer_.memory(),
+             explorerConfigFor(truth_, setup.placed.robot, config_.noise.sonar, config_.minRangeM, config_.rangeM,
+                               config_.beamHalfAngleDeg, config_.blindCm, config_.searchSliceStates)) {
   setDownFrameDeg_ = robot_.frame().headingDeg;
   startMovedCm_ = setup.placed.startMovedCm;
   PilotConfig pilot;

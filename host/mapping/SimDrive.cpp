@@ -29,6 +29,18 @@ int16_t sonarBlindCm(const sim::SonarNoise& sonar) {
   return static_cast<int16_t>(std::ceil(blind));
 }
 
+ExplorerConfig explorerConfigFor(const sim::World& world, const sim::RobotDescription& robot,
+                                 const sim::SonarNoise& sonar, double minRangeM, double rangeM, double beamHalfAngleDeg,
+                                 int blindCm, uint16_t searchSliceStates) {
+  ExplorerConfig e;
+  e.geometry = sonarGeometryFor(world, minRangeM, rangeM,
+                                beamHalfAngleDeg >= 0.0 ? beamHalfAngleDeg : sonar.coneHalfAngleDeg, robot.mountCm);
+  e.geometry.blindCm = blindCm >= 0 ? static_cast<int16_t>(blindCm) : sonarBlindCm(sonar);
+  e.turnNeedsRoom = robot.turnNeedsRoom();
+  e.searchSliceStates = searchSliceStates;
+  return e;
+}
+
 DriveEvent carryOutOnRobot(sim::SimRobot& robot, const DriveAction& a, const RangeGeometry& geometry,
                            bool othersFiring) {
   switch (a.kind) {

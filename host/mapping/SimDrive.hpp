@@ -4,6 +4,7 @@
 // Shared by single-room runs (MappingRun) and house runs.
 #pragma once
 
+#include "common/explore/ExplorerConfig.hpp"
 #include "common/motion/DriveAction.hpp"
 #include "common/motion/DriveEvent.hpp"
 #include "common/sensing/RangeGeometry.hpp"
@@ -23,6 +24,11 @@ RangeGeometry sonarGeometryFor(const sim::World& world, double minRangeM, double
 // The sensor's blind zone as the robot knows its sonar (RangeGeometry::blindCm), whole cm: the near field
 // where the modelled sensor returns no echo at all (0: none, as the published model).
 int16_t sonarBlindCm(const sim::SonarNoise& sonar);
+// The explorer's configuration for a simulated robot on `world`: its sonar geometry (beamHalfAngleDeg < 0:
+// the sonar's cone; blindCm < 0: the sonar's blind zone), its body's room to turn, and the search slices.
+ExplorerConfig explorerConfigFor(const sim::World& world, const sim::RobotDescription& robot,
+                                 const sim::SonarNoise& sonar, double minRangeM, double rangeM, double beamHalfAngleDeg,
+                                 int blindCm, uint16_t searchSliceStates);
 
 // othersFiring: every ping hears the other sensors pinging at the same moment (see RunConfig::sensorsTogether).
 DriveEvent carryOutOnRobot(sim::SimRobot& robot, const DriveAction& a, const RangeGeometry& geometry,
