@@ -23,7 +23,7 @@ Observability computeObservability(const World& world, int startCol, int startRo
 
   // Breadth-first flood over free cells, 4-connected.
   std::deque<std::pair<int, int>> queue;
-  if (!world.blocked(startCol, startRow)) {
+  if (world.inside(startCol, startRow)) {  // the robot stands there, blocked or not
     out.reachable[index(startCol, startRow)] = 1;
     queue.emplace_back(startCol, startRow);
   }
@@ -51,7 +51,7 @@ Observability computeObservability(const World& world, int startCol, int startRo
           const int xr = r + k * kDr[d];
           if (!world.inside(xc, xr)) break;
           if (world.blocked(xc, xr)) {
-            if (k <= hitCells) out.observable[index(xc, xr)] = 1;
+            if (k <= hitCells && !out.reachable[index(xc, xr)]) out.observable[index(xc, xr)] = 1;  // not the start
             break;
           }
           if (k <= freeCells) out.observable[index(xc, xr)] = 1;

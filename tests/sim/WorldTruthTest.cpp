@@ -56,8 +56,24 @@ TEST(WorldTruth, RangeLimitsSightFromALoneCell) {
   EXPECT_TRUE(at(shortSight.observable, corridor, 6, 0));
 }
 
-TEST(WorldTruth, BlockedStartReachesNothing) {
-  const Observability o = computeObservability(twoRooms(), 0, 0, 5, 5);
+TEST(WorldTruth, ABlockedStartCellIsStoodInAndSeenFrom) {
+  // A wall reaching a sliver into the start cell: the robot stands there all the same.
+  const World w = World::fromRows({"#####", "#...#", "##..#", "#####"});
+  const Observability o = computeObservability(w, 1, 2, 5, 5);
+  EXPECT_EQ(o.reachableCount, 6);  // the start and the five free cells around it
+  EXPECT_TRUE(at(o.reachable, w, 1, 2));
+  EXPECT_TRUE(at(o.reachable, w, 3, 2));
+  EXPECT_TRUE(at(o.observable, w, 1, 3));  // the wall below the start
+  EXPECT_TRUE(at(o.observable, w, 0, 2));  // the wall to its left
+  EXPECT_FALSE(at(o.observable, w, 0, 0));
+  EXPECT_EQ(o.observableFree, 5);
+  // The ring but its corners (3 above, 3 below, 2 left, 2 right); the start is stood in, not seen.
+  EXPECT_EQ(o.observableOccupied, 10);
+  EXPECT_FALSE(at(o.observable, w, 1, 2));
+}
+
+TEST(WorldTruth, AStartOutsideTheMapReachesNothing) {
+  const Observability o = computeObservability(twoRooms(), -1, 0, 5, 5);
   EXPECT_EQ(o.reachableCount, 0);
   EXPECT_EQ(o.observableFree + o.observableOccupied, 0);
   EXPECT_EQ(o.reachable.size(), 45u);
