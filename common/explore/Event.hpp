@@ -13,7 +13,7 @@ struct Event {
   Kind kind = Kind::Start;
   Sensor sensor = Sensor::Front;  // Range
   RangeReading reading;           // Range
-  int8_t amount = 0;              // Moved: cells (+ forward); Turned: eighths (+ clockwise)
+  int8_t amount = 0;              // Moved: cells (+ forward); Turned: eighths (+ clockwise); Blocked: 1 a turn
   Pose pose{};                    // Start: where the robot stands on the explorer's map
 
   static constexpr Event start() { return Event{}; }
@@ -46,6 +46,13 @@ struct Event {
   static Event blocked() {
     Event e;
     e.kind = Kind::Blocked;
+    return e;
+  }
+  // The turn towards the next move stalled (the body met something turning on the spot) and was turned
+  // back: the way is blocked there, but the cell ahead is only suspect (amount 1), not known occupied.
+  static Event turnBlocked() {
+    Event e = blocked();
+    e.amount = 1;
     return e;
   }
   static Event turned(int8_t eighths) {

@@ -52,7 +52,9 @@ void Explorer::apply(const Event& e) {
     }
     case Event::Kind::Blocked:
       ++counters_.blockedMoves;
-      if (!map_.markBlocked(advance(pose_.cell, pendingMove_))) end_ = ExplorerEnd::GridFull;
+      if (e.amount == 0 ? !map_.markBlocked(advance(pose_.cell, pendingMove_))
+                        : !map_.observeOccupied(advance(pose_.cell, pendingMove_)))
+        end_ = ExplorerEnd::GridFull;
       route_.clear();
       break;
     case Event::Kind::Turned:

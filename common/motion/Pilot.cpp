@@ -214,7 +214,7 @@ DriveAction Pilot::begin(const Action& a) {
   switch (a.kind) {
     case Action::Kind::Read:
       // The explorer marks a reading along the axis: take the known heading error out first.
-      if (config_.correct && abs32(tracker_.thetaMrad()) >= config_.minRotateMrad) {
+      if (config_.correct && !levelHeld() && abs32(tracker_.thetaMrad()) >= config_.minRotateMrad) {
         phase_ = Phase::Level;
         commandMrad_ = -tracker_.thetaMrad();
         correctionMrad_ += static_cast<uint32_t>(abs32(commandMrad_));
@@ -230,6 +230,9 @@ DriveAction Pilot::begin(const Action& a) {
       commandMrad_ =
           static_cast<int32_t>((turnedUrad_ - commandedUrad_ + (turnedUrad_ >= commandedUrad_ ? 500 : -500)) / 1000);
       commandedUrad_ += static_cast<int64_t>(commandMrad_) * 1000;
+#ifndef NXTMAP_NO_START_SQUARING
+      quarterMrad_ = commandMrad_;
+#endif
       // Take out the estimated heading error as well (not part of the quarter-turn bookkeeping).
       if (config_.correct) commandMrad_ -= tracker_.thetaMrad();
       return DriveAction::rotate(commandMrad_);
@@ -241,6 +244,23 @@ DriveAction Pilot::begin(const Action& a) {
   phase_ = Phase::Done;
   return DriveAction::done();
 }
+
+#ifndef NXTMAP_NO_START_SQUARING  // the RAM-run image has no room for the recovery: it carries on
+DriveAction Pilot::turnStalled(const DriveEvent& e) {
+  // Undo the quarter's bookkeeping and turn back to the heading the explorer holds.
+  turnedUrad_ -= static_cast<int64_t>(pending_.amount / 2) * 1570796;
+  commandedUrad_ -= static_cast<int64_t>(quarterMrad_) * 1000;
+  stalledMrad_ = e.achieved;
+  phase_ = Phase::TurnBack;
+  return DriveAction::rotate(-e.achieved);
+}
+
+DriveAction Pilot::turnedBack(const DriveEvent& e) {
+  // Net of the two rotations (small unless the way back stalled too) on the heading the explorer holds.
+  tracker_.rotated(stalledMrad_ + (e.measured ? e.achieved : -stalledMrad_), 0);
+  return begin(explorer_.step(Event::turnBlocked()));
+}
+#endif
 
 DriveAction Pilot::beginMove() {
   if (!config_.correct) {
@@ -318,6 +338,9 @@ DriveAction Pilot::stepCorrected(const DriveEvent& e) {
       if (phase_ == Phase::Square) return square(e);
       if (phase_ == Phase::Level) {
         tracker_.rotated(e.measured ? e.achieved : commandMrad_, 0);
+#ifndef NXTMAP_NO_START_SQUARING
+        if (e.measured && abs32(commandMrad_ - e.achieved) >= config_.minRotateMrad) levelHeld_ = true;
+#endif
         phase_ = Phase::ExplorerRead;
         return DriveAction::read(pending_.sensor);
       }
@@ -326,10 +349,17 @@ DriveAction Pilot::stepCorrected(const DriveEvent& e) {
         return driveToCentre();
       }
       if (phase_ == Phase::Turn) {
+#ifndef NXTMAP_NO_START_SQUARING
+        if (e.measured && abs32(commandMrad_ - e.achieved) > config_.turnStallMrad) return turnStalled(e);
+        levelHeld_ = false;
+#endif
         tracker_.rotated(e.measured ? e.achieved : commandMrad_, pending_.amount / 2);
         if (pending_.amount != 0) startRun();  // the heading changed: the side walls are others
         return begin(explorer_.step(Event::turned(pending_.amount)));
       }
+#ifndef NXTMAP_NO_START_SQUARING
+      if (phase_ == Phase::TurnBack) return turnedBack(e);
+#endif
       break;
     case DriveEvent::Kind::Thought:
       if (phase_ == Phase::Think) return begin(explorer_.step(Event::thought()));
@@ -345,6 +375,9 @@ DriveAction Pilot::stepCorrected(const DriveEvent& e) {
         tracker_.drove(mm, heading);
         tracker_.rebase(heading, pending_.amount, cellMm_);
         readHere_ = 0;
+#ifndef NXTMAP_NO_START_SQUARING
+        levelHeld_ = false;
+#endif
       }
       return begin(explorer_.step(Event::moved(pending_.amount)));
   }

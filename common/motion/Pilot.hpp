@@ -54,6 +54,11 @@ struct PilotConfig {
   // The turns' error known from before (actual / commanded - 1, ppm): every rotation is commanded
   // divided by (1 + e) and what the encoders report multiplied by it. A calibration adds what it measures.
   int32_t turnErrorPpm = 0;
+  // A quarter turn whose encoders count this much (mrad) short of what was told has stalled (the body met
+  // something): the robot turns back by what it turned and the explorer hears that its way is blocked; a
+  // levelling rotation that stalls is not tried again until the robot has moved. (Not in the RAM-run
+  // image, which has no room for it: there a stalled turn is taken as done, as the encoders counted it.)
+  int32_t turnStallMrad = 100;
 };
 
 // Pilot: between the explorer (cells, quarter turns) and the wheels (mm, mrad). It carries out
@@ -104,13 +109,33 @@ class Pilot {
   uint32_t poseReadings() const { return poseReads_; }
 
  private:
-  enum class Phase : uint8_t { Idle, Square, Snap, Level, ExplorerRead, PoseRead, Turn, Steer, Drive, Think, Done };
+  enum class Phase : uint8_t {
+    Idle,
+    Square,
+    Snap,
+    Level,
+    ExplorerRead,
+    PoseRead,
+    Turn,
+    TurnBack,
+    Steer,
+    Drive,
+    Think,
+    Done
+  };
 
   DriveAction stepCorrected(const DriveEvent& e);  // step() in the robot's true angles
   DriveAction startExplorer(int64_t headingVarianceMrad2);
   DriveAction square(const DriveEvent& e);  // the start's sweep (Phase::Square)
   DriveAction snap(const DriveEvent& e);    // once square, the cell's lattice laid on the nearest walls
   DriveAction begin(const Action& a);
+#ifndef NXTMAP_NO_START_SQUARING
+  DriveAction turnStalled(const DriveEvent& e);  // Phase::Turn's rotation stalled: turn back
+  DriveAction turnedBack(const DriveEvent& e);   // Phase::TurnBack's rotation is over
+  bool levelHeld() const { return levelHeld_; }
+#else
+  bool levelHeld() const { return false; }
+#endif
   DriveAction beginMove();
   DriveAction driveToCentre();
   // The first cell along d that is not free, within the pose range (k cells out): true when it is occupied.
@@ -165,6 +190,12 @@ class Pilot {
   uint32_t poseReads_ = 0, poseSamples_ = 0, correctionMrad_ = 0;
   int64_t turnedUrad_ = 0;     // quarter turns asked by the explorer, microradians
   int64_t commandedUrad_ = 0;  // of them, commanded to the wheels (whole mrad)
+#ifndef NXTMAP_NO_START_SQUARING
+  int32_t quarterMrad_ = 0;  // the quarter-turn part of the turn in progress (commandMrad_ less the levelling)
+  int32_t stalledMrad_ = 0;  // Phase::TurnBack: how far the stalled turn got (mrad, encoders)
+  // A levelling rotation stalled (the body touches something): no more levelling until the robot moves.
+  bool levelHeld_ = false;
+#endif
 };
 
 }  // namespace nxtmap

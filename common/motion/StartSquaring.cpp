@@ -25,6 +25,7 @@ DriveAction StartSquaring::begin() {
   result_ = WallDirectionEstimate{};
   headingMrad_ = targetMrad_ = 0;
   readings_ = samples_ = turnedMrad_ = 0;
+  stalled_ = false;
   return turn(Phase::ToStart, -sweepMrad_);
 }
 
@@ -42,7 +43,7 @@ DriveAction StartSquaring::readNext() {
   }
   // Every sensor read at this heading: the next one, or the end of the sweep (a last step would pass
   // +sweep by more than half a step).
-  if (headingMrad_ + stepMrad_ <= sweepMrad_ + stepMrad_ / 2 && walls_.steps() < WallDirection::kMaxSteps)
+  if (!stalled_ && headingMrad_ + stepMrad_ <= sweepMrad_ + stepMrad_ / 2 && walls_.steps() < WallDirection::kMaxSteps)
     return turn(Phase::Step, stepMrad_);
   result_ = walls_.estimate();
   targetMrad_ = result_.found ? result_.mrad : 0;
@@ -55,10 +56,18 @@ DriveAction StartSquaring::step(const DriveEvent& e) {
     case Phase::Step:
     case Phase::ToWalls:
       if (e.kind != DriveEvent::Kind::Rotated) break;
-      headingMrad_ += e.measured ? e.achieved : commandMrad_;
-      if (phase_ == Phase::ToWalls) {
-        phase_ = Phase::Done;
-        return DriveAction::done();
+      {
+        const int32_t got = e.measured ? e.achieved : commandMrad_;
+        headingMrad_ += got;
+        if (phase_ == Phase::ToWalls) {
+          phase_ = Phase::Done;
+          return DriveAction::done();
+        }
+        if (2 * abs32(got) < abs32(commandMrad_)) {  // stalled: estimate from the headings read so far
+          stalled_ = true;
+          sensor_ = kSensorCount;
+          return readNext();
+        }
       }
       walls_.addHeading(headingMrad_);
       sensor_ = 0;

@@ -45,6 +45,7 @@ class StartSquaring {
   int32_t commandMrad_ = 0;  // the rotation in progress
   int32_t targetMrad_ = 0;   // the heading to end on
   uint8_t sensor_ = 0;       // the next sensor to read at this heading
+  bool stalled_ = false;     // a rotation of the sweep stalled (the body met something): the sweep ends there
   uint32_t readings_ = 0, samples_ = 0, turnedMrad_ = 0;
 };
 

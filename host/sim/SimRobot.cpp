@@ -126,6 +126,7 @@ void SimRobot::turn(int eighths) { spin(wheels_.turnEighths(eighths, rng_)); }
 bool SimRobot::spin(const WheelStep& step) {
   const double deg = step.headingChangeDeg;
   clockMs_ += std::fabs(deg) / kSpinDegPerS * 1000.0;
+  lastSpinShare_ = 1.0;
   if (robot_.footprint(x_, y_, heading_).empty()) {  // a point turns freely
     // (the wheels' part first, then the noise: the published runs' arithmetic, bit for bit)
     setHeading(heading_ + step.headingWheelsDeg + step.headingNoiseDeg);
@@ -136,6 +137,7 @@ bool SimRobot::spin(const WheelStep& step) {
   for (int i = 1; i <= checks; ++i) {
     const double h = heading_ + deg * i / checks;
     if (!fits(x_, y_, h)) {  // the body meets an obstacle: the wheels stall part way
+      lastSpinShare_ = static_cast<double>(i - 1) / checks;
       setHeading(reached);
       return false;
     }

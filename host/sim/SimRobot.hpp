@@ -54,6 +54,9 @@ class SimRobot {
   // obstacle on the way the wheels stall there: the robot stays turned as far as it got and returns false.
   // (A 16 x 18 cm body sweeps 12 cm from its centre: it cannot spin in a 20 cm cell beside a wall.)
   bool rotate(double deg);
+  // How much of the last rotate()/turn() the wheels carried out before a stall, 0..1 (1: all of it): the
+  // share of its counts the encoders measured.
+  double lastSpinShare() const { return lastSpinShare_; }
   // Drives straight by cm (+ forward, - backward) through the wheel model. If the body would meet an
   // obstacle on the way, the wheels stall and the robot stays where it started: returns false.
   bool drive(double cm);
@@ -90,7 +93,8 @@ class SimRobot {
   double x_;
   double y_;
   double heading_;
-  double clockMs_ = 0.0;  // simulated time: pings and motion advance it
+  double clockMs_ = 0.0;        // simulated time: pings and motion advance it
+  double lastSpinShare_ = 1.0;  // see lastSpinShare()
   uint64_t rawPings_ = 0;
 };
 

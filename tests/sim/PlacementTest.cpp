@@ -98,6 +98,12 @@ TEST(SimRobotBody, TheBodyStallsWhereAPointWouldPass) {
   EXPECT_TRUE(body.drive(40.0));    // along the corridor: fits
   EXPECT_FALSE(body.rotate(90.0));  // across it: the corners meet the walls
   EXPECT_LT(std::fabs(body.headingDeg() - 90.0), 45.0);
+  // The encoders measure the share carried out: ideal wheels turn the body by exactly that much.
+  EXPECT_GT(body.lastSpinShare(), 0.0);
+  EXPECT_LT(body.lastSpinShare(), 0.5);
+  EXPECT_NEAR(body.headingDeg(), 90.0 + 90.0 * body.lastSpinShare(), 1e-9);
+  EXPECT_TRUE(body.rotate(-90.0 * body.lastSpinShare()));  // back the way it came
+  EXPECT_DOUBLE_EQ(body.lastSpinShare(), 1.0);
   const RobotPlacement point = placeRobot(site, pointRobotFor(20), site.rasterStart(4, 1, 90.0), 0.0, 1);
   SimRobot dot(point.scene, point.robot, point.grid.frame, point.start.cm, point.start.headingDeg, ideal, 1);
   EXPECT_TRUE(dot.rotate(90.0));

@@ -1,0 +1,157 @@
+// The pilot when the body meets something on a rotation (the wheels stall and the encoders count only what
+// was turned, as the brick's drive layer reports it): a stalled quarter turn is turned back and heard by the
+// explorer as its way blocked; a stalled levelling is not tried again until the robot has moved; a stalled
+// step of the start's sweep ends the sweep.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <memory>
+
+#include "common/explore/ExplorerStorage.hpp"
+#include "common/explore/FrontierExplorer.hpp"
+#include "common/motion/Pilot.hpp"
+
+namespace nxtmap {
+namespace {
+
+struct Rig {
+  using Storage = ExplorerStorage<64, 64, 1024>;
+  explicit Rig(const PilotConfig& c = PilotConfig{}) : pilot(explorer, c) {}
+  std::unique_ptr<Storage> storage = std::make_unique<Storage>();
+  MapLayers map{storage->map.view(), Storage::kWidth(), Storage::kHeight()};
+  TravelPlanner planner{storage->travel.view(), Storage::kWidth(), Storage::kHeight()};
+  ExplorerConfig config{};
+  FrontierExplorer explorer{map, planner, config};
+  Pilot pilot;
+};
+
+bool isQuarter(const DriveAction& a) { return a.kind == DriveAction::Kind::Rotate && std::abs(a.value) > 700; }
+
+// Open space (nothing in range), exact wheels, until the pilot asks for a quarter turn or `limit` steps.
+DriveAction untilQuarterTurn(Rig& rig, DriveAction a, int limit = 2000) {
+  for (int i = 0; i < limit && !rig.pilot.finished() && !isQuarter(a); ++i) {
+    DriveEvent e = DriveEvent::thought();
+    if (a.kind == DriveAction::Kind::Read) {
+      RangeReading far;
+      far.status = RangeStatus::TooFar;
+      far.samples = 1;
+      e = DriveEvent::range(a.sensor, far);
+    } else if (a.kind == DriveAction::Kind::Rotate) {
+      e = DriveEvent::rotatedBy(a.value);
+    } else if (a.kind == DriveAction::Kind::Drive) {
+      e = DriveEvent::drivenBy(a.value);
+    }
+    a = rig.pilot.step(e);
+  }
+  return a;
+}
+
+TEST(PilotStall, AStalledQuarterTurnIsTurnedBackAndTheExplorersWayIsBlocked) {
+  // Stalled after 0, a third and nine tenths of the turn: each is turned back by what it turned.
+  for (const int tenths : {0, 3, 9}) {
+    Rig rig;
+    const DriveAction turn = untilQuarterTurn(rig, rig.pilot.step(DriveEvent::start()));
+    ASSERT_TRUE(isQuarter(turn)) << tenths;
+    const Pose before = rig.explorer.pose();
+    const Dir wanted = rotate(before.heading, turn.value > 0 ? 1 : -1);
+    const int8_t evidence = rig.map.evidence(advance(before.cell, wanted));
+    const int32_t got = turn.value * tenths / 10;
+    const DriveAction back = rig.pilot.step(DriveEvent::rotatedBy(got));
+    ASSERT_EQ(back.kind, DriveAction::Kind::Rotate) << tenths;
+    EXPECT_EQ(back.value, -got) << tenths;
+    rig.pilot.step(DriveEvent::rotatedBy(-got));
+    EXPECT_EQ(rig.explorer.counters().blockedMoves, 1u) << tenths;
+    EXPECT_EQ(rig.explorer.pose().heading, before.heading) << tenths;  // it never faced the new way
+    // The cell it was to move to is suspect: one observation of an obstacle, not a certainty.
+    EXPECT_EQ(rig.map.evidence(advance(before.cell, wanted)), evidence + 1) << tenths;
+    EXPECT_EQ(rig.pilot.tracker().thetaMrad(), 0) << tenths;
+  }
+}
+
+TEST(PilotStall, TurnsThatAlwaysStallAreGivenUp) {
+  // Every quarter turn stalls at once: the robot can only drive along its first heading. Each stall makes
+  // the cell it turned towards more suspect, until the explorer has nowhere left to turn to and ends.
+  Rig rig;
+  DriveAction a = rig.pilot.step(DriveEvent::start());
+  int stalls = 0;
+  for (int i = 0; i < 20000 && !rig.pilot.finished(); ++i) {
+    a = untilQuarterTurn(rig, a, 20000);
+    if (rig.pilot.finished()) break;
+    ++stalls;
+    a = rig.pilot.step(DriveEvent::rotatedBy(0));
+    ASSERT_EQ(a.kind, DriveAction::Kind::Rotate);
+    a = rig.pilot.step(DriveEvent::rotatedBy(0));
+  }
+  EXPECT_TRUE(rig.pilot.finished());
+  EXPECT_GE(stalls, 2);
+  EXPECT_EQ(rig.explorer.counters().blockedMoves, static_cast<uint32_t>(stalls));
+}
+
+TEST(PilotStall, AfterAStalledTurnTheNextQuarterTurnIsAWholeQuarter) {
+  Rig rig;
+  const DriveAction turn = untilQuarterTurn(rig, rig.pilot.step(DriveEvent::start()));
+  ASSERT_TRUE(isQuarter(turn));
+  rig.pilot.step(DriveEvent::rotatedBy(turn.value / 2));
+  const DriveAction next = untilQuarterTurn(rig, rig.pilot.step(DriveEvent::rotatedBy(-turn.value / 2)));
+  ASSERT_TRUE(isQuarter(next));
+  EXPECT_NEAR(std::abs(next.value), 1571, 1);  // the stalled quarter is not owed any more
+}
+
+TEST(PilotStall, AStalledLevellingIsNotTriedAgainUntilTheRobotHasMoved) {
+  // Every quarter turn ends 40 mrad past its target and every small rotation (levelling, steering) stalls
+  // at once: the heading error stays. Between two drives the pilot levels at most once.
+  Rig rig;
+  DriveAction a = rig.pilot.step(DriveEvent::start());
+  int levels = 0, levelsSinceDrive = 0, unlevelledReads = 0, drives = 0;
+  bool lastWasSmallRotation = false;
+  for (int i = 0; i < 3000 && !rig.pilot.finished(); ++i) {
+    DriveEvent e = DriveEvent::thought();
+    if (a.kind == DriveAction::Kind::Read) {
+      if (lastWasSmallRotation) {
+        ++levels;
+        EXPECT_LE(++levelsSinceDrive, 1) << "step " << i;
+      }
+      unlevelledReads += rig.pilot.tracker().thetaMrad() != 0 ? 1 : 0;
+      RangeReading far;
+      far.status = RangeStatus::TooFar;
+      far.samples = 1;
+      e = DriveEvent::range(a.sensor, far);
+    } else if (a.kind == DriveAction::Kind::Rotate) {
+      e = DriveEvent::rotatedBy(isQuarter(a) ? a.value + 40 : 0);
+    } else if (a.kind == DriveAction::Kind::Drive) {
+      levelsSinceDrive = 0;
+      ++drives;
+      e = DriveEvent::drivenBy(a.value);
+    }
+    lastWasSmallRotation = a.kind == DriveAction::Kind::Rotate && !isQuarter(a);
+    a = rig.pilot.step(e);
+  }
+  EXPECT_GE(levels, 1);  // it did try
+  EXPECT_GE(unlevelledReads, 3);
+  EXPECT_GE(drives, 5);
+}
+
+TEST(PilotStall, AStalledStepOfTheStartsSweepEndsTheSweep) {
+  PilotConfig c;
+  c.squareSweepMrad = 1571;
+  Rig rig(c);
+  DriveAction a = rig.pilot.step(DriveEvent::start());
+  ASSERT_EQ(a.kind, DriveAction::Kind::Rotate);
+  a = rig.pilot.step(DriveEvent::rotatedBy(a.value));  // to the sweep's start: done
+  for (int s = 0; s < kSensorCount; ++s) {
+    ASSERT_EQ(a.kind, DriveAction::Kind::Read);
+    a = rig.pilot.step(DriveEvent::range(a.sensor, RangeReading{}));
+  }
+  ASSERT_EQ(a.kind, DriveAction::Kind::Rotate);  // the first step of the sweep
+  a = rig.pilot.step(DriveEvent::rotatedBy(0));  // stalls at once
+  // No wall seen: back to where it was set down (the sweep's zero), then the explorer starts.
+  ASSERT_EQ(a.kind, DriveAction::Kind::Rotate);
+  EXPECT_EQ(a.value, 1571);
+  a = rig.pilot.step(DriveEvent::rotatedBy(a.value));
+  EXPECT_TRUE(rig.pilot.explorerStarted());
+  EXPECT_FALSE(rig.pilot.squaring().result().found);
+  EXPECT_NE(a.kind, DriveAction::Kind::Done);
+}
+
+}  // namespace
+}  // namespace nxtmap
