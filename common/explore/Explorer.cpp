@@ -8,12 +8,31 @@ namespace nxtmap {
 Explorer::Explorer(MapLayers& map, TravelPlanner& planner, const ExplorerConfig& config)
     : map_(map), planner_(planner), config_(config) {
   planner_.setTurnNeedsRoom(config.turnNeedsRoom);
+#ifndef NXTMAP_NO_START_SQUARING
+  planner_.setNoTurn(&stalledTurns_);
+#endif
 }
 
 bool Explorer::canHead(Dir d) const {
-  return isVertical(d) == isVertical(pose_.heading) || !config_.turnNeedsRoom ||
+#ifndef NXTMAP_NO_START_SQUARING
+  if (isVertical(d) != isVertical(pose_.heading) && stalledTurns_.contains(pose_.cell)) return false;
+#endif
+  return isVertical(d) == isVertical(pose_.heading) || !config_.turnNeedsRoom || roomWaived() ||
          TravelPlanner::roomToTurn(map_.grid(), pose_.cell);
 }
+
+#ifndef NXTMAP_NO_START_SQUARING
+bool Explorer::StalledTurns::contains(Cell c) const {
+  for (uint8_t i = 0; i < count; ++i)
+    if (cells[i] == c) return true;
+  return false;
+}
+
+void Explorer::waiveRoom(bool on) {
+  roomWaived_ = on;
+  planner_.setTurnNeedsRoom(config_.turnNeedsRoom && !on);
+}
+#endif
 
 Action Explorer::finish(ExplorerEnd why) {
   end_ = why;
@@ -47,11 +66,23 @@ void Explorer::apply(const Event& e) {
         if (!map_.markVisited(pose_.cell)) end_ = ExplorerEnd::GridFull;
         if (!route_.empty() && route_.front() == d) route_.pop();
       }
+#ifndef NXTMAP_NO_START_SQUARING
+      if (roomWaived_ && route_.empty()) waiveRoom(false);  // reached: turn only with room again
+#endif
       counters_.cellsMoved += static_cast<uint32_t>(n);
       break;
     }
-    case Event::Kind::Blocked:
-      ++counters_.blockedMoves;
+    case Event::Kind::Blocked: ++counters_.blockedMoves;
+#ifndef NXTMAP_NO_START_SQUARING
+      if (roomWaived_) waiveRoom(false);
+#endif
+#ifndef NXTMAP_NO_START_SQUARING
+      if (e.amount != 0 && !stalledTurns_.full()) {  // a turn stalled here: never again
+        if (!stalledTurns_.contains(pose_.cell)) stalledTurns_.cells[stalledTurns_.count++] = pose_.cell;
+        route_.clear();
+        break;
+      }
+#endif
       if (e.amount == 0 ? !map_.markBlocked(advance(pose_.cell, pendingMove_))
                         : !map_.observeOccupied(advance(pose_.cell, pendingMove_)))
         end_ = ExplorerEnd::GridFull;
@@ -68,8 +99,16 @@ void Explorer::apply(const Event& e) {
 }
 
 Action Explorer::settle(const Action& a) {
-  if (a.kind == Action::Kind::Done) return finish(ExplorerEnd::Complete);
-  return a;
+  if (a.kind != Action::Kind::Done) return a;
+    // Nothing left within reach turning only where the body has room: try once more turning anywhere (a turn
+    // that meets something is turned back by the pilot and heard as Event::turnBlocked).
+#ifndef NXTMAP_NO_START_SQUARING  // the RAM-run image has no room for it (nor the pilot's stall recovery)
+  if (config_.turnNeedsRoom && !roomWaived_ && !stalledTurns_.full()) {
+    waiveRoom(true);
+    return settle(decide());
+  }
+#endif
+  return finish(ExplorerEnd::Complete);
 }
 
 Action Explorer::startSearch(uint8_t purpose) {

@@ -93,6 +93,25 @@ class Explorer {
   Cell startCell_{};  // where the run started (the blind zone is trusted there)
   bool searching_ = false;
   uint8_t searchPurpose_ = 0;
+#ifndef NXTMAP_NO_START_SQUARING
+  // ExplorerConfig::turnNeedsRoom waived: no goal was within reach with it; until the route is driven or
+  // blocked, turns are taken anywhere but where one stalled before. (Not in the RAM-run image: no room.)
+  bool roomWaived_ = false;
+  void waiveRoom(bool on);
+  bool roomWaived() const { return roomWaived_; }
+  // Cells where a turn stalled (Event::turnBlocked): no turn is planned there again. When full, a stalled
+  // turn makes the cell it turned towards suspect instead (one observation of an obstacle).
+  struct StalledTurns final : CellSet {
+    static constexpr int kCapacity = 8;
+    Cell cells[kCapacity] = {};
+    uint8_t count = 0;
+    bool contains(Cell c) const override;
+    bool full() const { return count == kCapacity; }
+  };
+  StalledTurns stalledTurns_;
+#else
+  bool roomWaived() const { return false; }
+#endif
 };
 
 }  // namespace nxtmap

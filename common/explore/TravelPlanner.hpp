@@ -3,6 +3,7 @@
 
 #include "common/explore/Pose.hpp"
 #include "common/explore/Route.hpp"
+#include "common/grid/CellSet.hpp"
 #include "common/grid/PackedCells.hpp"
 #include "common/grid/RoomGrid.hpp"
 
@@ -40,6 +41,15 @@ class TravelPlanner {
 
   // Turns only where the body has room (ExplorerConfig::turnNeedsRoom); off by default.
   void setTurnNeedsRoom(bool on) { turnNeedsRoom_ = on; }
+#ifndef NXTMAP_NO_START_SQUARING  // the RAM-run image has no room for it
+  // Cells where no turn is taken at all (where a turn stalled before); non-owning, nullptr: none.
+  void setNoTurn(const CellSet* cells) { noTurn_ = cells; }
+  bool turnAllowed(const RoomGrid& grid, Cell c) const {
+    return (!turnNeedsRoom_ || roomToTurn(grid, c)) && (noTurn_ == nullptr || !noTurn_->contains(c));
+  }
+#else
+  bool turnAllowed(const RoomGrid& grid, Cell c) const { return !turnNeedsRoom_ || roomToTurn(grid, c); }
+#endif
   // Whether a body that sweeps into the neighbouring cells can turn at c: its four neighbours are known free.
   static bool roomToTurn(const RoomGrid& grid, Cell c);
 
@@ -64,6 +74,9 @@ class TravelPlanner {
   uint16_t dist_ = 0;      // cost of the current layer
   bool overflow_ = false;
   bool turnNeedsRoom_ = false;
+#ifndef NXTMAP_NO_START_SQUARING
+  const CellSet* noTurn_ = nullptr;
+#endif
   int16_t width_, height_;
 };
 
@@ -97,7 +110,7 @@ TravelPlanner::Status TravelPlanner::proceed(const RoomGrid& grid, Visit&& visit
     }
     const uint8_t axis = id & 1u;
     const uint8_t next = static_cast<uint8_t>((dist_ + 1) % 3);
-    if (!turnNeedsRoom_ || roomToTurn(grid, c)) tryPush(static_cast<uint16_t>(id ^ 1u), next);  // the other axis
+    if (turnAllowed(grid, c)) tryPush(static_cast<uint16_t>(id ^ 1u), next);  // the other axis
     const Dir a = axis == 0 ? Dir::North : Dir::East;
     const Cell n1 = advance(c, a), n2 = advance(c, opposite(a));
     if (grid.isFree(n1)) tryPush(stateId(n1, axis), next);
