@@ -70,12 +70,42 @@ bool Pilot::firstWall(Dir d, Cell& wall, int16_t& k) const {
   return false;
 }
 
-bool Pilot::knownWall(Dir d, int32_t& faceMm, Cell& c) const {
+bool Pilot::knownWall(Dir d, int32_t& faceMm, Cell& c, int32_t* faceVarianceMm2) const {
   int16_t k = 0;
   if (!firstWall(d, c, k) || explorer_.map().evidence(c) < config_.minWallEvidence) return false;
   if (virtual_ != nullptr && virtual_->contains(c)) return false;
   faceMm = (2 * k - 1) * cellMm_ / 2 - static_cast<int32_t>(explorer_.config().geometry.mountCm) * 10;
+#ifndef NXTMAP_NO_START_SQUARING
+  const RangeGeometry& g = explorer_.config().geometry;
+  if (g.facesAnywhere()) {  // faces anywhere: only a face learnt is a landmark
+    int32_t pastEdgeMm = 0, var = 0;
+    if (!faces_.face(c, d, pastEdgeMm, var)) return false;
+    if (faceVarianceMm2 != nullptr) *faceVarianceMm2 = var;
+    faceMm = (2 * k - 1) * cellMm_ / 2 + pastEdgeMm - static_cast<int32_t>(g.mountCm) * 10;
+  }
+#else
+  (void)faceVarianceMm2;  // faces are taken where RangeGeometry::faceMm puts them, exactly
+#endif
   return true;
+}
+
+void Pilot::learnFace(Dir d, const RangeReading& r) {
+#ifdef NXTMAP_NO_START_SQUARING
+  (void)d;
+  (void)r;
+#else
+  const RangeGeometry& g = explorer_.config().geometry;
+  const int64_t sure = static_cast<int64_t>(config_.learnFaceBelowMm) * config_.learnFaceBelowMm;
+  const int64_t var = tracker_.varianceAlong(d) + tracker_.readingVariance();
+  if (!g.facesAnywhere() || r.status != RangeStatus::Good || var > sure) return;
+  const int32_t fromCentre = (r.cm + g.mountCm) * 10 + tracker_.along(d);
+  const int32_t k = (2 * (fromCentre - g.faceMarginCm * 10) + cellMm_) / (2 * cellMm_);
+  Cell wall{};
+  int16_t first = 0;
+  if (k < 1 || !firstWall(d, wall, first) || first != k) return;  // not the map's first wall along d
+  if (virtual_ != nullptr && virtual_->contains(wall)) return;
+  (void)faces_.learn(wall, d, fromCentre - (2 * k - 1) * cellMm_ / 2, static_cast<int32_t>(var));
+#endif
 }
 
 bool Pilot::straightFace(Cell c, Dir d) const {
@@ -90,7 +120,7 @@ bool Pilot::straightFace(Cell c, Dir d) const {
 int16_t Pilot::wallLine(Dir d, int32_t rangeMm) const {
   // The echo's cell along d: its face lies (k - 1/2) cells from the believed cell's centre.
   const RangeGeometry& g = explorer_.config().geometry;
-  const int32_t fromCentre = rangeMm + static_cast<int32_t>(g.mountCm) * 10 + tracker_.along(d);
+  const int32_t fromCentre = rangeMm + (g.mountCm - (g.facesAnywhere() ? g.faceMarginCm : 0)) * 10 + tracker_.along(d);
   const int32_t k = (2 * fromCentre + cellMm_) / (2 * cellMm_);
   const Cell at = explorer_.pose().cell;
   const int32_t base = isVertical(d) ? at.y : at.x;
@@ -162,8 +192,17 @@ void Pilot::observe(Sensor s, const RangeReading& r) {
   if (isVertical(d) != isVertical(explorer_.pose().heading)) observeSide(d, static_cast<int32_t>(r.cm) * 10);
   int32_t faceMm = 0;
   Cell wall{};
+  int32_t faceVar = 0;
+#ifndef NXTMAP_NO_START_SQUARING
+  // The face and the robot's offset learn from each other: whichever is known less well takes the reading.
+  if (!knownWall(d, faceMm, wall, &faceVar) || faceVar > tracker_.varianceAlong(d)) {
+    learnFace(d, r);
+    return;
+  }
+#else
   if (!knownWall(d, faceMm, wall)) return;
-  (void)tracker_.measure(d, faceMm - static_cast<int32_t>(r.cm) * 10, 0, straightFace(wall, d));
+#endif
+  (void)tracker_.measure(d, faceMm - static_cast<int32_t>(r.cm) * 10, faceVar, straightFace(wall, d));
 }
 
 bool Pilot::poseReadWanted(Sensor& s) const {

@@ -6,6 +6,7 @@
 #include "common/grid/CellSet.hpp"
 #include "common/motion/DriveAction.hpp"
 #include "common/motion/DriveEvent.hpp"
+#include "common/motion/FaceLines.hpp"
 #include "common/motion/PoseTracker.hpp"
 #include "common/motion/StartSquaring.hpp"
 #include "common/motion/TurnCalibration.hpp"
@@ -44,9 +45,10 @@ struct PilotConfig {
   int16_t squareStepMrad = 87;  // between the sweep's headings
   // How well the squared heading is known (1 sigma, mrad): the estimate's spread plus the final turn's.
   int16_t squaredHeadingMrad = 20;
-  // Once square, the nearest wall no farther than this (cm) across and along lays the cells' edges on its
-  // face: the robot starts off its cell's centre by what that takes (walls in the honest world are not on
-  // a cell edge where the robot was set down; the pose readings take their faces to be).
+  // After the sweep (square to the walls, or as set down when it saw no straight wall), the nearest wall no
+  // farther than this (cm) across and along lays the cells' edges where its face should lie
+  // (RangeGeometry::faceMm): the robot starts off its cell's centre by what that takes (walls in the honest
+  // world are not on a cell edge where the robot was set down).
   int16_t snapRangeCm = 100;
   // With the sweep on: first measure how far the turns are off (TurnCalibration, this many whole turns
   // between two sweeps; 0: no calibration) and correct every turn by it for the rest of the run.
@@ -59,6 +61,11 @@ struct PilotConfig {
   // levelling rotation that stalls is not tried again until the robot has moved. (Not in the RAM-run
   // image, which has no room for it: there a stalled turn is taken as done, as the encoders counted it.)
   int32_t turnStallMrad = 100;
+  // Faces anywhere (RangeGeometry::faceMarginCm > 0): a wall's face is learnt (FaceLines) from readings taken
+  // while the offset along the beam, with the reading's own error, is known to this (1 sigma, mm), as well as
+  // it is then known; only learnt faces are read for the pose, and a face known less well than the robot's
+  // offset learns from the reading instead of correcting the offset.
+  int32_t learnFaceBelowMm = 40;
 };
 
 // Pilot: between the explorer (cells, quarter turns) and the wheels (mm, mrad). It carries out
@@ -141,7 +148,10 @@ class Pilot {
   // The first cell along d that is not free, within the pose range (k cells out): true when it is occupied.
   bool firstWall(Dir d, Cell& wall, int16_t& k) const;
   // The first wall along d is a landmark: its face (mm from the believed centre) and its cell.
-  bool knownWall(Dir d, int32_t& faceMm, Cell& wall) const;
+  // With faces anywhere only a learnt face is one, and *faceVarianceMm2 (when given) says how well it is known.
+  bool knownWall(Dir d, int32_t& faceMm, Cell& wall, int32_t* faceVarianceMm2 = nullptr) const;
+  // A good reading along d of the map's first wall there: learn its face, as well as the pose is known.
+  void learnFace(Dir d, const RangeReading& r);
   // The wall cell, seen along d, is part of a straight face across the beam: the cells on either
   // side of it are walls too, with free cells before them.
   bool straightFace(Cell wall, Dir d) const;
@@ -161,6 +171,7 @@ class Pilot {
   StartSquaring squaring_;        // calibration and the turn correction (PilotConfig's are ignored there)
   TurnCalibration calibration_;
   int32_t turnErrorPpm_;  // see PilotConfig::turnErrorPpm
+  FaceLines faces_;  // the learnt faces of the walls read for the pose (faces anywhere only)
   // Phase::Snap: per axis (0 across the start heading's columns, 1 along its rows) the nearest wall's
   // distance from the robot's centre (mm, 0 = none yet) and the offset from the cell centre that puts its
   // face on a cell edge (mm, the tracker's x and y).

@@ -28,12 +28,9 @@ DriveAction Pilot::square(const DriveEvent& e) {
     const DriveAction a = squaring_.step(e);
     if (!squaring_.finished()) return a;
   }
-  if (squaring_.result().found) {  // square: now where the walls are across and along
-    phase_ = Phase::Snap;
-    return DriveAction::read(Sensor::Front);
-  }
-  const int64_t residual = squaring_.residualMrad();  // as set down, with no wall seen
-  return startExplorer(config_.startHeadingVarianceMrad2 + residual * residual);
+  // Square (or, with no straight wall seen, as set down): now where the walls are across and along.
+  phase_ = Phase::Snap;
+  return DriveAction::read(Sensor::Front);
 #endif
 }
 
@@ -47,7 +44,7 @@ DriveAction Pilot::snap(const DriveEvent& e) {
       (snapDistMm_[axis] == 0 || distMm < snapDistMm_[axis])) {
     // The face lies (k - 1/2) cells from the cell's centre (where the pose readings take it to be): the
     // offset along d is that minus the distance, the one of them within half a cell.
-    int32_t along = (cellMm_ / 2 - distMm) % cellMm_;
+    int32_t along = (explorer_.config().geometry.faceMm(1) - distMm) % cellMm_;
     if (along <= -cellMm_ / 2) along += cellMm_;
     if (along > cellMm_ / 2) along -= cellMm_;
     snapDistMm_[axis] = distMm;
@@ -55,8 +52,8 @@ DriveAction Pilot::snap(const DriveEvent& e) {
   }
   const int next = static_cast<int>(e.sensor) + 1;
   if (next < kSensorCount) return DriveAction::read(static_cast<Sensor>(next));
-  const int64_t sigma = config_.squaredHeadingMrad;
-  const int64_t residual = squaring_.residualMrad();
+  const int64_t sigma = squaring_.result().found ? config_.squaredHeadingMrad : 0;
+  const int64_t residual = squaring_.residualMrad();  // as set down, when no wall was seen
   return startExplorer(config_.startHeadingVarianceMrad2 + sigma * sigma + residual * residual);
 }
 #endif

@@ -18,20 +18,42 @@ struct RangeGeometry {
   // sensor: about 7 cm), so "no echo" cannot vouch for a cell reaching into it. 0: a near obstacle
   // reads too near (the published model).
   int16_t blindCm = 0;
+  // Where walls' faces may lie. 0: on cell edges (the published raster worlds): an echo is rounded to the
+  // nearest edge, robust to any error under half a cell. m > 0: anywhere (a real room): an echo marks the
+  // cell holding the face brought m cm nearer (the reading's error), so a wall reaching a sliver into a cell
+  // marks that cell occupied (a face read more than m cm long may still leave a sliver unmarked; one less
+  // than m past an edge marks the cell before it). The pilot then learns where each wall's face lies in its
+  // cell (FaceLines), and the start's snap lays the nearest faces 2m past a cell edge. 0..cellCm / 4. (The
+  // RAM-run firmware image has no room for it, nor for FaceLines: it keeps faces on edges.)
+  int16_t faceMarginCm = 0;
+#ifndef NXTMAP_NO_START_SQUARING
+  constexpr bool facesAnywhere() const { return faceMarginCm > 0; }
+#else
+  constexpr bool facesAnywhere() const { return false; }
+#endif
 
   // Cells a "nothing within range" reading proves free: those wholly inside the range.
   constexpr int16_t freeCells() const { return static_cast<int16_t>((2 * (maxCm + mountCm) - cellCm) / (2 * cellCm)); }
   // Farthest cell whose near face lies inside the range, so a hit there is seen.
-  constexpr int16_t hitCells() const { return static_cast<int16_t>((2 * (maxCm + mountCm) + cellCm) / (2 * cellCm)); }
+  constexpr int16_t hitCells() const {
+    return facesAnywhere() ? hitCell(maxCm) : static_cast<int16_t>((2 * (maxCm + mountCm) + cellCm) / (2 * cellCm));
+  }
   // Cells (1 = adjacent) whose near face lies inside the blind zone.
   constexpr int16_t blindCells() const {
     return blindCm <= 0 ? 0 : static_cast<int16_t>((2 * (blindCm + mountCm) + cellCm - 1) / (2 * cellCm));
   }
   // Whether an echo at `cm` may be placed on the axis (see sureCm).
   constexpr bool sureHit(int16_t cm) const { return sureCm == 0 || cm <= sureCm; }
-  // The cell (1 = adjacent) holding the obstacle whose near face is `cm` from the sensor.
-  // Robust to errors under half a cell: the near face of cell k is (k - 1/2) cells from the centre.
-  constexpr int16_t hitCell(int16_t cm) const { return static_cast<int16_t>((cm + mountCm + cellCm) / cellCm); }
+  // The cell (1 = adjacent) holding the obstacle whose near face is `cm` from the sensor (see faceMarginCm):
+  // published, the near face of cell k is (k - 1/2) cells from the centre.
+  constexpr int16_t hitCell(int16_t cm) const {
+    if (!facesAnywhere()) return static_cast<int16_t>((cm + mountCm + cellCm) / cellCm);
+    const int32_t k = (2 * (cm + mountCm - faceMarginCm) + cellCm) / (2 * cellCm);
+    return static_cast<int16_t>(k < 1 ? 1 : k);
+  }
+  // Where a wall cell k cells out is taken to have its face, mm from the cell centre, until learnt otherwise:
+  // (k - 1/2) cells, plus 2 * faceMarginCm past the edge when faces lie anywhere (where the snap lays them).
+  constexpr int32_t faceMm(int32_t k) const { return (2 * k - 1) * cellCm * 5 + (facesAnywhere() ? 20 * faceMarginCm : 0); }
 };
 
 }  // namespace nxtmap

@@ -33,8 +33,8 @@ namespace nxtmap::fw {
 #ifdef NXTMAP_RAM_RUN
 // The RAM-run image (libnxt fwexec) keeps its code in the same 56 KiB as its data: a 32 x 32 grid
 // (6.4 m square at 20 cm cells; 64 x 32 until the LEGO command set took its code's place), and a
-// travel-search queue of 104 states (a search over the published rooms on a 32 x 32 grid held at most 74).
-using AppExplorerStorage = ExplorerStorage<32, 32, 104>;
+// travel-search queue of 96 states (a search over the published rooms on a 32 x 32 grid held at most 74).
+using AppExplorerStorage = ExplorerStorage<32, 32, 96>;
 #else
 using AppExplorerStorage = BrickExplorerStorage;
 static_assert(AppExplorerStorage::kWidth() == 64 && AppExplorerStorage::kHeight() == 64,

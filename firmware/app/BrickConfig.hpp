@@ -19,12 +19,16 @@ struct BrickConfig {
 #if defined(NXTMAP_SIM_GEOMETRY)
   MotionGeometry drive{56, 112, 100, 360};  // 10 cm cells
   int16_t minCm = 5, maxCm = 100, mountCm = 0;
+  int16_t faceMarginCm = 0;  // the published raster worlds: faces on cell edges
   bool turnNeedsRoom = false;  // a point
 #else
   MotionGeometry drive{};  // 56 mm wheels, 112 mm track, 200 mm cells
   int16_t minCm = 7;       // the LEGO sensor is unreliable closer than this
   int16_t maxCm = 120;     // and beyond this
   int16_t mountCm = 6;     // sensor faces ahead of the robot's centre
+  // Walls stand anywhere, not on the cells' edges: an echo marks the cell holding the face brought 3 cm nearer
+  // (the sensor's per-pose error and whole-cm reading) and the pilot learns where faces lie (RangeGeometry).
+  int16_t faceMarginCm = 3;
   // The 16 x 18 cm body sweeps 12 cm from its centre when it turns, more than half a cell: it turns only
   // where the four cells around it are known free (ExplorerConfig::turnNeedsRoom).
   bool turnNeedsRoom = true;
@@ -36,6 +40,7 @@ struct BrickConfig {
     c.geometry.minCm = minCm;
     c.geometry.maxCm = maxCm;
     c.geometry.mountCm = mountCm;
+    c.geometry.faceMarginCm = faceMarginCm;
     c.turnNeedsRoom = turnNeedsRoom;
     return c;
   }

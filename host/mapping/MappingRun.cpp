@@ -99,12 +99,13 @@ uint64_t MappingRun::runToEnd() {
 
 void MappingRun::layTruthSquare() {
   squared_ = true;
-  if (!stack_.pilot()->squaring().result().found) return;  // turned back to where it was set down
-  // The walls' axis nearest to where the robot now faces: the frame it believes it maps in.
+  // The walls' axis nearest to where the robot now faces: the frame it believes it maps in; with no straight
+  // wall seen, the frame it was set down in (turned back to where it was set down).
   const double heading = robot_.headingDeg();
   const double off = std::remainder(heading - sim::sceneAxesDeg(robot_.scene()), 90.0);
-  const double axis = heading - off;
-  squaredOffDeg_ = std::fabs(off);
+  const bool found = stack_.pilot()->squaring().result().found;
+  const double axis = found ? heading - off : robot_.frame().headingDeg + 90.0 * static_cast<int>(config_.heading);
+  if (found) squaredOffDeg_ = std::fabs(off);
   const sim::Heading quarter = static_cast<sim::Heading>(sim::squareQuarter(axis));
   const double turn = sim::squareRemainderDeg(axis);
   // The cell's centre where the pilot believes it: off the robot by the offset the nearest walls gave it.

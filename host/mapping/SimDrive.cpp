@@ -36,6 +36,7 @@ ExplorerConfig explorerConfigFor(const sim::World& world, const sim::RobotDescri
   e.geometry = sonarGeometryFor(world, minRangeM, rangeM,
                                 beamHalfAngleDeg >= 0.0 ? beamHalfAngleDeg : sonar.coneHalfAngleDeg, robot.mountCm);
   e.geometry.blindCm = blindCm >= 0 ? static_cast<int16_t>(blindCm) : sonarBlindCm(sonar);
+  e.geometry.faceMarginCm = static_cast<int16_t>(robot.faceMarginCm);
   e.turnNeedsRoom = robot.turnNeedsRoom();
   e.searchSliceStates = searchSliceStates;
   return e;

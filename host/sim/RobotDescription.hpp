@@ -26,6 +26,7 @@ struct RobotDescription {
   int mountCm = 0;                       // the explorer's RangeGeometry::mountCm (sensor face ahead of the centre)
   double minRangeM = 0.05;               // readings the robot trusts, metres (RangeGeometry::minCm)
   double rangeM = 1.0;                   // (RangeGeometry::maxCm)
+  int faceMarginCm = 0;                  // where its map puts walls' faces (RangeGeometry::faceMarginCm)
   // The drive (the emulator's DriveModel and the wheel model): NXT 56 mm tyres, 112 mm track.
   double wheelDiameterCm = 5.6;
   double trackCm = 11.2;

@@ -148,10 +148,16 @@ TEST(PilotStall, AStalledStepOfTheStartsSweepEndsTheSweep) {
   }
   ASSERT_EQ(a.kind, DriveAction::Kind::Rotate);  // the first step of the sweep
   a = rig.pilot.step(DriveEvent::rotatedBy(0));  // stalls at once
-  // No wall seen: back to where it was set down (the sweep's zero), then the explorer starts.
+  // No wall seen: back to where it was set down (the sweep's zero), a reading of each sensor for the nearest
+  // walls (the snap), then the explorer starts.
   ASSERT_EQ(a.kind, DriveAction::Kind::Rotate);
   EXPECT_EQ(a.value, 1571);
   a = rig.pilot.step(DriveEvent::rotatedBy(a.value));
+  for (int s = 0; s < kSensorCount; ++s) {
+    ASSERT_EQ(a.kind, DriveAction::Kind::Read);
+    EXPECT_FALSE(rig.pilot.explorerStarted());
+    a = rig.pilot.step(DriveEvent::range(a.sensor, RangeReading{}));
+  }
   EXPECT_TRUE(rig.pilot.explorerStarted());
   EXPECT_FALSE(rig.pilot.squaring().result().found);
   EXPECT_NE(a.kind, DriveAction::Kind::Done);

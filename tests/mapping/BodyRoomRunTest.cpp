@@ -54,6 +54,7 @@ TEST(BodyRoomRun, SetDownInACornerTheBrickMapsTheRoomTurningOnlyWhereItHasRoom) 
       c.noise = *sim::noiseProfileByName(noise);
       c.seed = seed;
       c.strategy = Strategy::Frontier;
+      c.squareAtStart = true;  // as the brick does (--square auto): its cells' edges laid on the walls
       MappingRun run(world, c);
       EXPECT_NEAR(run.startMovedCm(), 20.0 * std::sqrt(2.0), 1e-9) << noise << " seed " << seed;
       run.runToEnd();
@@ -88,7 +89,9 @@ TEST(BodyRoomRun, SquareToTheWallsTheCellsEdgesLieOnTheNearestWalls) {
         if (std::min(a, b) > 90.0) continue;  // beyond PilotConfig::snapRangeCm (and the 6 cm mount): not used
         const Dir towards = rotate(h, a <= b ? axis : axis + 2);
         const double fromCentre = std::min(a, b) + run.pilot().tracker().along(towards) / 10.0;
-        const double offEdge = std::remainder(fromCentre - 10.0, 20.0);
+        // Faces anywhere (RangeGeometry::faceMarginCm): the snap lays them twice the margin past the edge.
+        const double inset = run.explorerConfig().geometry.faceMm(1) / 10.0 - 10.0;
+        const double offEdge = std::remainder(fromCentre - 10.0 - inset, 20.0);
         EXPECT_LE(std::fabs(offEdge), 2.0) << turn << " seed " << seed << " axis " << axis;
       }
     }

@@ -1,0 +1,100 @@
+// Walls anywhere (RangeGeometry::faceMarginCm): which cell an echo marks, how the pilot learns where the faces lie
+// (FaceLines), and what that is worth in a room whose walls are not on the cells' edges.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "common/motion/FaceLines.hpp"
+#include "tests/common/PilotRoomRig.hpp"
+
+namespace nxtmap {
+namespace {
+
+TEST(RangeGeometry, FacesAnywhereMarkTheCellHoldingTheFaceBroughtTheMarginNearer) {
+  RangeGeometry g{20, 7, 120, 6};  // the brick: 20 cm cells, sensors 6 cm ahead of the centre
+  g.faceMarginCm = 3;
+  // The face is cm + 6 from the centre; cell k holds (k - 1/2) .. (k + 1/2) cells, less the 3 cm margin.
+  const struct {
+    int16_t cm, published, anywhere;
+  } table[] = {
+      {4, 1, 1},     // 10 cm from the centre: the adjacent cell's near edge
+      {7, 1, 1},     // 13 cm
+      {23, 2, 1},    // 29 cm: in the adjacent cell (10..30 cm), which the published rule rounds to its far edge
+      {26, 2, 1},    // 32 cm, 2 cm into cell 2: within the margin, so the cell before it (a read too long is safe)
+      {27, 2, 2},    // 33 cm, less 3: the next cell's near edge
+      {40, 3, 2},    // 46 cm: the far half of cell 2 (30..50 cm), rounded on to cell 3 by the published rule
+      {110, 6, 6},   // 116 cm: cell 6 (110..130 cm) both ways
+  };
+  for (const auto& t : table) {
+    RangeGeometry published = g;
+    published.faceMarginCm = 0;
+    EXPECT_EQ(published.hitCell(t.cm), t.published) << t.cm << " cm";
+    EXPECT_EQ(g.hitCell(t.cm), t.anywhere) << t.cm << " cm";
+  }
+  EXPECT_EQ(g.faceMm(1), 100 + 60);  // the adjacent cell's near edge plus twice the margin
+}
+
+TEST(FaceLines, LearnsEachLinesFaceWeighingEveryReadingByHowWellItIsKnown) {
+  FaceLines f;
+  int32_t mm = 0, var = 0;
+  EXPECT_FALSE(f.face(Cell{3, 5}, Dir::North, mm, var));
+  // Each step: learn (pastEdgeMm, variance) for the face of row 5 seen looking north, then what is known.
+  const struct {
+    int32_t mm, var;
+    bool learnt;
+    int32_t knownMm, knownVar;
+  } table[] = {
+      {40, 400, true, 40, 400},     // the first reading is taken as it is
+      {60, 400, true, 50, 200},     // as sure as what was known: half way, half the variance
+      {120, 100, false, 50, 200},   // 70 mm off, past 30 mm and 3 sigma: another face (a leg before the wall)
+      {44, 600, true, 48, 150},     // a less sure reading moves it less: by a quarter of 6 mm, rounded
+      {5000, 1, false, 48, 150},    // far off and sure: refused
+      {-20, 80000, true, 48, 149},  // very unsure (kept to 65535 mm^2): it hardly counts (48 - 68 * 150 / 65685)
+  };
+  for (const auto& t : table) {
+    EXPECT_EQ(f.learn(Cell{3, 5}, Dir::North, t.mm, t.var), t.learnt) << t.mm;
+    ASSERT_TRUE(f.face(Cell{3, 5}, Dir::North, mm, var));
+    EXPECT_EQ(mm, t.knownMm) << t.mm;
+    EXPECT_EQ(var, t.knownVar) << t.mm;
+  }
+  // A line is its row (looking north or south) or column (east or west), per direction, modulo 64 cells.
+  EXPECT_TRUE(f.face(Cell{-40, 5}, Dir::North, mm, var));
+  EXPECT_TRUE(f.face(Cell{3, 69}, Dir::North, mm, var));
+  EXPECT_FALSE(f.face(Cell{3, 5}, Dir::South, mm, var));
+  EXPECT_FALSE(f.face(Cell{5, 3}, Dir::East, mm, var));
+  EXPECT_FALSE(f.learn(Cell{-1, -1}, Dir::West, 10, 0));  // a reading must come with its (positive) variance
+  EXPECT_TRUE(f.learn(Cell{-1, -1}, Dir::West, -10, 50));
+  EXPECT_TRUE(f.face(Cell{-1, 63}, Dir::West, mm, var));
+  EXPECT_EQ(mm, -10);
+  EXPECT_EQ(f.known(), 2);
+  f.clear();
+  EXPECT_EQ(f.known(), 0);
+}
+
+// A room 1.6 m x 1.6 m whose walls stand 12..41 mm past a cell edge (cells 100 mm), mapped by a pilot with noisy
+// wheels and sonars, faces taken on the cells' edges (the published rule) and faces anywhere (learnt). Summed
+// over runs: the learnt faces map fewer cells wrongly and know the robot's position better.
+TEST(Pilot, LearntFacesMapARoomWhoseWallsAreOffTheCellEdgesBetter) {
+  ExplorerConfig published;
+  ExplorerConfig anywhere;
+  anywhere.geometry.faceMarginCm = 2;
+  int wrong[2] = {0, 0};
+  double positionMm[2] = {0, 0};
+  for (uint32_t run = 1; run <= 10; ++run) {
+    const pilotrig::Wheels w = pilotrig::noisyWheels(20, 15, run);
+    for (int k = 0; k < 2; ++k) {
+      const pilotrig::RoomRun r =
+          pilotrig::runInRoom(PilotConfig{}, -738, 862, -629, 991, w, k == 0 ? published : anywhere);
+      ASSERT_GT(r.readings, 20);
+      wrong[k] += r.wrongCells;
+      positionMm[k] += r.meanEstimateErrorMm / 10;
+    }
+  }
+  std::printf("wrong cells %d on edges, %d anywhere; position error %.1f mm on edges, %.1f anywhere\n", wrong[0],
+              wrong[1], positionMm[0], positionMm[1]);
+  EXPECT_LT(wrong[1] * 2, wrong[0]);
+  EXPECT_LT(positionMm[1], positionMm[0]);
+}
+
+}  // namespace
+}  // namespace nxtmap
