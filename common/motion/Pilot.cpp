@@ -55,6 +55,7 @@ Counters Pilot::counters() const {
   c.sensorRequests += calibrated ? calibration_.readings() : squaring_.readings();
   c.rawSamples += calibrated ? calibration_.samples() : squaring_.samples();
   c.correctionMrad += calibrated ? calibration_.turnedMrad() : squaring_.turnedMrad();
+  c.cellsMoved += approachCells_;
 #endif
   return c;
 }
@@ -375,6 +376,9 @@ DriveAction Pilot::stepCorrected(const DriveEvent& e) {
       break;
     case DriveEvent::Kind::Rotated:
       if (phase_ == Phase::Square) return square(e);
+#ifndef NXTMAP_NO_START_SQUARING
+      if (phase_ == Phase::Approach) return approach(e);
+#endif
       if (phase_ == Phase::Level) {
         tracker_.rotated(e.measured ? e.achieved : commandMrad_, 0);
 #ifndef NXTMAP_NO_START_SQUARING
@@ -404,6 +408,9 @@ DriveAction Pilot::stepCorrected(const DriveEvent& e) {
       if (phase_ == Phase::Think) return begin(explorer_.step(Event::thought()));
       break;
     case DriveEvent::Kind::Driven:
+#ifndef NXTMAP_NO_START_SQUARING
+      if (phase_ == Phase::Approach) return approach(e);
+#endif
       if (phase_ != Phase::Drive) break;
       if (e.blocked) return begin(explorer_.step(Event::blocked()));
       {

@@ -50,6 +50,15 @@ struct PilotConfig {
   // (RangeGeometry::faceMm): the robot starts off its cell's centre by what that takes (walls in the honest
   // world are not on a cell edge where the robot was set down).
   int16_t snapRangeCm = 100;
+  // A sweep that saw no straight wall (all of them too far, over 160 cm, in the middle of a large room): the
+  // robot drives towards the sweep's nearest echo beyond approachCm + 20 cm until approachCm from it (at most
+  // approachMaxCm), turns back to the heading it was set down on and sweeps again, up to approaches times (a
+  // sweep beside one wall alone may not place it; a second approach finds a corner). 0: it maps as set down.
+#ifndef NXTMAP_NO_START_SQUARING  // (not in the RAM-run image, which has no sweep)
+  int16_t approachCm = 50;
+  int16_t approachMaxCm = 150;
+  uint8_t approaches = 2;
+#endif
   // With the sweep on: first measure how far the turns are off (TurnCalibration, this many whole turns
   // between two sweeps; 0: no calibration) and correct every turn by it for the rest of the run.
   uint8_t calibrateTurns = 0;
@@ -87,7 +96,13 @@ class Pilot {
   DriveAction step(const DriveEvent& e);
   bool finished() const { return phase_ == Phase::Done; }
   // The explorer has started: the start's sweep (and calibration) is over, or there was none.
-  bool explorerStarted() const { return phase_ != Phase::Idle && phase_ != Phase::Square && phase_ != Phase::Snap; }
+  bool explorerStarted() const {
+#ifdef NXTMAP_NO_START_SQUARING
+    return phase_ != Phase::Idle;  // no sweep there
+#else
+    return phase_ != Phase::Idle && phase_ != Phase::Square && phase_ != Phase::Approach && phase_ != Phase::Snap;
+#endif
+  }
 
   // Cells the caller holds closed without their being walls (a doorway kept shut while a room is
   // mapped): never a landmark for a pose reading. Non-owning: the set must outlive the pilot or be
@@ -119,6 +134,7 @@ class Pilot {
   enum class Phase : uint8_t {
     Idle,
     Square,
+    Approach,
     Snap,
     Level,
     ExplorerRead,
@@ -135,6 +151,7 @@ class Pilot {
   DriveAction startExplorer(int64_t headingVarianceMrad2);
   DriveAction square(const DriveEvent& e);  // the start's sweep (Phase::Square)
   DriveAction snap(const DriveEvent& e);    // once square, the cell's lattice laid on the nearest walls
+  DriveAction approach(const DriveEvent& e);  // Phase::Approach: towards the nearest echo, back, sweep again
   DriveAction begin(const Action& a);
 #ifndef NXTMAP_NO_START_SQUARING
   DriveAction turnStalled(const DriveEvent& e);  // Phase::Turn's rotation stalled: turn back
@@ -177,6 +194,12 @@ class Pilot {
   // face on a cell edge (mm, the tracker's x and y).
   int32_t snapDistMm_[2] = {0, 0};
   int32_t snapMm_[2] = {0, 0};
+  // Phase::Approach (see PilotConfig::approachCm): 0 turning towards the echo, 1 driving, 2 turning back; the
+  // turn (mrad, as the encoders told it) and the drive (mm).
+  uint8_t approachStep_ = 0;
+  uint8_t approached_ = 0;  // approaches made
+  int32_t approachTurnMrad_ = 0, approachMm_ = 0;
+  uint32_t approachCells_ = 0;  // driven, whole cells (for the time counted)
 #endif
   Pose startPose_{};  // where the explorer starts once the robot is square
   int32_t cellMm_;

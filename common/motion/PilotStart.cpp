@@ -27,6 +27,19 @@ DriveAction Pilot::square(const DriveEvent& e) {
   } else {
     const DriveAction a = squaring_.step(e);
     if (!squaring_.finished()) return a;
+    const StartSquaring::Echo& n = squaring_.nearestEcho();
+    const int32_t driveCm = n.cm - config_.approachCm;
+    if (!squaring_.result().found && approached_ < config_.approaches && config_.approachCm > 0 && n.seen &&
+        driveCm >= 20) {
+      ++approached_;  // towards the nearest echo (the sweep ended at its zero, off by the residual)
+      phase_ = Phase::Approach;
+      approachStep_ = 0;
+      approachMm_ = 10 * (driveCm < config_.approachMaxCm ? driveCm : config_.approachMaxCm);
+      commandMrad_ = n.mrad - squaring_.residualMrad();
+      squaring_.avoid(n.mrad);
+      correctionMrad_ += static_cast<uint32_t>(commandMrad_ < 0 ? -commandMrad_ : commandMrad_);
+      return DriveAction::rotate(commandMrad_);
+    }
   }
   // Square (or, with no straight wall seen, as set down): now where the walls are across and along.
   phase_ = Phase::Snap;
@@ -55,6 +68,28 @@ DriveAction Pilot::snap(const DriveEvent& e) {
   const int64_t sigma = squaring_.result().found ? config_.squaredHeadingMrad : 0;
   const int64_t residual = squaring_.residualMrad();  // as set down, when no wall was seen
   return startExplorer(config_.startHeadingVarianceMrad2 + sigma * sigma + residual * residual);
+}
+#endif
+
+#ifndef NXTMAP_NO_START_SQUARING
+DriveAction Pilot::approach(const DriveEvent& e) {
+  const bool rotated = e.kind == DriveEvent::Kind::Rotated, driven = e.kind == DriveEvent::Kind::Driven;
+  if (approachStep_ == 0 && rotated) {
+    approachTurnMrad_ = e.measured ? e.achieved : commandMrad_;
+    approachStep_ = 1;
+    return DriveAction::drive(approachMm_);
+  }
+  if (approachStep_ == 1 && driven) {  // driven all the way or stopped by something: sweep from there
+    const int32_t mm = e.measured ? e.achieved : approachMm_;
+    approachCells_ += static_cast<uint32_t>((mm < 0 ? -mm : mm) + cellMm_ / 2) / static_cast<uint32_t>(cellMm_);
+    approachStep_ = 2;
+    commandMrad_ = -approachTurnMrad_;
+    correctionMrad_ += static_cast<uint32_t>(commandMrad_ < 0 ? -commandMrad_ : commandMrad_);
+    return DriveAction::rotate(commandMrad_);
+  }
+  NXTMAP_CHECK(approachStep_ == 2 && rotated);  // an event that does not answer the action in progress
+  phase_ = Phase::Square;
+  return squaring_.begin();
 }
 #endif
 

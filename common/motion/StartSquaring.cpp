@@ -16,7 +16,8 @@ int16_t sweepCm(const RangeReading& r) {
 
 }  // namespace
 
-StartSquaring::StartSquaring(int32_t sweepMrad, int32_t stepMrad) : sweepMrad_(sweepMrad), stepMrad_(stepMrad) {
+StartSquaring::StartSquaring(int32_t sweepMrad, int32_t stepMrad, int16_t approachFromCm)
+    : sweepMrad_(sweepMrad), stepMrad_(stepMrad), approachFromCm_(approachFromCm) {
   NXTMAP_CHECK(stepMrad > 0 && sweepMrad >= 0 && 2 * sweepMrad / stepMrad < WallDirection::kMaxSteps);
 }
 
@@ -26,6 +27,7 @@ DriveAction StartSquaring::begin() {
   headingMrad_ = targetMrad_ = 0;
   readings_ = samples_ = turnedMrad_ = 0;
   stalled_ = false;
+  nearest_ = Echo{};
   return turn(Phase::ToStart, -sweepMrad_);
 }
 
@@ -48,6 +50,18 @@ DriveAction StartSquaring::readNext() {
   result_ = walls_.estimate();
   targetMrad_ = result_.found ? result_.mrad : 0;
   return turn(Phase::ToWalls, targetMrad_ - headingMrad_);
+}
+
+void StartSquaring::noteEcho(Sensor s, int16_t cm) {
+  if (cm < approachFromCm_ || (nearest_.seen && cm >= nearest_.cm)) return;
+  int32_t mrad = headingMrad_ + static_cast<int32_t>(s) * WallDirection::kQuarterMrad;
+  while (mrad > 2 * WallDirection::kQuarterMrad) mrad -= 4 * WallDirection::kQuarterMrad;
+  while (mrad <= -2 * WallDirection::kQuarterMrad) mrad += 4 * WallDirection::kQuarterMrad;
+  int32_t off = mrad - avoidMrad_;
+  while (off > 2 * WallDirection::kQuarterMrad) off -= 4 * WallDirection::kQuarterMrad;
+  while (off <= -2 * WallDirection::kQuarterMrad) off += 4 * WallDirection::kQuarterMrad;
+  if (avoiding_ && abs32(off) < 2 * WallDirection::kQuarterMrad / 3) return;
+  nearest_ = Echo{true, mrad, cm};
 }
 
 DriveAction StartSquaring::step(const DriveEvent& e) {
@@ -75,6 +89,7 @@ DriveAction StartSquaring::step(const DriveEvent& e) {
     case Phase::Read:
       if (e.kind != DriveEvent::Kind::Range || static_cast<uint8_t>(e.sensor) != sensor_) break;
       walls_.addReading(e.sensor, sweepCm(e.reading));
+      noteEcho(e.sensor, sweepCm(e.reading));
       ++readings_;
       samples_ += e.reading.samples;
       ++sensor_;

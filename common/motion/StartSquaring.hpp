@@ -17,7 +17,7 @@ class StartSquaring {
  public:
   // sweepMrad: the sweep's half-width (the default +-90 deg sees a wall at any angle whole);
   // stepMrad: between headings (5 deg: a dip is 60-75 deg wide). At most WallDirection::kMaxSteps headings.
-  explicit StartSquaring(int32_t sweepMrad = 1571, int32_t stepMrad = 87);
+  explicit StartSquaring(int32_t sweepMrad = 1571, int32_t stepMrad = 87, int16_t approachFromCm = 70);
 
   DriveAction begin();
   // The answer to the previous action; returns the next. DriveAction::done() once square.
@@ -27,6 +27,20 @@ class StartSquaring {
   const WallDirectionEstimate& result() const { return result_; }
   // The robot's heading minus the walls' axis it turned onto, as the encoders tell it (mrad, + clockwise).
   int32_t residualMrad() const { return headingMrad_ - targetMrad_; }
+  // The nearest echo of the sweep at least approachFromCm away (a wall or a thing to drive towards when the sweep
+  // found no wall): its direction from the sweep's zero (mrad, + clockwise, -pi..pi) and range (cm).
+  struct Echo {
+    bool seen = false;
+    int32_t mrad = 0;
+    int16_t cm = 0;
+  };
+  const Echo& nearestEcho() const { return nearest_; }
+  // Echoes within a sixth of a turn of `mrad` (from the sweep's zero) are not the nearest echo from now on: the
+  // wall an approach went to (kept across begin()).
+  void avoid(int32_t mrad) {
+    avoiding_ = true;
+    avoidMrad_ = mrad;
+  }
   uint32_t readings() const { return readings_; }
   uint32_t samples() const { return samples_; }
   uint32_t turnedMrad() const { return turnedMrad_; }
@@ -36,8 +50,13 @@ class StartSquaring {
 
   DriveAction turn(Phase next, int32_t mrad);
   DriveAction readNext();
+  void noteEcho(Sensor s, int16_t cm);
 
   int32_t sweepMrad_, stepMrad_;
+  int16_t approachFromCm_;
+  Echo nearest_;
+  bool avoiding_ = false;
+  int32_t avoidMrad_ = 0;
   Phase phase_ = Phase::Idle;
   WallDirection walls_;
   WallDirectionEstimate result_;

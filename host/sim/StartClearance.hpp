@@ -19,9 +19,10 @@ struct ClearStart {
 // beside its own (on its grid, laid square to its heading) are clear of every obstacle of the scene.
 bool roomToTurnAt(const Scene& scene, const StartPose& pose, double cellCm, double sweepCm);
 
-// The start moved by whole cells (cellCm, along the plane's axes, at most kReachCells either way) to the
-// nearest spot with room to turn that is reachable from it in a straight line; the heading kept.
-constexpr int kReachCells = 4;
+// The start moved by whole cells (cellCm, along the plane's axes, at most kReachCells either way: 1.6 m on the
+// brick, as far as a person looks for room around a cluttered corner) to the nearest spot with room to turn
+// that is reachable from it in a straight line; the heading kept.
+constexpr int kReachCells = 8;
 ClearStart withRoomToTurn(const Scene& scene, const StartPose& start, double cellCm, double sweepCm);
 
 }  // namespace nxtmap::sim

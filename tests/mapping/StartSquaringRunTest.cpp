@@ -133,5 +133,39 @@ TEST(StartSquaringRun, NothingInRangeLeavesTheRobotAsItWasSetDown) {
   }
 }
 
+TEST(StartSquaringRun, WallsTooFarForTheSweepAreApproachedAndSweptAgain) {
+  // 4.4 m square, turned 13 degrees, the robot in its middle: every wall 2.2 m away, beyond the 1.6 m a sweep
+  // finds walls within (WallDirection::kFarCm), but in reach of an echo. It drives towards the nearest (as far
+  // as PilotConfig::approachMaxCm), turns back to its heading and sweeps again (twice at most, not towards the
+  // same wall): square before mapping. Sonars with a cone (`ideal` has one ray, whose dip beside one wall is too
+  // narrow to trust: 4 of seeds 1-20 map as set down). Measured over seeds 1-20: worst 2.8 deg off (typical), 3.9
+  // (nxt).
+  const sim::Site site = room(13, 4.4, 4.4, 0.0, 0.0);
+  for (const char* noise : {"typical", "nxt"}) {
+    double sum = 0.0;
+    for (uint64_t seed = 1; seed <= 10; ++seed) {
+      RunConfig c;
+      c.startPose = site.start;
+      c.startJitterDeg = 10;
+      c.noise = *sim::noiseProfileByName(noise);
+      c.seed = seed;
+      c.squareAtStart = true;
+      c.robot = *sim::robotByName("brick");
+      MappingRun run(site, c);
+      const double x0 = run.robot().xCm(), y0 = run.robot().yCm();
+      for (int i = 0; i < 3000 && !run.pilot().explorerStarted(); ++i) run.step();
+      ASSERT_TRUE(run.pilot().explorerStarted()) << noise << " seed " << seed;
+      EXPECT_TRUE(run.pilot().squaring().result().found) << noise << " seed " << seed;
+      const double off = offSquareDeg(run.robot().headingDeg(), run.robot().scene());
+      EXPECT_LE(off, 4.0) << noise << " seed " << seed;
+      sum += off;
+      const double moved = std::hypot(run.robot().xCm() - x0, run.robot().yCm() - y0);
+      EXPECT_GT(moved, 100.0) << noise << " seed " << seed;
+      EXPECT_LE(moved, 2 * 155.0) << noise << " seed " << seed;
+    }
+    EXPECT_LE(sum / 10, 2.5) << noise;
+  }
+}
+
 }  // namespace
 }  // namespace nxtmap::mapping
