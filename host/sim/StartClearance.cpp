@@ -39,6 +39,32 @@ bool inSight(const Scene& scene, const Vec2& a, const Vec2& b) {
   const double deg = std::atan2(d.x(), -d.y()) * 180.0 / kPi;  // compass: 0 = -y (north), 90 = +x
   return !scene.cast(a, deg, length).hit;
 }
+
+// The offsets (i, j) of whole cells within kReachCells of the start that its centre reaches by steps of a cell
+// along the plane's axes, each in sight of the last (round an obstacle, never through a wall): index
+// (j + kReachCells) * side + i + kReachCells.
+std::vector<bool> reachableAround(const Scene& scene, const Vec2& start, double cellCm) {
+  constexpr int kSide = 2 * kReachCells + 1;
+  std::vector<bool> seen(kSide * kSide, false);
+  std::vector<int> queue{kReachCells * kSide + kReachCells};
+  seen[queue[0]] = true;
+  const double x0 = start.x(), y0 = start.y();
+  const auto at = [x0, y0, cellCm](int index) {
+    return Vec2(x0 + (index % kSide - kReachCells) * cellCm, y0 + (index / kSide - kReachCells) * cellCm);
+  };
+  for (size_t q = 0; q < queue.size(); ++q) {
+    const int from = queue[q], x = from % kSide, y = from / kSide;
+    const int steps[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    for (const auto& s : steps) {
+      const int nx = x + s[0], ny = y + s[1], to = ny * kSide + nx;
+      if (nx < 0 || ny < 0 || nx >= kSide || ny >= kSide || seen[to]) continue;
+      if (scene.solidAt(at(to)) || !inSight(scene, at(from), at(to))) continue;
+      seen[to] = true;
+      queue.push_back(to);
+    }
+  }
+  return seen;
+}
 }  // namespace
 
 bool roomToTurnAt(const Scene& scene, const StartPose& pose, double cellCm, double sweepCm) {
@@ -58,9 +84,12 @@ ClearStart withRoomToTurn(const Scene& scene, const StartPose& start, double cel
     for (int i = -kReachCells; i <= kReachCells; ++i)
       if (i != 0 || j != 0) offsets.push_back(Offset{i, j, cellCm * std::hypot(i, j)});
   std::stable_sort(offsets.begin(), offsets.end(), [](const Offset& a, const Offset& b) { return a.cm < b.cm; });
+  const std::vector<bool> reachable = reachableAround(scene, start.cm, cellCm);
   for (const Offset& o : offsets) {
     const StartPose p{start.cm + Vec2(o.i * cellCm, o.j * cellCm), start.headingDeg};
-    if (roomToTurnAt(scene, p, cellCm, sweepCm) && inSight(scene, start.cm, p.cm)) return ClearStart{p, o.cm};
+    const bool reached = reachable[(o.j + kReachCells) * (2 * kReachCells + 1) + o.i + kReachCells];
+    if (roomToTurnAt(scene, p, cellCm, sweepCm) && (inSight(scene, start.cm, p.cm) || reached))
+      return ClearStart{p, o.cm};
   }
   return ClearStart{start, -1.0};
 }

@@ -21,7 +21,8 @@ bool roomToTurnAt(const Scene& scene, const StartPose& pose, double cellCm, doub
 
 // The start moved by whole cells (cellCm, along the plane's axes, at most kReachCells either way: 1.6 m on the
 // brick, as far as a person looks for room around a cluttered corner) to the nearest spot with room to turn
-// that is reachable from it in a straight line; the heading kept.
+// that is reachable from it in a straight line or by steps of a cell round obstacles (never through a wall);
+// the heading kept.
 constexpr int kReachCells = 8;
 ClearStart withRoomToTurn(const Scene& scene, const StartPose& start, double cellCm, double sweepCm);
 

@@ -52,6 +52,18 @@ TEST(StartClearance, ASpotBehindAWallIsNotWhereThePersonCarriesIt) {
   EXPECT_LT(c.pose.cm.x(), 80.0);                      // west of the dividing wall
 }
 
+TEST(StartClearance, AStartInAPassageIsCarriedRoundTheWallToTheRoomBeyondIt) {
+  // Set down in a passage one cell wide below a wall with a gap at each end: the nearest spot with room, (4, 2),
+  // is three cells up, behind the wall (not in a straight line), and reached through the gap at column 1.
+  const World world = World::fromRows(
+      {"##########", "#........#", "#........#", "#........#", "#.######.#", "#........#", "##########"}, 0.20);
+  const Site site = siteFromRaster(world);
+  const ClearStart c = withRoomToTurn(*site.scene, cellCentre(4, 5), 20.0, 12.1);
+  EXPECT_NEAR(c.movedCm, 60.0, 1e-9);
+  EXPECT_NEAR(c.pose.cm.x(), cellCentre(4, 2).cm.x(), 1e-9);
+  EXPECT_NEAR(c.pose.cm.y(), cellCentre(4, 2).cm.y(), 1e-9);
+}
+
 TEST(StartClearance, OnlyABodyThatSweepsOutOfItsCellIsMoved) {
   const World world = World::fromRows({"#######", "#.....#", "#.....#", "#.....#", "#.....#", "#######"}, 0.20);
   const Site site = siteFromRaster(world);
