@@ -37,10 +37,12 @@ struct GridLocaliserParams {
 // Measurement: a reading from Sensor s while facing Dir h against a read-only RoomGrid around the believed cell.
 // The expected range of each position bin is the distance from its sensor face (mountMm out along the sensor's
 // axis; the heading's sideways shift of the face, under 3 mm, is ignored) to the near face of the first occupied
-// cell along the row (or column) the face lies in. Unknown cells before any wall: no information, the bin is left
-// as it was. A bin's cost grows by the reading's cost under BeamModel minus the reading's best possible cost, so
-// an uninformed bin stays even with a perfect match (when every bin is informed, the least of the reading's costs
-// is taken off too). The first wall is found once per (row, start cell) by one walk per row; costs are looked up
+// cell along the row (or column) the face lies in. An unknown cell before any wall: the wall may be anywhere
+// beyond its near face, or nowhere in reach, so the bin takes the reading's best explanation that the free cells
+// before it allow (no cost for an echo from beyond that face; an echo from inside the free cells costs as one
+// from a wall at the face). Not "no information": bins looking into the unknown would otherwise win over every
+// bin that sees a wall it fits less than perfectly. A bin's cost grows by the reading's cost under BeamModel
+// minus the reading's best possible cost, and the least of the reading's costs over the window is taken off. The first wall is found once per (row, start cell) by one walk per row; costs are looked up
 // once per distinct expected range; a reading's costs, the same for every heading, go into one layer kept for the
 // readings (one saturating addition per position, four to a word), folded into the heading layers before motion.
 // Host-measured (callgrind, x86-64 -O2): about 21,000 instructions a reading, 35,000 when it renormalises.
@@ -71,7 +73,7 @@ class GridLocaliser {
   void recentre(Dir d, int cells);
 
   // A reading (whole cm 0..254, or BeamModel::kNoEcho) from `s` facing `facing`, standing in `believed` of
-  // `map`. Returns how many position bins it informed (0: it changed nothing).
+  // `map`. Returns how many position bins it weighed (every one; 0 for a reading the model cannot weigh).
   int measure(const RoomGrid& map, Cell believed, Dir facing, Sensor s, int16_t readingCm);
 
   struct Peak {

@@ -15,7 +15,7 @@ constexpr uint8_t saturate(int32_t v) { return static_cast<uint8_t>(v > 255 ? 25
 // along the sensor's axis (j) and to its right (row); cellMm >= 2 binMm and mountMm < cellMm bound both.
 constexpr int kMaxRows = GridLocaliser::kRadius + 1;    // rows -5..5 with 2 bins a cell
 constexpr int kMaxStarts = GridLocaliser::kRadius + 2;  // start cells -5..6
-constexpr int16_t kUnknownAhead = -32768;               // an unknown cell comes before any wall
+constexpr int16_t kUnknownBase = -20000;  // kUnknownBase + j: the first unknown cell, j, comes before any wall
 constexpr int16_t kNoWall = 32767;                      // free cells as far as the beam reaches
 
 // The cost of the reading for each true range, computed when first asked for: a reading meets a few dozen.
@@ -85,7 +85,7 @@ void findWalls(const RoomGrid& map, Cell believed, const BeamFrame& f, int16_t (
     for (int32_t j = horizon; j >= f.jLow; --j) {
       const CellState state = map.at(offset(believed, ax * j + rx * row, ay * j + ry * row));
       if (state == CellState::Occupied) ahead = static_cast<int16_t>(j);
-      if (state == CellState::Unknown) ahead = kUnknownAhead;
+      if (state == CellState::Unknown) ahead = static_cast<int16_t>(kUnknownBase + j);
       if (j <= f.jHigh) wall[row + f.rows][j - f.jLow] = ahead;
     }
   }
@@ -104,8 +104,8 @@ void spreadOverWindow(const uint8_t (*rowCost)[kSide], const int8_t* row, bool a
   }
 }
 
-// The reading's cost for each position of the window (a layer, [y * kSide + x]) into `add`, less the least when
-// every position is informed (0 where uninformed); returns how many are informed.
+// The reading's cost for each position of the window (a layer, [y * kSide + x]) into `add`, less the least of them;
+// returns how many positions it weighed (all).
 int readingCosts(const RoomGrid& map, Cell believed, const BeamFrame& f, const GridLocaliserParams& p,
                  const BeamModel& model, int16_t readingCm, uint8_t* add) {
   int16_t wall[kMaxRows][kMaxStarts];
@@ -122,32 +122,32 @@ int readingCosts(const RoomGrid& map, Cell believed, const BeamFrame& f, const G
   // The reading's cost for each (row, index along): the bins of a row share its walls.
   CostCache costs(model, readingCm);
   uint8_t rowCost[kMaxRows][kSide];
-  int informedInRow[kMaxRows] = {};
   uint8_t least = 255;
   for (int r = 0; r <= 2 * f.rows; ++r) {
     for (int i = 0; i < kSide; ++i) {
       const int16_t w = wall[r][start[i]];
-      rowCost[r][i] = 0;
-      if (w == kUnknownAhead) continue;
+      const bool unknown = w < kUnknownBase + 1000;
       int16_t trueCm = BeamModel::kNothing;
       if (w != kNoWall) {
-        const int32_t mm = w * f.cell - f.half - uMm[i];  // to the wall cell's near face; < 0: the face is in the wall
+        // To the near face of the wall cell, or of the first unknown cell; < 0: the face is in that cell.
+        const int32_t mm = (unknown ? w - kUnknownBase : w) * f.cell - f.half - uMm[i];
         if (mm < f.reachMm) trueCm = static_cast<int16_t>(mm < 0 ? 0 : (mm + 5) / 10);
+      }
+      // Beyond an unknown cell the wall may be anywhere, or nowhere in reach: the reading's best explanation that
+      // the known free cells before it allow (an echo from inside them is what tells).
+      if (unknown && trueCm != BeamModel::kNothing) {
+        if (readingCm == BeamModel::kNoEcho) trueCm = BeamModel::kNothing;
+        else if (readingCm > trueCm) trueCm = readingCm;
       }
       rowCost[r][i] = costs.relative(trueCm);
       least = rowCost[r][i] < least ? rowCost[r][i] : least;
-      ++informedInRow[r];
     }
   }
-  int informed = 0;
-  for (int i = 0; i < kSide; ++i) informed += informedInRow[row[i]];
-  if (informed == kSide * kSide) {
-    for (int r = 0; r <= 2 * f.rows; ++r) {
-      for (uint8_t& c : rowCost[r]) c = static_cast<uint8_t>(c - least);
-    }
+  for (int r = 0; r <= 2 * f.rows; ++r) {
+    for (uint8_t& c : rowCost[r]) c = static_cast<uint8_t>(c - least);
   }
   spreadOverWindow(rowCost, row, !isVertical(f.axis), add);
-  return informed;
+  return kSide * kSide;
 }
 
 }  // namespace
@@ -155,11 +155,10 @@ int readingCosts(const RoomGrid& map, Cell believed, const BeamFrame& f, const G
 int GridLocaliser::measure(const RoomGrid& map, Cell believed, Dir facing, Sensor s, int16_t readingCm) {
   const BeamFrame f = frameFor(params_, sensorDir(facing, s), model_.params().limitCm * 10);
   uint32_t addWords[kLayerWords] = {};
-  const int informed = readingCosts(map, believed, f, params_, model_, readingCm, reinterpret_cast<uint8_t*>(addWords));
-  if (informed == 0) return 0;
+  const int weighed = readingCosts(map, believed, f, params_, model_, readingCm, reinterpret_cast<uint8_t*>(addWords));
   for (int i = 0; i < kLayerWords; ++i) readings_[i] = saturatingAdd(readings_[i], addWords[i]);
   if (cost(watchHeading_, watchIndex_) > kSlack) normalise();
-  return informed;
+  return weighed;
 }
 
 void GridLocaliser::fold() {

@@ -164,23 +164,33 @@ TEST(GridLocaliser, RebasesOnlyWhenConfidentlyInAnotherCell) {
   EXPECT_FALSE(loc.rebase().needed);
 }
 
-TEST(GridLocaliser, AReadingAgainstUnknownCellsChangesNothing) {
+TEST(GridLocaliser, AnEchoFromBeyondTheKnownFreeCellsTellsOnlyWhereItCannotComeFrom) {
+  // Free around the believed cell (0, 0), unknown beyond: looking north the first unknown cell's near face is 24 cm
+  // from the sensor at the cell's centre. An echo at 40 cm may come from anything beyond it: no position that
+  // looks into the unknown within 40 cm is less likely than another. From 20 cm further south the unknown cell's
+  // face is 44 cm away, so the echo would come from a free cell: those positions cost more.
   test::GridFixture f;
-  f.draw({"...", "...", "..."}, 1, 1);  // free around the believed cell (0, 0), unknown beyond
+  f.draw({"...", "...", "..."}, 1, 1);
   GridLocaliser loc;
   loc.reset(150, 35);
   std::vector<uint8_t> before;
-  for (int h = -2; h <= 2; ++h)
-    for (int y = -10; y <= 10; ++y)
-      for (int x = -10; x <= 10; ++x) before.push_back(loc.at(x, y, h));
-  for (const Sensor s : {Sensor::Front, Sensor::Right, Sensor::Back, Sensor::Left}) {
-    EXPECT_EQ(loc.measure(f.grid(), Cell{0, 0}, Dir::North, s, 40), 0);
-    EXPECT_EQ(loc.measure(f.grid(), Cell{0, 0}, Dir::North, s, BeamModel::kNoEcho), 0);
-  }
+  for (int y = -10; y <= 10; ++y) before.push_back(loc.at(0, y, 0));
+  loc.measure(f.grid(), Cell{0, 0}, Dir::North, Sensor::Front, 40);
+  for (int y = -3; y <= 10; ++y) EXPECT_EQ(loc.at(0, y, 0), before[y + 10]) << y;  // face of the unknown <= 39 cm
+  for (int y = -7; y <= -4; ++y) EXPECT_GT(loc.at(0, y, 0), before[y + 10] + 16) << y;  // 44..59 cm: 2 nats more
+  // Further south the sensor itself stands in the unknown (its face past the free cells' edge): nothing tells.
+  for (int y = -10; y <= -8; ++y) EXPECT_EQ(loc.at(0, y, 0), before[y + 10]) << y;
+  // No echo at all: the unknown beyond may hold nothing in reach, so no position is less likely than another.
+  GridLocaliser blind;
+  blind.reset(150, 35);
+  std::vector<uint8_t> all;
+  for (int y = -10; y <= 10; ++y)
+    for (int x = -10; x <= 10; ++x) all.push_back(blind.at(x, y, 0));
+  for (const Sensor s : {Sensor::Front, Sensor::Right, Sensor::Back, Sensor::Left})
+    blind.measure(f.grid(), Cell{0, 0}, Dir::North, s, BeamModel::kNoEcho);
   size_t i = 0;
-  for (int h = -2; h <= 2; ++h)
-    for (int y = -10; y <= 10; ++y)
-      for (int x = -10; x <= 10; ++x) EXPECT_EQ(loc.at(x, y, h), before[i++]);
+  for (int y = -10; y <= 10; ++y)
+    for (int x = -10; x <= 10; ++x) EXPECT_EQ(blind.at(x, y, 0), all[i++]) << x << "," << y;
 }
 
 TEST(GridLocaliser, ManyContradictoryUpdatesStayNormalised) {
