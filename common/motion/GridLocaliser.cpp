@@ -1,6 +1,7 @@
 #include "common/motion/GridLocaliser.hpp"
 
 #include "common/check/Check.hpp"
+#include "common/math/IntSqrt.hpp"
 
 namespace nxtmap {
 namespace {
@@ -24,21 +25,6 @@ void minConvolve(uint8_t* first, int stride, int n, uint8_t c1, uint8_t c2) {
     out[i] = static_cast<uint8_t>(best);
   }
   for (int i = 0; i < n; ++i) first[i * stride] = out[i];
-}
-
-uint32_t isqrt(uint64_t v) {
-  uint64_t r = 0, bit = uint64_t{1} << 62;
-  while (bit > v) bit >>= 2;
-  while (bit != 0) {
-    if (v >= r + bit) {
-      v -= r + bit;
-      r = (r >> 1) + bit;
-    } else {
-      r >>= 1;
-    }
-    bit >>= 2;
-  }
-  return static_cast<uint32_t>(r);
 }
 
 }  // namespace

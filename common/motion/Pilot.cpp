@@ -1,27 +1,12 @@
 #include "common/motion/Pilot.hpp"
 
 #include "common/check/Check.hpp"
+#include "common/math/IntSqrt.hpp"
 
 namespace nxtmap {
 namespace {
 constexpr int32_t abs32(int32_t v) { return v < 0 ? -v : v; }
 constexpr int32_t clamp32(int32_t v, int32_t lim) { return v < -lim ? -lim : (v > lim ? lim : v); }
-// Integer square root of a non-negative 64-bit value.
-int64_t isqrt(int64_t v) {
-  int64_t r = 0;
-  int64_t bit = int64_t{1} << 62;
-  while (bit > v) bit >>= 2;
-  while (bit != 0) {
-    if (v >= r + bit) {
-      v -= r + bit;
-      r = (r >> 1) + bit;
-    } else {
-      r >>= 1;
-    }
-    bit >>= 2;
-  }
-  return r;
-}
 constexpr uint8_t bitOf(Dir d) { return static_cast<uint8_t>(1u << static_cast<int>(d)); }
 // Cells out to which a wall is read for the pose: the mapping range's, or farther (PilotConfig::poseRangeCm).
 int16_t poseCellsFor(const RangeGeometry& g, int16_t poseRangeCm) {
@@ -139,7 +124,7 @@ void Pilot::observeSide(Dir d, int32_t rangeMm) {
     const int32_t moved = right ? m.rangeMm - rangeMm : rangeMm - m.rangeMm;
     const int32_t error = static_cast<int32_t>(static_cast<int64_t>(moved - (rightMm_ - m.rightMm)) * 1000 / base);
     // A heading known this badly may show a larger slope than a straight wall's (3 sigma).
-    const int32_t uncertain = 3 * static_cast<int32_t>(isqrt(tracker_.thetaVariance()));
+    const int32_t uncertain = 3 * static_cast<int32_t>(isqrt(static_cast<uint64_t>(tracker_.thetaVariance())));
     const int32_t slopeLimit = uncertain > config_.maxSideSlopeMrad ? uncertain : config_.maxSideSlopeMrad;
     if (abs32(error) <= slopeLimit) {
       const int64_t r = tracker_.readingVariance();
@@ -342,7 +327,7 @@ DriveAction Pilot::driveToCentre() {
   const int64_t t = tracker_.thetaMrad();
   int64_t along = tf + tr * t / 1000 - tf * t * t / 2000000;
   if (along * pending_.amount < 0) along = 0;
-  const int64_t length = isqrt(tf * tf + tr * tr);
+  const int64_t length = static_cast<int64_t>(isqrt(static_cast<uint64_t>(tf * tf + tr * tr)));
   if (along > length) along = length;
   if (along < -length) along = -length;
   phase_ = Phase::Drive;

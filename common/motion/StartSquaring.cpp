@@ -6,6 +6,12 @@ namespace nxtmap {
 namespace {
 
 constexpr int32_t abs32(int32_t v) { return v < 0 ? -v : v; }
+// An angle (mrad) brought into (-pi, pi].
+int32_t withinHalfTurn(int32_t mrad) {
+  while (mrad > 2 * WallDirection::kQuarterMrad) mrad -= 4 * WallDirection::kQuarterMrad;
+  while (mrad <= -2 * WallDirection::kQuarterMrad) mrad += 4 * WallDirection::kQuarterMrad;
+  return mrad;
+}
 
 // A reading's range for the sweep: an echo within the trusted range, or one beyond it the samples agree
 // on (RangeReading::cm of TooFar); 0 for no echo, too near or inconsistent.
@@ -54,13 +60,8 @@ DriveAction StartSquaring::readNext() {
 
 void StartSquaring::noteEcho(Sensor s, int16_t cm) {
   if (cm < approachFromCm_ || (nearest_.seen && cm >= nearest_.cm)) return;
-  int32_t mrad = headingMrad_ + static_cast<int32_t>(s) * WallDirection::kQuarterMrad;
-  while (mrad > 2 * WallDirection::kQuarterMrad) mrad -= 4 * WallDirection::kQuarterMrad;
-  while (mrad <= -2 * WallDirection::kQuarterMrad) mrad += 4 * WallDirection::kQuarterMrad;
-  int32_t off = mrad - avoidMrad_;
-  while (off > 2 * WallDirection::kQuarterMrad) off -= 4 * WallDirection::kQuarterMrad;
-  while (off <= -2 * WallDirection::kQuarterMrad) off += 4 * WallDirection::kQuarterMrad;
-  if (avoiding_ && abs32(off) < 2 * WallDirection::kQuarterMrad / 3) return;
+  const int32_t mrad = withinHalfTurn(headingMrad_ + static_cast<int32_t>(s) * WallDirection::kQuarterMrad);
+  if (avoiding_ && abs32(withinHalfTurn(mrad - avoidMrad_)) < 2 * WallDirection::kQuarterMrad / 3) return;
   nearest_ = Echo{true, mrad, cm};
 }
 

@@ -10,20 +10,12 @@
 #include "common/explore/ExplorerStorage.hpp"
 #include "common/explore/FrontierExplorer.hpp"
 #include "common/motion/Pilot.hpp"
+#include "tests/common/PilotRoomRig.hpp"
 
 namespace nxtmap {
 namespace {
 
-struct Rig {
-  using Storage = ExplorerStorage<64, 64, 1024>;
-  explicit Rig(const PilotConfig& c = PilotConfig{}) : pilot(explorer, c) {}
-  std::unique_ptr<Storage> storage = std::make_unique<Storage>();
-  MapLayers map{storage->map.view(), Storage::kWidth(), Storage::kHeight()};
-  TravelPlanner planner{storage->travel.view(), Storage::kWidth(), Storage::kHeight()};
-  ExplorerConfig config{};
-  FrontierExplorer explorer{map, planner, config};
-  Pilot pilot;
-};
+using pilotrig::Rig;
 
 bool isQuarter(const DriveAction& a) { return a.kind == DriveAction::Kind::Rotate && std::abs(a.value) > 700; }
 
