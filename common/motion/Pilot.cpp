@@ -15,16 +15,21 @@ int16_t poseCellsFor(const RangeGeometry& g, int16_t poseRangeCm) {
   far.maxCm = poseRangeCm;
   return far.hitCells();
 }
+// The tracker learns the turn error beyond the one the pilot already corrects every rotation by.
+WheelCalibration trackerWheels(WheelCalibration w) {
+  w.turnPpm = 0;
+  return w;
+}
 }  // namespace
 
 Pilot::Pilot(Explorer& explorer, const PilotConfig& config)
     : explorer_(explorer),
       config_(config),
-      tracker_(config.noise),
+      tracker_(config.noise, trackerWheels(config.wheels)),
 #ifndef NXTMAP_NO_START_SQUARING
       squaring_(config.squareSweepMrad, config.squareStepMrad),
       calibration_(squaring_, config.calibrateTurns),
-      turnErrorPpm_(config.turnErrorPpm),
+      turnErrorPpm_(config.wheels.turnPpm),
 #endif
       cellMm_(static_cast<int32_t>(explorer.config().geometry.cellCm) * 10),
       poseCells_(poseCellsFor(explorer.config().geometry, config.poseRangeCm)) {
@@ -36,10 +41,15 @@ Counters Pilot::counters() const {
   c.rawSamples += poseSamples_;
   c.correctionMrad += correctionMrad_;
 #ifndef NXTMAP_NO_START_SQUARING
-  const bool calibrated = config_.calibrateTurns > 0;
-  c.sensorRequests += calibrated ? calibration_.readings() : squaring_.readings();
-  c.rawSamples += calibrated ? calibration_.samples() : squaring_.samples();
-  c.correctionMrad += calibrated ? calibration_.turnedMrad() : squaring_.turnedMrad();
+  c.sensorRequests += sweepReads_;
+  c.rawSamples += sweepSamples_;
+  c.correctionMrad += sweepMrad_;
+  if (phase_ == Phase::Square) {  // the sweep in progress
+    const bool calibrating = config_.calibrateTurns > 0 && !calibration_.finished();
+    c.sensorRequests += calibrating ? calibration_.readings() : squaring_.readings();
+    c.rawSamples += calibrating ? calibration_.samples() : squaring_.samples();
+    c.correctionMrad += calibrating ? calibration_.turnedMrad() : squaring_.turnedMrad();
+  }
   c.cellsMoved += approachCells_;
 #endif
   return c;
@@ -306,7 +316,8 @@ DriveAction Pilot::beginMove() {
   const bool offLine = abs32(tr) > config_.steerAboveMm;
   const int32_t want =
       offLine ? clamp32(static_cast<int32_t>(static_cast<int64_t>(tr) * 1000 / tf), config_.maxSteerMrad) : 0;
-  const int32_t turn = want - tracker_.thetaMrad();
+  // Aimed so that the drift's curve (learnt, PoseTracker) ends the drive on the line, not beside it.
+  const int32_t turn = want - tracker_.thetaMrad() - tracker_.driftMrad(tf) / 2;
   if (abs32(turn) >= config_.minRotateMrad) {
     phase_ = Phase::Steer;
     commandMrad_ = turn;

@@ -62,9 +62,11 @@ struct PilotConfig {
   // With the sweep on: first measure how far the turns are off (TurnCalibration, this many whole turns
   // between two sweeps; 0: no calibration) and correct every turn by it for the rest of the run.
   uint8_t calibrateTurns = 0;
-  // The turns' error known from before (actual / commanded - 1, ppm): every rotation is commanded
-  // divided by (1 + e) and what the encoders report multiplied by it. A calibration adds what it measures.
-  int32_t turnErrorPpm = 0;
+  // What the wheels' systematic errors are known to be (from a calibration before, a room before; the
+  // defaults: an uncalibrated robot's). Every rotation is commanded divided by (1 + turn error) and what the
+  // encoders report multiplied by it; the tracker predicts the drift and steering takes it out. Both are
+  // learnt further from the walls as the robot goes (PoseTracker), and a turn calibration adds what it measures.
+  WheelCalibration wheels{};
   // A quarter turn whose encoders count this much (mrad) short of what was told has stalled (the body met
   // something): the robot turns back by what it turned and the explorer hears that its way is blocked; a
   // levelling rotation that stalls is not tried again until the robot has moved. (Not in the RAM-run
@@ -119,10 +121,14 @@ class Pilot {
 #ifndef NXTMAP_NO_START_SQUARING
   const StartSquaring& squaring() const { return squaring_; }
   const TurnCalibration& calibration() const { return calibration_; }
-  // The turns' error the pilot corrects by (ppm, see PilotConfig::turnErrorPpm).
+  // The turns' error the pilot corrects by (ppm, see PilotConfig::wheels).
   int32_t turnErrorPpm() const { return turnErrorPpm_; }
+  // What the wheels are now believed to do (the turn error corrected by and the drift learnt): for the
+  // next run, the next room, the brick's store.
+  WheelCalibration wheels() const;
 #else
   int32_t turnErrorPpm() const { return 0; }
+  WheelCalibration wheels() const { return config_.wheels; }
 #endif
   // The explorer's counters plus the pilot's own pose readings and correction rotations.
   Counters counters() const;
@@ -151,7 +157,8 @@ class Pilot {
   DriveAction startExplorer(int64_t headingVarianceMrad2);
   DriveAction square(const DriveEvent& e);  // the start's sweep (Phase::Square)
   DriveAction snap(const DriveEvent& e);    // once square, the cell's lattice laid on the nearest walls
-  DriveAction approach(const DriveEvent& e);  // Phase::Approach: towards the nearest echo, back, sweep again
+  DriveAction approach(const DriveEvent& e);
+  void approachIfFar();  // after a sweep that saw no straight wall: Phase::Approach when there is one to take  // Phase::Approach: towards the nearest echo, back, sweep again
   DriveAction begin(const Action& a);
 #ifndef NXTMAP_NO_START_SQUARING
   DriveAction turnStalled(const DriveEvent& e);  // Phase::Turn's rotation stalled: turn back
@@ -187,7 +194,7 @@ class Pilot {
 #ifndef NXTMAP_NO_START_SQUARING  // the RAM-run firmware image has no room for the sweep, the
   StartSquaring squaring_;        // calibration and the turn correction (PilotConfig's are ignored there)
   TurnCalibration calibration_;
-  int32_t turnErrorPpm_;  // see PilotConfig::turnErrorPpm
+  int32_t turnErrorPpm_;  // the turn error every rotation is corrected by, ppm (see PilotConfig::wheels)
   FaceLines faces_;  // the learnt faces of the walls read for the pose (faces anywhere only)
   // Phase::Snap: per axis (0 across the start heading's columns, 1 along its rows) the nearest wall's
   // distance from the robot's centre (mm, 0 = none yet) and the offset from the cell centre that puts its
@@ -200,6 +207,8 @@ class Pilot {
   uint8_t approached_ = 0;  // approaches made
   int32_t approachTurnMrad_ = 0, approachMm_ = 0;
   uint32_t approachCells_ = 0;  // driven, whole cells (for the time counted)
+  // The finished sweeps' (and calibration's) readings, raw samples and rotation (mrad), for the counters.
+  uint32_t sweepReads_ = 0, sweepSamples_ = 0, sweepMrad_ = 0;
 #endif
   Pose startPose_{};  // where the explorer starts once the robot is square
   int32_t cellMm_;

@@ -3,6 +3,10 @@
 #include "common/motion/Pilot.hpp"
 
 namespace nxtmap {
+namespace {
+// How well a turn calibration measures the turn error (1 sigma, ppm; TurnCalibration: about 0.2 %).
+constexpr int64_t kCalibratedTurnPpm = 3000;
+}  // namespace
 
 DriveAction Pilot::startExplorer(int64_t headingVarianceMrad2) {
   tracker_.reset(headingVarianceMrad2);
@@ -20,26 +24,27 @@ DriveAction Pilot::square(const DriveEvent& e) {
   NXTMAP_CHECK(false);  // never in Phase::Square without the sweep
   return DriveAction::done();
 #else
-  if (config_.calibrateTurns > 0) {
+  if (config_.calibrateTurns > 0 && !calibration_.finished()) {
     const DriveAction a = calibration_.step(e);
     if (!calibration_.finished()) return a;
-    if (calibration_.found()) turnErrorPpm_ += calibration_.errorPpm();
+    sweepReads_ += calibration_.readings();
+    sweepSamples_ += calibration_.samples();
+    sweepMrad_ += calibration_.turnedMrad();
+    if (calibration_.found()) {
+      turnErrorPpm_ += calibration_.errorPpm();
+      tracker_.knowTurn(kCalibratedTurnPpm * kCalibratedTurnPpm);
+    } else {
+        approachIfFar();  // the calibration's first sweep saw no straight wall: as below
+      if (phase_ == Phase::Approach) return DriveAction::rotate(commandMrad_);
+    }
   } else {
     const DriveAction a = squaring_.step(e);
     if (!squaring_.finished()) return a;
-    const StartSquaring::Echo& n = squaring_.nearestEcho();
-    const int32_t driveCm = n.cm - config_.approachCm;
-    if (!squaring_.result().found && approached_ < config_.approaches && config_.approachCm > 0 && n.seen &&
-        driveCm >= 20) {
-      ++approached_;  // towards the nearest echo (the sweep ended at its zero, off by the residual)
-      phase_ = Phase::Approach;
-      approachStep_ = 0;
-      approachMm_ = 10 * (driveCm < config_.approachMaxCm ? driveCm : config_.approachMaxCm);
-      commandMrad_ = n.mrad - squaring_.residualMrad();
-      squaring_.avoid(n.mrad);
-      correctionMrad_ += static_cast<uint32_t>(commandMrad_ < 0 ? -commandMrad_ : commandMrad_);
-      return DriveAction::rotate(commandMrad_);
-    }
+    sweepReads_ += squaring_.readings();
+    sweepSamples_ += squaring_.samples();
+    sweepMrad_ += squaring_.turnedMrad();
+    approachIfFar();
+    if (phase_ == Phase::Approach) return DriveAction::rotate(commandMrad_);
   }
   // Square (or, with no straight wall seen, as set down): now where the walls are across and along.
   phase_ = Phase::Snap;
@@ -48,6 +53,23 @@ DriveAction Pilot::square(const DriveEvent& e) {
 }
 
 #ifndef NXTMAP_NO_START_SQUARING
+void Pilot::approachIfFar() {
+  // No straight wall within the sweep's reach: towards the nearest echo (the sweep ended at its zero, off by
+  // the residual), PilotConfig::approachCm.
+  const StartSquaring::Echo& n = squaring_.nearestEcho();
+  const int32_t driveCm = n.cm - config_.approachCm;
+  if (squaring_.result().found || approached_ >= config_.approaches || config_.approachCm <= 0 || !n.seen ||
+      driveCm < 20)
+    return;
+  ++approached_;
+  phase_ = Phase::Approach;
+  approachStep_ = 0;
+  approachMm_ = 10 * (driveCm < config_.approachMaxCm ? driveCm : config_.approachMaxCm);
+  commandMrad_ = n.mrad - squaring_.residualMrad();
+  squaring_.avoid(n.mrad);
+  correctionMrad_ += static_cast<uint32_t>(commandMrad_ < 0 ? -commandMrad_ : commandMrad_);
+}
+
 DriveAction Pilot::snap(const DriveEvent& e) {
   NXTMAP_CHECK(e.kind == DriveEvent::Kind::Range);
   const Dir d = sensorDir(startPose_.heading, e.sensor);
@@ -93,12 +115,22 @@ DriveAction Pilot::approach(const DriveEvent& e) {
 }
 #endif
 
+#ifndef NXTMAP_NO_START_SQUARING
+WheelCalibration Pilot::wheels() const {
+  WheelCalibration w = tracker_.wheels();
+  w.turnPpm += turnErrorPpm_;
+  return w;
+}
+#endif
+
 DriveAction Pilot::step(const DriveEvent& e) {
 #ifdef NXTMAP_NO_START_SQUARING
   return stepCorrected(e);
 #else
   // The wheels turn by (1 + e) times what they are told, and the encoders count what was told: the
-  // pilot thinks in true angles and the wheels are told and heard through the correction.
+  // pilot thinks in true angles and the wheels are told and heard through the correction, which takes
+  // in what the tracker has learnt of e so far.
+  turnErrorPpm_ += tracker_.takeTurnPpm();
   if (turnErrorPpm_ == 0) return stepCorrected(e);
   const int64_t scale = 1000000 + turnErrorPpm_;
   DriveEvent heard = e;

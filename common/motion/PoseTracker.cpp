@@ -9,29 +9,109 @@ constexpr int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 constexpr int64_t divRound(int64_t n, int64_t d) { return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d); }
 }  // namespace
 
+PoseTracker::PoseTracker(const PoseNoise& noise, const WheelCalibration& wheels) : noise_(noise) {
+#ifndef NXTMAP_NO_START_SQUARING
+  s_[kDrift] = divRound(wheels.driftUradPerM, 100);
+  p_[kDrift][kDrift] = divRound(wheels.driftVariance, 10000);
+  s_[kTurn] = divRound(wheels.turnPpm, 10);
+  p_[kTurn][kTurn] = divRound(wheels.turnVariance, 100);
+#else
+  (void)wheels;
+#endif
+}
+
 void PoseTracker::reset(int64_t thetaVarianceMrad2) {
-  x_ = y_ = t_ = 0;
+  s_[0] = s_[1] = s_[2] = 0;
   residualUrad_ = 0;
-  for (auto& row : p_)
-    for (auto& v : row) v = 0;
+  for (int i = 0; i < kStates; ++i)  // the pose is forgotten, what the wheels do is not
+    for (int j = 0; j < kStates; ++j)
+      if (i < 3 || j < 3) p_[i][j] = 0;
   refusedWide_[0] = refusedWide_[1] = 0;
   p_[2][2] = thetaVarianceMrad2 > 0 ? thetaVarianceMrad2 : 0;
 }
 
+WheelCalibration PoseTracker::wheels() const {
+  WheelCalibration w;
+#ifndef NXTMAP_NO_START_SQUARING
+  w.driftUradPerM = static_cast<int32_t>(s_[kDrift] * 100);
+  w.driftVariance = p_[kDrift][kDrift] * 10000;
+  w.turnPpm = static_cast<int32_t>(s_[kTurn] * 10);
+  w.turnVariance = p_[kTurn][kTurn] * 100;
+#endif
+  return w;
+}
+
+int32_t PoseTracker::takeTurnPpm() {
+#ifndef NXTMAP_NO_START_SQUARING
+  const int32_t ppm = static_cast<int32_t>(s_[kTurn] * 10);
+  s_[kTurn] = 0;
+  return ppm;
+#else
+  return 0;
+#endif
+}
+
+void PoseTracker::knowTurn(int64_t variancePpm2) {
+#ifndef NXTMAP_NO_START_SQUARING
+  s_[kTurn] = 0;
+  for (int i = 0; i < kStates; ++i) p_[i][kTurn] = p_[kTurn][i] = 0;
+  p_[kTurn][kTurn] = divRound(variancePpm2, 100);
+#else
+  (void)variancePpm2;
+#endif
+}
+
+int32_t PoseTracker::driftMrad(int32_t mm) const {
+#ifndef NXTMAP_NO_START_SQUARING
+  return static_cast<int32_t>(divRound(s_[kDrift] * mm, 10000));
+#else
+  (void)mm;
+  return 0;
+#endif
+}
+
 void PoseTracker::place(int32_t xMm, int32_t yMm) {
-  x_ = xMm;
-  y_ = yMm;
+  s_[0] = xMm;
+  s_[1] = yMm;
   if (xMm != 0) p_[0][0] += readingVariance();
   if (yMm != 0) p_[1][1] += readingVariance();
 }
 
-void PoseTracker::rotated(int32_t mrad, int quarters) {
-  // The heading error changes by what was turned minus what is believed, kept to the microradian
-  // so that thousands of quarter turns do not add up rounding.
-  const int64_t delta = static_cast<int64_t>(mrad) * 1000 - quarters * kQuarterUrad + residualUrad_;
+void PoseTracker::turnHeading(int64_t urad) {
+  const int64_t delta = urad + residualUrad_;
   const int64_t whole = divRound(delta, 1000);
-  t_ += whole;
+  s_[2] += whole;
   residualUrad_ = delta - whole * 1000;
+}
+
+void PoseTracker::propagate(const int64_t (&f)[kStates][kStates]) {
+  int64_t m[kStates][kStates];  // F P, times kScale
+  for (int i = 0; i < kStates; ++i)
+    for (int j = 0; j < kStates; ++j) {
+      int64_t sum = 0;
+      for (int k = 0; k < kStates; ++k) sum += f[i][k] * p_[k][j];
+      m[i][j] = sum;
+    }
+  for (int i = 0; i < kStates; ++i)
+    for (int j = 0; j <= i; ++j) {
+      int64_t sum = 0;
+      for (int k = 0; k < kStates; ++k) sum += m[i][k] * f[j][k];
+      p_[i][j] = p_[j][i] = divRound(sum, kScale * kScale);
+    }
+}
+
+void PoseTracker::rotated(int32_t mrad, int quarters) {
+  // The heading error changes by what was turned (with the turn error learnt) minus what is believed,
+  // kept to the microradian so that thousands of quarter turns do not add up rounding.
+  int64_t urad = static_cast<int64_t>(mrad) * 1000 - quarters * kQuarterUrad;
+#ifndef NXTMAP_NO_START_SQUARING
+  urad += divRound(static_cast<int64_t>(mrad) * s_[kTurn], 100);  // turn state: 10 ppm
+  int64_t f[kStates][kStates] = {};
+  for (int i = 0; i < kStates; ++i) f[i][i] = kScale;
+  f[2][kTurn] = divRound(static_cast<int64_t>(mrad) * kScale, 100000);
+  propagate(f);
+#endif
+  turnHeading(urad);
   // Turn error grows with the angle turned, with a floor for small corrections.
   int64_t scaled = abs64(mrad) * 1000 / kQuarterMrad;  // per mille of a quarter
   if (scaled < 250) scaled = 250;
@@ -40,47 +120,54 @@ void PoseTracker::rotated(int32_t mrad, int quarters) {
 }
 
 void PoseTracker::drove(int32_t mm, Dir heading) {
+  // In pieces of at most kPieceMm, so that the drift's curve and the products below stay small.
+  constexpr int32_t kPieceMm = 500;
+  while (mm > kPieceMm || mm < -kPieceMm) {
+    const int32_t piece = mm > 0 ? kPieceMm : -kPieceMm;
+    drovePiece(piece, heading);
+    mm -= piece;
+  }
+  drovePiece(mm, heading);
+}
+
+void PoseTracker::drovePiece(int32_t mm, Dir heading) {
   // Forward unit f and right unit r (clockwise of f) of the believed heading.
   const int64_t fx = dx(heading), fy = dy(heading);
   const Dir right = rotate(heading, 1);
-  const int64_t rx = dx(right), ry = dy(right);
-  // Displacement = mm * (f + theta/1000 * r).
-  const int64_t side = divRound(static_cast<int64_t>(mm) * t_, 1000);
-  x_ += mm * fx + side * rx;
-  y_ += mm * fy + side * ry;
-  // Covariance: F = I + a * e_theta in the position rows, a_i = mm * r_i / 1000.
-  const int64_t a[2] = {mm * rx, mm * ry};  // x1000
-  int64_t n[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) n[i][j] = p_[i][j];
-  for (int i = 0; i < 2; ++i) {
-    n[i][2] = p_[i][2] + divRound(a[i] * p_[2][2], 1000);
-    n[2][i] = n[i][2];
-  }
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j)
-      n[i][j] =
-          p_[i][j] + divRound(a[i] * p_[2][j] + a[j] * p_[i][2], 1000) + divRound(a[i] * a[j] * p_[2][2], 1000000);
+  const int64_t r[2] = {dx(right), dy(right)};
+  const int64_t m = mm;
+  // Displacement = mm * (f + theta/1000 * r), plus the drift's curve: drift * mm^2 / 2 across.
+  int64_t side = divRound(m * s_[2], 1000);
+  int64_t f[kStates][kStates] = {};
+  for (int i = 0; i < kStates; ++i) f[i][i] = kScale;
+  for (int i = 0; i < 2; ++i) f[i][2] = m * r[i] * kScale / 1000;
+#ifndef NXTMAP_NO_START_SQUARING
+  side += divRound(s_[kDrift] * m * m, 20000000);  // drift state: 0.1 mrad/m
+  for (int i = 0; i < 2; ++i) f[i][kDrift] = divRound(m * m * r[i] * kScale, 20000000);
+  f[2][kDrift] = divRound(m * kScale, 10000);
+  turnHeading(s_[kDrift] * m / 10);
+#endif
+  s_[0] += m * fx + side * r[0];
+  s_[1] += m * fy + side * r[1];
+  propagate(f);
   // Process noise: slip along the track, heading picked up per cell (100 mm nominal).
-  const int64_t slip = divRound(abs64(mm) * noise_.slipPerMille, 1000);
+  const int64_t slip = divRound(abs64(m) * noise_.slipPerMille, 1000);
   const int64_t slipVar = slip * slip;
-  n[0][0] += slipVar * fx * fx;
-  n[1][1] += slipVar * fy * fy;
-  const int64_t drift = divRound(noise_.driveMradPerCell * abs64(mm), 100);
-  n[2][2] += drift * drift;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) p_[i][j] = n[i][j];
+  p_[0][0] += slipVar * fx * fx;
+  p_[1][1] += slipVar * fy * fy;
+  const int64_t drift = divRound(noise_.driveMradPerCell * abs64(m), 100);
+  p_[2][2] += drift * drift;
 }
 
 void PoseTracker::rebase(Dir d, int cells, int32_t cellMm) {
-  x_ -= static_cast<int64_t>(dx(d)) * cells * cellMm;
-  y_ -= static_cast<int64_t>(dy(d)) * cells * cellMm;
+  s_[0] -= static_cast<int64_t>(dx(d)) * cells * cellMm;
+  s_[1] -= static_cast<int64_t>(dy(d)) * cells * cellMm;
 }
 
 bool PoseTracker::measure(Dir d, int32_t offsetMm, int32_t extraVarianceMm2, bool straightFace) {
   const int k = isVertical(d) ? 1 : 0;
   const int64_t s = isVertical(d) ? dy(d) : dx(d);  // +1 or -1
-  const int64_t predicted = s * (k == 0 ? x_ : y_);
+  const int64_t predicted = s * s_[k];
   const int64_t innovation = offsetMm - predicted;
   const int64_t r = static_cast<int64_t>(noise_.readingMm) * noise_.readingMm + extraVarianceMm2;
   int64_t spread = p_[k][k] + r;  // innovation variance, mm^2
@@ -100,33 +187,38 @@ bool PoseTracker::measure(Dir d, int32_t offsetMm, int32_t extraVarianceMm2, boo
     }
     if (p_[k][k] < innovation * innovation) p_[k][k] = innovation * innovation;
     spread = p_[k][k] + r;
+    refusedWide_[k] = 0;
+    update(k, s, innovation, spread, false);
+    return true;
   }
   refusedWide_[k] = 0;
-  // In the measured axis' sign convention the state component is s * state[k].
-  int64_t pk[3];
-  for (int i = 0; i < 3; ++i) pk[i] = p_[i][k];
-  int64_t* state[3] = {&x_, &y_, &t_};
-  for (int i = 0; i < 3; ++i) *state[i] += divRound(s * pk[i] * innovation, spread);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) p_[i][j] -= divRound(pk[i] * pk[j], spread);
-  ++accepted_;
+  update(k, s, innovation, spread, true);
   return true;
 }
 
+void PoseTracker::update(int k, int64_t sign, int64_t innovation, int64_t spread, bool teach) {
+  // In the measured sign convention the state component is sign * state[k]. A reading far from its
+  // prediction (beyond 2 sigma, or taken through the wide gate) corrects the pose but does not teach the
+  // wheels: they are only considered (Schmidt), so that one wall mistaken for another cannot bend what is
+  // learnt for the rest of the run.
+  const int learnt = teach && innovation * innovation <= 4 * spread ? kStates : 3;
+  int64_t pk[kStates];
+  for (int i = 0; i < kStates; ++i) pk[i] = p_[i][k];
+  for (int i = 0; i < learnt; ++i) s_[i] += divRound(sign * pk[i] * innovation, spread);
+  for (int i = 0; i < kStates; ++i)
+    for (int j = 0; j < kStates; ++j)
+      if (i < learnt || j < learnt) p_[i][j] -= divRound(pk[i] * pk[j], spread);
+  ++accepted_;
+}
+
 bool PoseTracker::measureHeading(int32_t thetaMrad, int32_t varianceMrad2) {
-  const int64_t innovation = thetaMrad - t_;
+  const int64_t innovation = thetaMrad - s_[2];
   const int64_t spread = p_[2][2] + varianceMrad2;  // mrad^2
   if (spread <= 0 || innovation * innovation > 9 * spread) {
     ++rejected_;
     return false;
   }
-  int64_t pk[3];
-  for (int i = 0; i < 3; ++i) pk[i] = p_[i][2];
-  int64_t* state[3] = {&x_, &y_, &t_};
-  for (int i = 0; i < 3; ++i) *state[i] += divRound(pk[i] * innovation, spread);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) p_[i][j] -= divRound(pk[i] * pk[j], spread);
-  ++accepted_;
+  update(2, 1, innovation, spread, true);
   return true;
 }
 

@@ -23,19 +23,53 @@ struct PoseNoise {
   bool confirmWide = true;
 };
 
+// What the wheels' systematic errors are believed to be (UMBmark's Ed and Eb), and how well: learnt by the
+// tracker from the walls, carried from run to run and room to room, kept on the brick. The defaults are an
+// uncalibrated NXT's magnitudes (docs/nxt-sonar-and-odometry.md: about 2 deg/m of drift, turns 2 % off).
+struct WheelCalibration {
+  // Heading change per metre driven forward (+ clockwise), microradians per metre (|.| < 200,000), and
+  // its variance ((urad/m)^2; 35,000 urad/m = 2 deg/m, 1 sigma).
+  int32_t driftUradPerM = 0;
+  int64_t driftVariance = 35000LL * 35000;
+  // How far turns are off (actual / commanded - 1, ppm, |.| < 100,000: + turns too far), and its
+  // variance (ppm^2; 20,000 ppm = 2 %, 1 sigma).
+  int32_t turnPpm = 0;
+  int64_t turnVariance = 20000LL * 20000;
+};
+
 // PoseTracker: a small Kalman filter, in integers, of where the robot really is relative to the
 // cell and heading the explorer believes in. State, in the explorer's frame:
 //   x, y   offset of the robot's centre from the believed cell's centre, mm (East, North);
-//   theta  actual heading minus the believed axis heading, mrad, + = clockwise.
-// Motion makes it uncertain; a reading of a wall the map already knows makes it certain again.
+//   theta  actual heading minus the believed axis heading, mrad, + = clockwise;
+// and, except in the RAM-run image (no room), the wheels' systematic errors (WheelCalibration):
+//   drift  heading change per metre driven forward, 0.1 mrad/m (a straight drive curves);
+//   turn   how far the turns are off beyond what the caller already corrects, 10 ppm.
+// Motion makes it uncertain; a reading of a wall the map already knows makes it certain again, and the
+// walls seen before and after turns and along runs teach it the drift and the turn error.
 // Small angles throughout (|theta| stays well under 0.3 rad): sin t = t, cos t = 1.
 class PoseTracker {
  public:
-  explicit PoseTracker(const PoseNoise& noise = PoseNoise{}) : noise_(noise) {}
+#ifdef NXTMAP_NO_START_SQUARING
+  static constexpr int kStates = 3;
+#else
+  static constexpr int kStates = 5;
+  static constexpr int kDrift = 3, kTurn = 4;  // the wheels' states' indices
+#endif
+
+  explicit PoseTracker(const PoseNoise& noise = PoseNoise{}, const WheelCalibration& wheels = WheelCalibration{});
 
   // Exactly at the centre and, to `thetaVarianceMrad2` (mrad^2; 0: exactly), on the axis (the start
-  // of a run; a robot handed over by another pilot keeps that pilot's heading uncertainty).
+  // of a run; a robot handed over by another pilot keeps that pilot's heading uncertainty). What was
+  // learnt of the wheels is kept.
   void reset(int64_t thetaVarianceMrad2 = 0);
+  // What is believed of the wheels: the drift the tracker predicts and learns; turnPpm is the part of the
+  // turn error the caller does not yet correct (see takeTurnPpm).
+  WheelCalibration wheels() const;
+  // Hands the learnt turn error (ppm) to the caller, who corrects every turn by it from now on: the
+  // tracker's own turn error becomes 0 (its variance stays). 0 in the RAM-run image.
+  int32_t takeTurnPpm();
+  // The turn error has just been measured (and handed to the caller) to this variance (ppm^2).
+  void knowTurn(int64_t variancePpm2);
   // The robot stands xMm east and yMm north of its cell's centre, known as well as one reading (after reset).
   void place(int32_t xMm, int32_t yMm);
 
@@ -57,23 +91,34 @@ class PoseTracker {
   int32_t readingVariance() const { return noise_.readingMm * noise_.readingMm; }
   int32_t gateMm() const { return noise_.gateMm; }
 
-  int32_t xMm() const { return static_cast<int32_t>(x_); }
-  int32_t yMm() const { return static_cast<int32_t>(y_); }
-  int32_t thetaMrad() const { return static_cast<int32_t>(t_); }
+  int32_t xMm() const { return static_cast<int32_t>(s_[0]); }
+  int32_t yMm() const { return static_cast<int32_t>(s_[1]); }
+  int32_t thetaMrad() const { return static_cast<int32_t>(s_[2]); }
   // Offset along d in mm (+ = towards d).
-  int32_t along(Dir d) const { return static_cast<int32_t>(dx(d) * x_ + dy(d) * y_); }
+  int32_t along(Dir d) const { return static_cast<int32_t>(dx(d) * s_[0] + dy(d) * s_[1]); }
   // Variance of the offset along d's axis (mm^2) and of theta (mrad^2).
   int64_t varianceAlong(Dir d) const { return isVertical(d) ? p_[1][1] : p_[0][0]; }
   int64_t thetaVariance() const { return p_[2][2]; }
+  // The predicted heading change of a drive of `mm` (mrad, + clockwise): the drift learnt.
+  int32_t driftMrad(int32_t mm) const;
   // Readings accepted and rejected by the gate.
   uint32_t accepted() const { return accepted_; }
   uint32_t rejected() const { return rejected_; }
 
  private:
+  // Motion by x' = F x: F's entries times kScale (identity: kScale), applied to the covariance.
+  static constexpr int64_t kScale = 10000;
+  void propagate(const int64_t (&f)[kStates][kStates]);
+  // The Kalman update by a measurement of state `k` times `sign`, with innovation and its variance;
+  // `teach`: it may also correct the wheels' states.
+  void update(int k, int64_t sign, int64_t innovation, int64_t spread, bool teach);
+  void turnHeading(int64_t urad);  // adds to theta, keeping what is below the mrad
+  void drovePiece(int32_t mm, Dir heading);
+
   PoseNoise noise_;
-  int64_t x_ = 0, y_ = 0, t_ = 0;  // mm, mm, mrad
-  int64_t residualUrad_ = 0;       // heading error below the mrad, microradians (|.| <= 500)
-  int64_t p_[3][3] = {};           // covariance: mm^2, mm*mrad, mrad^2
+  int64_t s_[kStates] = {};           // x mm, y mm, theta mrad[, drift 0.1 mrad/m, turn 10 ppm]
+  int64_t residualUrad_ = 0;          // heading error below the mrad, microradians (|.| <= 500)
+  int64_t p_[kStates][kStates] = {};  // covariance in the states' units
   uint32_t accepted_ = 0, rejected_ = 0;
   // Per axis (x, y): the sign (+1, -1) of the correction a refused straight face asked for, 0: none.
   int8_t refusedWide_[2] = {0, 0};

@@ -139,6 +139,21 @@ std::string calibrationLine(const mapping::MappingRun& run) {
   return out.str();
 }
 
+// What the pilot has learnt of the wheels (PoseTracker's drift and turn error), beside the simulated truth.
+std::string wheelsLine(const mapping::MappingRun& run) {
+  const WheelCalibration w = run.pilot().wheels();
+  const sim::WheelModel& truth = run.robot().wheels();
+  const auto signedNum = [](double v, int digits) { return (v >= 0 ? "+" : "") + report::formatNumber(v, digits); };
+  const double degPerRad = 180.0 / 3.141592653589793;
+  std::ostringstream out;
+  out << "wheels learnt    drift " << signedNum(w.driftUradPerM * 1e-6 * degPerRad, 2) << " deg/m (+-"
+      << report::formatNumber(std::sqrt(static_cast<double>(w.driftVariance)) * 1e-6 * degPerRad, 2) << ", true "
+      << signedNum(truth.systematicDriftRadPerM() * degPerRad, 2) << "), turns " << signedNum(w.turnPpm / 1e4, 2)
+      << " % (+-" << report::formatNumber(std::sqrt(static_cast<double>(w.turnVariance)) / 1e4, 2) << ", true "
+      << signedNum(truth.systematicTurnError() * 100.0, 2) << ")";
+  return out.str();
+}
+
 }  // namespace
 
 int runSim(const SimOptions& o) {
@@ -219,6 +234,7 @@ int runSim(const SimOptions& o) {
   out << "\n";
   if (run.config().squareAtStart) out << squareLine(run) << "\n";
   if (config.calibrateTurns > 0) out << calibrationLine(run) << "\n";
+  out << wheelsLine(run) << "\n";
   out << "end              " << endName(run.explorer().end())
       << (run.metGridEdge() && run.explorer().end() == ExplorerEnd::Complete ? " (up to the grid's edge)" : "") << "\n"
       << "time units       " << report::formatNumber(c.timeHalfUnits() / 2.0, 1) << "\n"

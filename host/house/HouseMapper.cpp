@@ -26,6 +26,7 @@ HouseConfig placedConfig(const sim::RobotPlacement& placed, HouseConfig c) {
 PilotConfig pilotFor(const HouseConfig& c) {
   PilotConfig p;
   p.correct = c.poseCorrection;
+  p.wheels = mapping::storedCalibration(c.noise.wheels);
   return p;
 }
 

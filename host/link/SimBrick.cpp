@@ -73,6 +73,7 @@ SimBrick::SimBrick(sim::RobotPlacement placed, const SimBrickConfig& config)
              [&] {
                PilotConfig p;
                p.correct = config_.run.poseCorrection;
+               p.wheels = mapping::storedCalibration(config_.run.noise.wheels);
                return p;
              }()),
       shadow_(packedBytes(stack_.map().grid().capacityWidth(), stack_.map().grid().capacityHeight(), 2)),
@@ -152,6 +153,7 @@ void SimBrick::startExploring() {
   restPose_ = pose();
   PilotConfig pilot;
   pilot.correct = config_.run.poseCorrection;
+  pilot.wheels = mapping::storedCalibration(config_.run.noise.wheels);
   pending_ = stack_.start(config_.run.strategy, pilot, restPose_);
   mode_ = stack_.finished() ? BrickMode::Done : BrickMode::Exploring;
 }

@@ -71,6 +71,7 @@ MappingRun::MappingRun(Setup setup, const RunConfig&)
   startMovedCm_ = setup.placed.startMovedCm;
   PilotConfig pilot;
   pilot.correct = config_.poseCorrection;
+  pilot.wheels = storedCalibration(config_.noise.wheels);
   if (config_.calibrateTurns > 0) config_.squareAtStart = true;
   if (config_.squareAtStart) pilot.squareSweepMrad = 1571;
   pilot.calibrateTurns = static_cast<uint8_t>(config_.calibrateTurns);

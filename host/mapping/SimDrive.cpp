@@ -29,6 +29,18 @@ int16_t sonarBlindCm(const sim::SonarNoise& sonar) {
   return static_cast<int16_t>(std::ceil(blind));
 }
 
+WheelCalibration storedCalibration(const sim::WheelNoise& wheels) {
+  // The floors: 0.1 deg/m of drift, 0.1 % of turn error (1 sigma).
+  constexpr double kFloorUradPerM = 1745.0, kFloorPpm = 1000.0;
+  const double drift =
+      std::max(kFloorUradPerM, sim::driftDegPerMetre(wheels.diameterRatioError, sim::kNxtTrackCm) * 17453.29);
+  const double turn = std::max(kFloorPpm, wheels.trackError * 1e6);
+  WheelCalibration w;
+  w.driftVariance = static_cast<int64_t>(std::llround(drift * drift));
+  w.turnVariance = static_cast<int64_t>(std::llround(turn * turn));
+  return w;
+}
+
 ExplorerConfig explorerConfigFor(const sim::World& world, const sim::RobotDescription& robot,
                                  const sim::SonarNoise& sonar, double minRangeM, double rangeM, double beamHalfAngleDeg,
                                  int blindCm, uint16_t searchSliceStates) {

@@ -7,9 +7,11 @@
 #include "common/explore/ExplorerConfig.hpp"
 #include "common/motion/DriveAction.hpp"
 #include "common/motion/DriveEvent.hpp"
+#include "common/motion/PoseTracker.hpp"
 #include "common/sensing/RangeGeometry.hpp"
 #include "host/sim/SimRobot.hpp"
 #include "host/sim/SonarNoise.hpp"
+#include "host/sim/WheelNoise.hpp"
 #include "host/sim/World.hpp"
 
 namespace nxtmap::mapping {
@@ -24,6 +26,11 @@ RangeGeometry sonarGeometryFor(const sim::World& world, double minRangeM, double
 // The sensor's blind zone as the robot knows its sonar (RangeGeometry::blindCm), whole cm: the near field
 // where the modelled sensor returns no echo at all (0: none, as the published model).
 int16_t sonarBlindCm(const sim::SonarNoise& sonar);
+
+// What a robot with these wheels holds in its store (PilotConfig::wheels): its systematic errors' sizes, not
+// their values or signs (a real robot knows them from its last calibration, to about that accuracy), as the
+// variances; the values 0. Wheels without systematic errors are stored as known to 0.1 deg/m and 0.1 %.
+WheelCalibration storedCalibration(const sim::WheelNoise& wheels);
 // The explorer's configuration for a simulated robot on `world`: its sonar geometry (beamHalfAngleDeg < 0:
 // the sonar's cone; blindCm < 0: the sonar's blind zone), its body's room to turn, and the search slices.
 ExplorerConfig explorerConfigFor(const sim::World& world, const sim::RobotDescription& robot,

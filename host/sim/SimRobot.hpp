@@ -74,6 +74,7 @@ class SimRobot {
   const RobotDescription& description() const { return robot_; }
   const NoiseProfile& noise() const { return noise_; }
   WheelModel& wheels() { return wheels_; }
+  const WheelModel& wheels() const { return wheels_; }
   uint64_t rawPings() const { return rawPings_; }  // ping() calls so far
 
  private:

@@ -38,6 +38,14 @@ WheelModel::WheelModel(const WheelNoise& noise, double wheelDiameterCm, double t
 
 double WheelModel::diameterRatio() const { return diameter_[1] / diameter_[0]; }
 
+double WheelModel::systematicTurnError() const {
+  return (diameter_[0] + diameter_[1]) / 2.0 / trackRatio_ - 1.0;  // as turnBy() turns
+}
+
+double WheelModel::systematicDriftRadPerM() const {
+  return (diameter_[0] - diameter_[1]) * 100.0 / trackCm();  // as straight() curves
+}
+
 double WheelModel::throughPlay(int wheel, double motorDeg) {
   const double half = noise_.backlashDeg / 2.0;
   if (half <= 0.0) return motorDeg;

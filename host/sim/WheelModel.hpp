@@ -49,6 +49,10 @@ class WheelModel {
   double cmPerMotorDeg() const { return cmPerDeg_; }  // nominal wheel arc per motor degree
   double diameterRatio() const;                       // this robot's Ed (right / left)
   double trackRatio() const { return trackRatio_; }   // this robot's Eb (actual / nominal)
+  // What this robot's wheels do systematically, in the units the pilot learns them in (WheelCalibration):
+  // actual / commanded turn - 1, and the heading change per metre driven forward (rad/m, + clockwise).
+  double systematicTurnError() const;
+  double systematicDriftRadPerM() const;
   const WheelNoise& noise() const { return noise_; }
 
  private:
