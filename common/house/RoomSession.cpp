@@ -149,6 +149,7 @@ DriveAction RoomSession::endRun(Outcome outcome) {
   // On the axis for what follows (dead-reckoned crossing steps, a new room, the next travel).
   const DriveAction level = pilot.levelling();
   headingVariance_ = pilot.handOverHeadingVariance();
+  pilot_.wheels = pilot.wheels();  // what this run learnt of the wheels, the next one starts from
   idlePose_ = stack_.explorer()->pose();
   if (outcome == Outcome::RoomMapped) confinement_.finish(stack_.map());
   pendingOutcome_ = outcome;

@@ -88,7 +88,7 @@ class RoomSession {
 
   ExplorerStack& stack_;
   RoomConfinement& confinement_;
-  PilotConfig pilot_;
+  PilotConfig pilot_;  // every run starts from it; its wheels follow what each run learnt (Pilot::wheels)
   Phase phase_ = Phase::Idle;
   Outcome outcome_ = Outcome::None;
   Outcome pendingOutcome_ = Outcome::None;  // while levelling

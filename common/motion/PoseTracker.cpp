@@ -206,8 +206,8 @@ void PoseTracker::update(int k, int64_t sign, int64_t innovation, int64_t spread
   for (int i = 0; i < kStates; ++i) pk[i] = p_[i][k];
   for (int i = 0; i < learnt; ++i) s_[i] += divRound(sign * pk[i] * innovation, spread);
   for (int i = 0; i < kStates; ++i)
-    for (int j = 0; j < kStates; ++j)
-      if (i < learnt || j < learnt) p_[i][j] -= divRound(pk[i] * pk[j], spread);
+    for (int j = 0; j <= i; ++j)
+      if (j < learnt) p_[i][j] = p_[j][i] = p_[i][j] - divRound(pk[i] * pk[j], spread);
   ++accepted_;
 }
 

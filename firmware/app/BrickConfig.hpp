@@ -21,6 +21,7 @@ struct BrickConfig {
   int16_t minCm = 5, maxCm = 100, mountCm = 0;
   int16_t faceMarginCm = 0;  // the published raster worlds: faces on cell edges
   bool turnNeedsRoom = false;  // a point
+  int16_t squareSweepMrad = 1571;  // set down square on a cell's centre, as the published runs
 #else
   MotionGeometry drive{};  // 56 mm wheels, 112 mm track, 200 mm cells
   int16_t minCm = 7;       // the LEGO sensor is unreliable closer than this
@@ -32,6 +33,9 @@ struct BrickConfig {
   // The 16 x 18 cm body sweeps 12 cm from its centre when it turns, more than half a cell: it turns only
   // where the four cells around it are known free (ExplorerConfig::turnNeedsRoom).
   bool turnNeedsRoom = true;
+  // Set down anyhow: a run on an empty map first sweeps +-90 degrees and turns square to the walls
+  // (PilotConfig::squareSweepMrad).
+  int16_t squareSweepMrad = 1571;
 #endif
 
   ExplorerConfig explorer() const {

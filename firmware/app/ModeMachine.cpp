@@ -190,7 +190,10 @@ void ModeMachine::halt() {
 Pose ModeMachine::pose() const {
   if (houseActive()) return house_->pose();
   if (poseFromPath_) return follower_.pose();
-  if (const Explorer* e = stack_.explorer()) return e->pose();
+  // (The explorer holds the pose once the pilot has started it: during the start's sweep the robot turns
+  // on the spot where it stood.)
+  const Explorer* e = stack_.explorer();
+  if (e != nullptr && stack_.pilot()->explorerStarted()) return e->pose();
   return restPose_;
 }
 
@@ -211,6 +214,19 @@ ActionRunner::Wheels ModeMachine::wheels() const {
   return ActionRunner::Wheels{tacho_.count(config_.leftMotor), tacho_.count(config_.rightMotor)};
 }
 
+PilotConfig ModeMachine::pilotConfig() {
+  if (stack_.pilot() != nullptr) learnt_ = stack_.pilot()->wheels();
+  PilotConfig p;
+  p.wheels = learnt_;
+#ifndef NXTMAP_NO_START_SQUARING
+  // A run on an empty map may choose its frame: square to the walls, cells' edges on their faces. On a map
+  // the robot already stands in (a PC's, an earlier run's) the frame is given.
+  const RoomGrid& g = stack_.map().grid();
+  if (g.count(CellState::Free) == 0 && g.count(CellState::Occupied) == 0) p.squareSweepMrad = config_.squareSweepMrad;
+#endif
+  return p;
+}
+
 void ModeMachine::startExploring(Strategy s, uint32_t nowMs) {
   if (mode_ == Mode::Exploring) return;
   safety_.clear();
@@ -224,7 +240,8 @@ void ModeMachine::startExploring(Strategy s, uint32_t nowMs) {
     // map left), from where the robot stands.
     const Pose here = pose();
     poseFromPath_ = false;
-    pending_ = stack_.start(s, PilotConfig{}, here);
+    restPose_ = here;
+    pending_ = stack_.start(s, pilotConfig(), here);
     runner_.begin(pending_, wheels(), nowMs);
   }
   mapChanged();

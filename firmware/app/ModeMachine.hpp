@@ -111,6 +111,9 @@ class ModeMachine {
   // Aborts and deactivates the house (if active): the robot rests where the house believed it.
   void leaveHouse();
   ActionRunner::Wheels wheels() const;
+  // The pilot's settings for a new run: what the runs before learnt of the wheels, and (not in the RAM-run
+  // image) the start's sweep square to the walls when the map is empty (BrickConfig::squareSweepMrad).
+  PilotConfig pilotConfig();
   void mapChanged() { ++mapVersion_; }
 
   ExplorerStack& stack_;
@@ -125,6 +128,7 @@ class ModeMachine {
   PcOutputs pc_{};         // outputs as a PC drives them while the robot rests
   DriveAction pending_{};  // the action being carried out
   Pose restPose_{};        // where the robot stands when neither the explorer nor a path moved it last
+  WheelCalibration learnt_{};  // what the last run's pilot learnt of the wheels (an uncalibrated robot's first)
   bool poseFromPath_ = false;
   Mode mode_ = Mode::Idle;
   uint16_t roomId_ = 0;

@@ -127,3 +127,38 @@ TEST(ModeMachine, MotorsBrakedUnlessMovingAndHaltFaults) {
 
 }  // namespace
 }  // namespace nxtmap::fw::test
+
+namespace nxtmap::fw::test {
+namespace {
+
+// A run on an empty map first sweeps square to the walls (the pilot has not started its explorer yet);
+// a run on a map the PC sent keeps the map's frame and starts mapping at once.
+TEST(ModeMachine, ARunOnAnEmptyMapSquaresToTheWallsFirst) {
+  const struct {
+    const char* what;
+    bool mapSent;
+    bool sweeps;
+  } table[] = {{"empty map", false, true}, {"the PC's map", true, false}};
+  for (const auto& row : table) {
+    Brick b;
+    if (row.mapSent) {
+      protocol::MapChunkMsg chunk;
+      chunk.chunkIndex = 0;
+      chunk.chunkCount = 1;
+      chunk.window = Bounds{0, 0, 0, 0};
+      chunk.count = 1;
+      chunk.setState(0, CellState::Free);
+      protocol::Command c = commandOf(protocol::CommandKind::MapChunk);
+      c.chunk = chunk;
+      b.modes.carryOut(c, 0);
+    }
+    b.modes.carryOut(commandOf(protocol::CommandKind::Explore), 1);
+    ASSERT_NE(b.stack.pilot(), nullptr) << row.what;
+    EXPECT_EQ(!b.stack.pilot()->explorerStarted(), row.sweeps) << row.what;
+    EXPECT_EQ(b.stack.pilot()->squaring().result().found, false) << row.what;  // nothing read yet
+    EXPECT_EQ(b.modes.pose().cell, (Cell{0, 0})) << row.what << ": where it stands while it sweeps";
+  }
+}
+
+}  // namespace
+}  // namespace nxtmap::fw::test
