@@ -34,7 +34,7 @@ DriveAction Pilot::square(const DriveEvent& e) {
       turnErrorPpm_ += calibration_.errorPpm();
       tracker_.knowTurn(kCalibratedTurnPpm * kCalibratedTurnPpm);
     } else {
-        approachIfFar();  // the calibration's first sweep saw no straight wall: as below
+      approachIfFar();  // the calibration's first sweep saw no straight wall: as below
       if (phase_ == Phase::Approach) return DriveAction::rotate(commandMrad_);
     }
   } else {

@@ -21,7 +21,7 @@ struct BrickConfig {
   int16_t minCm = 5, maxCm = 100, mountCm = 0;
   int16_t faceMarginCm = 0;  // the published raster worlds: faces on cell edges
   bool turnNeedsRoom = false;  // a point
-  int16_t squareSweepMrad = 1571;  // set down square on a cell's centre, as the published runs
+  int16_t squareSweepMrad = 0;  // set down square on a cell's centre, as the published runs
 #else
   MotionGeometry drive{};  // 56 mm wheels, 112 mm track, 200 mm cells
   int16_t minCm = 7;       // the LEGO sensor is unreliable closer than this
