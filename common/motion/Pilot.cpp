@@ -402,6 +402,9 @@ DriveAction Pilot::stepCorrected(const DriveEvent& e) {
       break;
     case DriveEvent::Kind::Thought:
       if (phase_ == Phase::Think) return begin(explorer_.step(Event::thought()));
+#ifndef NXTMAP_NO_START_SQUARING
+      if (phase_ == Phase::Snap) return startExplorer(snapVarianceMrad2_);
+#endif
       break;
     case DriveEvent::Kind::Driven:
 #ifndef NXTMAP_NO_START_SQUARING

@@ -201,6 +201,9 @@ class Pilot {
   // face on a cell edge (mm, the tracker's x and y).
   int32_t snapDistMm_[2] = {0, 0};
   int32_t snapMm_[2] = {0, 0};
+  // The heading's variance the explorer starts with once the snap is read (mrad^2): the explorer starts on
+  // the next Thought, so that its first planning is a slice of its own, not part of the last reading's.
+  int64_t snapVarianceMrad2_ = 0;
   // Phase::Approach (see PilotConfig::approachCm): 0 turning towards the echo, 1 driving, 2 turning back; the
   // turn (mrad, as the encoders told it) and the drive (mm).
   uint8_t approachStep_ = 0;

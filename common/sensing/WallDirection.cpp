@@ -35,9 +35,12 @@ void WallDirection::addReading(Sensor s, int16_t cm) {
 
 bool WallDirection::localMinimum(int s, int k) const {
   if (!valid(s, k)) return false;
-  for (int j = 0; j < steps_; ++j) {
-    if (j == k || !valid(s, j) || abs32(heading_[j] - heading_[k]) > kWindowMrad) continue;
-    if (cm_[j][s] < cm_[k][s] || (j < k && cm_[j][s] == cm_[k][s])) return false;
+  // The headings increase with the index: only the neighbours within the window either side count.
+  for (int dir = -1; dir <= 1; dir += 2) {
+    for (int j = k + dir; j >= 0 && j < steps_ && abs32(heading_[j] - heading_[k]) <= kWindowMrad; j += dir) {
+      if (!valid(s, j)) continue;
+      if (cm_[j][s] < cm_[k][s] || (j < k && cm_[j][s] == cm_[k][s])) return false;
+    }
   }
   return true;
 }

@@ -141,7 +141,7 @@ TEST(PilotStall, AStalledStepOfTheStartsSweepEndsTheSweep) {
   ASSERT_EQ(a.kind, DriveAction::Kind::Rotate);  // the first step of the sweep
   a = rig.pilot.step(DriveEvent::rotatedBy(0));  // stalls at once
   // No wall seen: back to where it was set down (the sweep's zero), a reading of each sensor for the nearest
-  // walls (the snap), then the explorer starts.
+  // walls (the snap), a think slice, then the explorer starts.
   ASSERT_EQ(a.kind, DriveAction::Kind::Rotate);
   EXPECT_EQ(a.value, 1571);
   a = rig.pilot.step(DriveEvent::rotatedBy(a.value));
@@ -150,6 +150,9 @@ TEST(PilotStall, AStalledStepOfTheStartsSweepEndsTheSweep) {
     EXPECT_FALSE(rig.pilot.explorerStarted());
     a = rig.pilot.step(DriveEvent::range(a.sensor, RangeReading{}));
   }
+  ASSERT_EQ(a.kind, DriveAction::Kind::Think);
+  EXPECT_FALSE(rig.pilot.explorerStarted());
+  a = rig.pilot.step(DriveEvent::thought());
   EXPECT_TRUE(rig.pilot.explorerStarted());
   EXPECT_FALSE(rig.pilot.squaring().result().found);
   EXPECT_NE(a.kind, DriveAction::Kind::Done);
