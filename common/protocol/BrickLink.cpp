@@ -10,6 +10,13 @@ bool samePath(const PathProgressMsg& a, const PathProgressMsg& b) {
   return a.pathId == b.pathId && a.reached == b.reached && a.state == b.state && a.at == b.at;
 }
 bool samePose(const Pose& a, const Pose& b) { return a.cell == b.cell && a.heading == b.heading; }
+#ifndef NXTMAP_NO_START_SQUARING
+// v / 10, rounded, held to int16_t's range.
+int16_t tenths(int32_t v) {
+  const int32_t t = v >= 0 ? (v + 5) / 10 : -((-v + 5) / 10);
+  return static_cast<int16_t>(t > 32767 ? 32767 : (t < -32767 ? -32767 : t));
+}
+#endif
 }  // namespace
 
 BrickLink::BrickLink(const RoomGrid& grid, uint8_t* shadow, const BrickLinkConfig& config)
@@ -262,7 +269,13 @@ bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out, 
   }
   if (countersDue_) {
     countersDue_ = false;
-    encodeCounters(CountersMsg{report.counters, counters_}, p);
+#ifndef NXTMAP_NO_START_SQUARING
+    encodeCounters(CountersMsg{report.counters, counters_, tenths(report.wheelDriftUradPerM),
+                               tenths(report.wheelTurnPpm)},
+                   p);
+#else
+    encodeCounters(CountersMsg{report.counters, counters_}, p);  // the RAM-run image learns no wheels
+#endif
     return send(Op::Counters, false, p, out);
   }
   if (exitsDue_ && report.exits != nullptr) {

@@ -21,6 +21,9 @@ struct BrickReport {
   Pose pose;
   Counters counters;
   uint16_t batteryMillivolts = 0;
+  // What the robot has learnt of its wheels (WheelCalibration): drift urad/m, turn error ppm.
+  int32_t wheelDriftUradPerM = 0;
+  int32_t wheelTurnPpm = 0;
   uint16_t roomId = 0;
   Cell roomEntry{};
   uint16_t fromRoom = 0;  // the room the robot came from, and the new room's origin and +y in its frame

@@ -127,7 +127,7 @@ struct Layout<CountersMsg> {
     return io.u32(m.explorer.sensorRequests) && io.u32(m.explorer.rawSamples) && io.u32(m.explorer.cellsMoved) &&
            io.u32(m.explorer.turnEighths) && io.u32(m.explorer.blockedMoves) && io.u32(m.link.telegramsIn) &&
            io.u32(m.link.bytesSkipped) && io.u32(m.link.commandsRun) && io.u32(m.link.duplicates) &&
-           io.u32(m.link.retransmits);
+           io.u32(m.link.retransmits) && io.i16(m.wheelDrift10UradPerM) && io.i16(m.wheelTurn10Ppm);
   }
 };
 

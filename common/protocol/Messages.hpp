@@ -161,10 +161,13 @@ struct StatusMsg {
 size_t encodeStatus(const StatusMsg& m, Payload& out);
 bool decodeStatus(const uint8_t* p, size_t n, StatusMsg& out);
 
-// The explorer's and the link's counters (40 bytes), sent less often than Status.
+// The explorer's and the link's counters and what the robot has learnt of its wheels (44 bytes), sent less
+// often than Status.
 struct CountersMsg {
   Counters explorer;
   LinkCounters link;
+  int16_t wheelDrift10UradPerM = 0;  // the drive's drift learnt: heading change per metre, 10 urad/m, + clockwise
+  int16_t wheelTurn10Ppm = 0;        // the turns' error learnt: actual / commanded - 1, 10 ppm
 };
 size_t encodeCounters(const CountersMsg& m, Payload& out);
 bool decodeCounters(const uint8_t* p, size_t n, CountersMsg& out);

@@ -22,8 +22,9 @@
 namespace nxtmap::protocol {
 
 // 3: Scan and Readings (a house's standing scan, start readings); 4: HelloReply carries the
-// brick's range geometry (cell size, trusted range, sensor mount).
-constexpr uint8_t kProtocolVersion = 4;
+// brick's range geometry (cell size, trusted range, sensor mount); 5: Counters carries the wheels'
+// drift and turn error the robot has learnt.
+constexpr uint8_t kProtocolVersion = 5;
 
 // Sizes (bytes). LEGO's Bluetooth input buffer holds 128 bytes per message.
 constexpr size_t kLengthPrefix = 2;

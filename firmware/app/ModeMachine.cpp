@@ -203,6 +203,11 @@ protocol::BrickReport ModeMachine::report(uint16_t batteryMillivolts) const {
   r.pose = pose();
   if (hasRun()) r.counters = counters();
   r.batteryMillivolts = batteryMillivolts;
+#ifndef NXTMAP_NO_START_SQUARING  // (the RAM-run image learns no wheels)
+  const WheelCalibration w = stack_.pilot() != nullptr ? stack_.pilot()->wheels() : learnt_;
+  r.wheelDriftUradPerM = w.driftUradPerM;
+  r.wheelTurnPpm = w.turnPpm;
+#endif
   r.roomId = roomId_;
   r.roomEntry = Cell{0, 0};
   r.path = follower_.progress();

@@ -1,6 +1,7 @@
 #include "host/console/Console.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <sstream>
 #include <thread>
 
@@ -24,6 +25,11 @@ void countersText(std::ostream& o, const link::Session& s) {
     o << "brick: " << k.explorer.sensorRequests << " readings, " << k.explorer.cellsMoved << " cells moved, "
       << k.explorer.turnEighths << " turn eighths, " << k.link.commandsRun << " commands run, " << k.link.duplicates
       << " duplicates ignored, " << k.link.retransmits << " map retransmissions\n";
+    // Learnt from the walls as it goes (PoseTracker): what its wheels do beyond what they are told.
+    char wheels[96];
+    std::snprintf(wheels, sizeof wheels, "wheels: drift %+.2f deg/m, turns %+.2f %% (learnt)\n",
+                  k.wheelDrift10UradPerM * 1e-5 * 57.29578, k.wheelTurn10Ppm * 1e-3);
+    o << wheels;
   }
   const auto& pc = s.counters();
   o << "pc: " << pc.bytesIn << " bytes in, " << pc.deltasApplied << " map deltas, " << pc.commandsAcknowledged

@@ -99,12 +99,19 @@ void SimBrick::trueCell(int& col, int& row) const {
   row = robot_.row();
 }
 
+WheelCalibration SimBrick::wheels() const {
+  return stack_.pilot() != nullptr ? stack_.pilot()->wheels() : mapping::storedCalibration(config_.run.noise.wheels);
+}
+
 BrickReport SimBrick::report() const {
   BrickReport r;
   r.mode = mode_;
   r.pose = pose();
   r.counters = counters();
   r.batteryMillivolts = config_.batteryMillivolts;
+  const WheelCalibration w = wheels();
+  r.wheelDriftUradPerM = w.driftUradPerM;
+  r.wheelTurnPpm = w.turnPpm;
   r.roomId = roomId_;
   r.path = path_;
   if (house_.active()) house_.fill(r);

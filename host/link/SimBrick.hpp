@@ -67,6 +67,8 @@ class SimBrick {
   const std::vector<uint16_t>& executed() const { return executed_; }
   // The brick's pose in its map's frame.
   Pose pose() const;
+  // What the brick has learnt of its wheels (the run's pilot; before a run, what its store holds).
+  WheelCalibration wheels() const;
   const protocol::PathProgressMsg& path() const { return path_; }
   uint32_t mapChunks() const { return mapChunks_; }
   uint16_t roomId() const { return roomId_; }

@@ -5,10 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <set>
 
 #include "host/link/LinkHarness.hpp"
+#include "host/sim/NoiseProfile.hpp"
+#include "host/sim/WheelModel.hpp"
 #include "host/sim/World.hpp"
 
 namespace nxtmap::link {
@@ -106,6 +109,34 @@ TEST(LinkEndToEnd, CleanLinkMapsTheRoomAndReachesAGoal) {
   }
   EXPECT_TRUE(noRepeats(brick.executed()));
   EXPECT_EQ(brick.executed().size(), 2u);
+}
+
+// What the brick learns of its wheels reaches the PC (Counters): an uncalibrated robot's turn error and
+// drift, as the brick's pilot learnt them (the turns' error learnt the right way round in this small room).
+TEST(LinkEndToEnd, ThePcHearsWhatTheBrickLearntOfItsWheels) {
+  const sim::World world = roomWorld();
+  SimBrickConfig c = brickConfig();
+  c.run.noise = *sim::noiseProfileByName("nxt-uncalibrated");
+  c.run.seed = 4;
+  SimBrick brick(world, c);
+  Session pc;
+  LinkHarness h(brick, pc, HarnessConfig{});
+  ASSERT_TRUE(h.runUntil([&] { return pc.connected(); }, 1000));
+  pc.explore();
+  ASSERT_TRUE(h.runUntil([&] { return brick.mode() == protocol::BrickMode::Done; }, 600000));
+  const uint32_t done = h.nowMs();
+  ASSERT_TRUE(h.runUntil([&] { return h.nowMs() > done + 3000; }, 5000));  // a Counters after the last drive
+  ASSERT_TRUE(pc.brickCounters().has_value());
+  const sim::WheelModel truth(c.run.noise.wheels, 5.6, 11.2, c.run.seed);
+  const double turnPct = pc.brickCounters()->wheelTurn10Ppm * 1e-3;
+  const double driftDegPerM = pc.brickCounters()->wheelDrift10UradPerM * 1e-5 * 57.29578;
+  std::printf("learnt turns %+.2f %% (true %+.2f), drift %+.2f deg/m (true %+.2f)\n", turnPct,
+              truth.systematicTurnError() * 100, driftDegPerM, truth.systematicDriftRadPerM() * 57.29578);
+  EXPECT_EQ(pc.brickCounters()->wheelTurn10Ppm, (brick.wheels().turnPpm + (brick.wheels().turnPpm >= 0 ? 5 : -5)) / 10);
+  EXPECT_EQ(pc.brickCounters()->wheelDrift10UradPerM,
+            (brick.wheels().driftUradPerM + (brick.wheels().driftUradPerM >= 0 ? 5 : -5)) / 10);
+  EXPECT_GT(turnPct * truth.systematicTurnError(), 0.0);  // the same sign
+  EXPECT_GT(std::abs(turnPct), 1.0);                      // learnt, not the store's 0
 }
 
 TEST(LinkEndToEnd, FivePercentDamagedBytesAndADisconnectLoseNothingAndRunNothingTwice) {

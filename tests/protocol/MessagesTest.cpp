@@ -53,8 +53,8 @@ TEST(Messages, StatusAndCountersRoundTripEveryField) {
   p.bytes[0] = 9;  // mode out of range
   EXPECT_FALSE(decodeStatus(p.bytes, p.size, d));
 
-  CountersMsg c{Counters{101, 202, 303, 404, 5}, LinkCounters{1, 2, 3, 4, 0xFFFFFFFFu}};
-  ASSERT_EQ(encodeCounters(c, p), 40u);
+  CountersMsg c{Counters{101, 202, 303, 404, 5}, LinkCounters{1, 2, 3, 4, 0xFFFFFFFFu}, -3491, 2000};
+  ASSERT_EQ(encodeCounters(c, p), 44u);
   EXPECT_EQ(p.bytes[4], 202 & 0xFF);
   CountersMsg e;
   ASSERT_TRUE(decodeCounters(p.bytes, p.size, e));
@@ -62,6 +62,8 @@ TEST(Messages, StatusAndCountersRoundTripEveryField) {
   EXPECT_EQ(e.explorer.blockedMoves, 5u);
   EXPECT_EQ(e.link.commandsRun, 3u);
   EXPECT_EQ(e.link.retransmits, 0xFFFFFFFFu);
+  EXPECT_EQ(e.wheelDrift10UradPerM, -3491);  // -2 deg/m
+  EXPECT_EQ(e.wheelTurn10Ppm, 2000);         // +2 %
   EXPECT_FALSE(decodeCounters(p.bytes, p.size - 1, e));
 }
 
