@@ -205,6 +205,11 @@ void PoseTracker::update(int k, int64_t sign, int64_t innovation, int64_t spread
   int64_t pk[kStates];
   for (int i = 0; i < kStates; ++i) pk[i] = p_[i][k];
   for (int i = 0; i < learnt; ++i) s_[i] += divRound(sign * pk[i] * innovation, spread);
+#ifndef NXTMAP_NO_START_SQUARING
+  // Within what any wheels do (WheelCalibration's ranges: 200 mrad/m, 10 %), whatever the readings said.
+  s_[kDrift] = s_[kDrift] > 1999 ? 1999 : (s_[kDrift] < -1999 ? -1999 : s_[kDrift]);
+  s_[kTurn] = s_[kTurn] > 9999 ? 9999 : (s_[kTurn] < -9999 ? -9999 : s_[kTurn]);
+#endif
   for (int i = 0; i < kStates; ++i)
     for (int j = 0; j <= i; ++j)
       if (j < learnt) p_[i][j] = p_[j][i] = p_[i][j] - divRound(pk[i] * pk[j], spread);

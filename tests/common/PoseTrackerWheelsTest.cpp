@@ -131,3 +131,23 @@ TEST(PoseTrackerWheels, AStoredCalibrationIsWhereLearningStarts) {
 
 }  // namespace
 }  // namespace nxtmap
+
+namespace nxtmap {
+namespace {
+
+TEST(PoseTrackerWheels, WhatIsLearntStaysWithinWhatWheelsDo) {
+  // A store that already says 190 mrad/m (11 deg/m) and is unsure of it; readings that say still more.
+  WheelCalibration stored;
+  stored.driftUradPerM = 190000;
+  stored.driftVariance = 100000LL * 100000;
+  PoseTracker t(PoseNoise{}, stored);
+  for (int i = 0; i < 10; ++i) {
+    t.drove(500, Dir::North);
+    (void)t.measureHeading(t.thetaMrad() + 40, 9);
+  }
+  EXPECT_LE(t.wheels().driftUradPerM, 200000);
+  EXPECT_GT(t.wheels().driftUradPerM, 190000);
+}
+
+}  // namespace
+}  // namespace nxtmap
