@@ -13,6 +13,9 @@ RoomSession::RoomSession(ExplorerStack& stack, RoomConfinement& confinement, con
 PilotConfig RoomSession::pilotConfig() const {
   PilotConfig p = pilot_;
   p.startHeadingVarianceMrad2 = pilot_.correct ? headingVariance_ : 0;
+  // The sweep square to the walls: the first room's run only (every later room is entered square through
+  // its doorway, and a travel keeps the frame of the map it was given).
+  if (phase_ != Phase::Exploring || roomsStarted_ != 1) p.squareSweepMrad = 0;
   return p;
 }
 

@@ -43,6 +43,15 @@ protocol::BrickLinkConfig linkConfigFor(const RangeGeometry& geometry) {
   c.geometry = protocol::rangeGeometryMsgOf(geometry);
   return c;
 }
+
+#ifndef NXTMAP_RAM_RUN
+// The house's runs: the first room's sweeps square to the walls (RoomSession), as a run on an empty map does.
+PilotConfig housePilot(const BrickConfig& config) {
+  PilotConfig p;
+  p.squareSweepMrad = config.squareSweepMrad;
+  return p;
+}
+#endif
 }  // namespace
 
 BrickApp::BrickApp()
@@ -55,7 +64,7 @@ BrickApp::BrickApp()
 #ifndef NXTMAP_RAM_RUN
       confinement_(reach_, AppExplorerStorage::kWidth(), AppExplorerStorage::kHeight(), kDoorways,
                    stack_.config().geometry.hitCells()),
-      house_(stack_, confinement_, PilotConfig{}),
+      house_(stack_, confinement_, housePilot(config_)),
 #endif
       link_(stack_.map().grid(), shadow_, linkConfigFor(stack_.config().geometry)),
       runner_(motion_, sonar_, config_.drive, stack_.config().geometry, config_.sensorPorts),

@@ -33,6 +33,7 @@ CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& o) {
   c->add_option("--heading", o.heading, "initial heading N, E, S or W (default N)");
   addRangeOption(*c, o.run);
   addWorldRunOptions(*c, o.run);
+  addSquareOption(*c, o.run, false);  // the first room only: every later one is entered square through its doorway
   addGridOption(*c, o.run);
   c->add_option("--seed", o.seed, "random seed of the noise (default 1)");
   c->add_option("--strategy", o.strategy,
@@ -50,6 +51,7 @@ int runSimHouse(const SimHouseOptions& o) {
   const sim::RobotDescription robot = robotOf(o.run);
   config.robot = robot;
   config.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
+  config.squareAtStart = squareAtStart(o.run.square, robot);
   config.noise = parseNoise(o.run.noise);
   config.seed = parseSeed(o.seed);
   config.strategy = parseStrategy(o.strategy);

@@ -110,10 +110,11 @@ void addWorldRunOptions(CLI::App& command, WorldRunOptions& o, const std::string
                      "seed (0 = square on the centre, the default)");
 }
 
-void addSquareOption(CLI::App& command, WorldRunOptions& o) {
+void addSquareOption(CLI::App& command, WorldRunOptions& o, bool calibrate) {
   command.add_option("--square", o.square,
                      "before mapping, sweep the sonars on the spot and turn square to the room's walls: auto (the "
                      "default: the brick does, the published robot does not, as in the paper), yes, no");
+  if (!calibrate) return;
   command.add_flag("--calibrate", o.calibrate,
                    "before mapping, measure how far the robot's turns are off against the walls (two sweeps with "
                    "4 whole turns between them) and correct every turn by it; squares to the walls as well");

@@ -56,7 +56,7 @@ struct WorldRunOptions {
 // robotNote: what an unset --robot means (default: "default published").
 void addWorldRunOptions(CLI::App& command, WorldRunOptions& o, const std::string& robotNote = "default published");
 // --square (sim, experiments): the start's wall sweep, see squareAtStart.
-void addSquareOption(CLI::App& command, WorldRunOptions& o);
+void addSquareOption(CLI::App& command, WorldRunOptions& o, bool calibrate = true);  // --square [, --calibrate]
 // --range-m (sim, sim-house): the trusted maximum range, overriding the robot's.
 void addRangeOption(CLI::App& command, WorldRunOptions& o);
 // --grid (sim, experiments, connect sim:): the room grid the explorer maps into, cells per side.

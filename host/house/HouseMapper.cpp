@@ -2,6 +2,8 @@
 
 #include "host/log/Log.hpp"
 #include "host/mapping/SimDrive.hpp"
+#include "host/mapping/SquaredGrid.hpp"
+#include "host/sim/TruthRaster.hpp"
 
 namespace nxtmap::house {
 namespace {
@@ -27,6 +29,7 @@ PilotConfig pilotFor(const HouseConfig& c) {
   PilotConfig p;
   p.correct = c.poseCorrection;
   p.wheels = mapping::storedCalibration(c.noise.wheels);
+  if (c.squareAtStart) p.squareSweepMrad = 1571;  // RoomSession: the first room's run only
   return p;
 }
 
@@ -121,7 +124,23 @@ HouseReport HouseMapper::carryOut(const HouseOrder& o) {
 void HouseMapper::drive(DriveAction a) {
   while (a.kind != DriveAction::Kind::Done) {
     a = session_.step(mapping::carryOutOnRobot(robot_, a, explorerConfig_.geometry));
+    if (!squared_ && stack_.pilot() != nullptr && stack_.pilot()->explorerStarted()) layTruthSquare();
   }
+}
+
+void HouseMapper::layTruthSquare() {
+  squared_ = true;
+  if (!config_.squareAtStart) return;
+  const mapping::SquaredGrid g = mapping::squaredGrid(robot_, *stack_.pilot(), stack_.explorer()->pose().heading,
+                                                      config_.heading);
+  if (!g.moved) return;
+  const sim::Placement& p = g.placement;
+  world_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, world_.name());
+  config_.startCol = p.startCol;
+  config_.startRow = p.startRow;
+  config_.heading = g.heading;
+  frame_ = mapping::FrameTransform(p.startCol, p.startRow, g.heading);
+  robot_.setFrame(p.frame);
 }
 
 void HouseMapper::load(const network::RoomMap& map) {

@@ -36,6 +36,7 @@ struct HouseConfig {
   sim::Heading heading = sim::Heading::N;   // initial heading in the world (= house frame +y)
   std::optional<sim::StartPose> startPose;  // a start in the plane instead of a raster cell
   double startJitterDeg = 0.0;              // > 0: set down off the cell centre and up to this far off square
+  bool squareAtStart = false;  // the first room's run sweeps square to the walls first (PilotConfig::squareSweepMrad)
   // The robot (cells, body, sensor mounts, trusted range: replaces rangeM/minRangeM); empty: a point robot of
   // the raster's own cells (the published set-up).
   std::optional<sim::RobotDescription> robot;
@@ -103,6 +104,9 @@ class HouseMapper {
   void load(const network::RoomMap& map);  // the brick's map replaced (as an upload from the PC)
   HouseReport report(HouseReport::Kind kind) const;
   void logBelief(const char* when) const;  // the believed cell against the simulated robot's (log debug)
+  // Once the first room's sweep is over: the truth laid on the grid the robot now maps on (SquaredGrid).
+  void layTruthSquare();
+  bool squared_ = false;  // layTruthSquare has run (or there is no sweep)
 
   sim::World world_;  // the truth on the robot's grid
   HouseConfig config_;

@@ -1,9 +1,8 @@
 #include "host/mapping/MappingRun.hpp"
 
 #include "host/mapping/SimDrive.hpp"
+#include "host/mapping/SquaredGrid.hpp"
 #include "host/sim/RobotPlacement.hpp"
-#include "host/sim/SceneAxes.hpp"
-#include "host/sim/StartJitter.hpp"
 #include "host/sim/TruthRaster.hpp"
 
 #include <cmath>
@@ -100,31 +99,15 @@ uint64_t MappingRun::runToEnd() {
 
 void MappingRun::layTruthSquare() {
   squared_ = true;
-  // The walls' axis nearest to where the robot now faces: the frame it believes it maps in; with no straight
-  // wall seen, the frame it was set down in (turned back to where it was set down).
-  const double heading = robot_.headingDeg();
-  const double off = std::remainder(heading - sim::sceneAxesDeg(robot_.scene()), 90.0);
-  const bool found = stack_.pilot()->squaring().result().found;
-  const double axis = found ? heading - off : robot_.frame().headingDeg + 90.0 * static_cast<int>(config_.heading);
-  if (found) squaredOffDeg_ = std::fabs(off);
-  const sim::Heading quarter = static_cast<sim::Heading>(sim::squareQuarter(axis));
-  const double turn = sim::squareRemainderDeg(axis);
-  // The cell's centre where the pilot believes it: off the robot by the offset the nearest walls gave it.
-  const PoseTracker& tracker = stack_.pilot()->tracker();
-  const Dir h = explorer().pose().heading;
-  const double forwardCm = tracker.along(h) / 10.0, rightCm = tracker.along(rotate(h, 1)) / 10.0;
-  const double rad = axis * 3.14159265358979323846 / 180.0;
-  const sim::Vec2 forward(std::sin(rad), -std::cos(rad)), right(std::cos(rad), std::sin(rad));
-  const sim::Vec2 centre = sim::Vec2(robot_.xCm(), robot_.yCm()) - forwardCm * forward - rightCm * right;
-  if (quarter == config_.heading && std::fabs(turn - robot_.frame().headingDeg) < 1e-6 && forwardCm == 0.0 &&
-      rightCm == 0.0)
-    return;  // as laid
-  const sim::Placement p = sim::placeOnGrid(robot_.scene(), centre, turn, robot_.frame().cellCm);
+  const SquaredGrid g = squaredGrid(robot_, *stack_.pilot(), explorer().pose().heading, config_.heading);
+  squaredOffDeg_ = g.offDeg;
+  if (!g.moved) return;  // as laid
+  const sim::Placement& p = g.placement;
   truth_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, truth_.name());
   config_.startCol = p.startCol;
   config_.startRow = p.startRow;
-  config_.heading = quarter;
-  frame_ = FrameTransform(p.startCol, p.startRow, quarter);
+  config_.heading = g.heading;
+  frame_ = FrameTransform(p.startCol, p.startRow, g.heading);
   robot_.setFrame(p.frame);
 }
 

@@ -55,6 +55,32 @@ TEST(HouseMapper, ThreeRoomsWithALoopOfDoorways) {
   }
 }
 
+// Set down 8 degrees off square, the first room's run sweeps square to the walls (and the truth is laid on the
+// grid it then maps on); without the sweep the whole house is mapped 8 degrees off. Later rooms do not sweep.
+TEST(HouseMapper, AHouseSetDownOffSquareIsMappedSquareAfterTheFirstRoomsSweep) {
+  const sim::WorldLoad l = sim::World::load(kRoot + "houses/three-rooms.map");
+  ASSERT_TRUE(l.world) << l.error;
+  for (uint64_t seed = 1; seed <= 3; ++seed) {
+    double pct[2] = {0, 0};
+    for (int k = 0; k < 2; ++k) {
+      HouseConfig config;
+      config.startCol = 8;
+      config.startRow = 8;
+      config.startJitterDeg = 8;
+      config.seed = seed;
+      config.squareAtStart = k == 0;
+      HouseMapper m(*l.world, config);
+      const int rooms = m.run();
+      if (k == 0) {  // (as set down, a room may be missed)
+        EXPECT_EQ(rooms, 3) << "seed " << seed;
+      }
+      pct[k] = scoreHouse(m).agreementPct();
+    }
+    EXPECT_GE(pct[0], 85.0) << "seed " << seed;
+    EXPECT_GT(pct[0], pct[1] + 5.0) << "seed " << seed << ": swept " << pct[0] << " %, as set down " << pct[1] << " %";
+  }
+}
+
 TEST(HouseMapper, HouseExpoPlanRoomByRoom) {
   const HousePlanLoad l = loadHouseExpo(kRoot + "houseexpo/1f99717550c31ae321ca2313edceedcc.json");
   ASSERT_TRUE(l.plan) << l.error;

@@ -1,0 +1,35 @@
+#include "host/mapping/SquaredGrid.hpp"
+
+#include <cmath>
+
+#include "host/sim/SceneAxes.hpp"
+#include "host/sim/StartJitter.hpp"
+
+namespace nxtmap::mapping {
+
+SquaredGrid squaredGrid(const sim::SimRobot& robot, const Pilot& pilot, Dir explorerHeading,
+                        sim::Heading setDownHeading) {
+  SquaredGrid g;
+  // The walls' axis nearest to where the robot now faces: the frame it believes it maps in; with no straight
+  // wall seen, the frame it was set down in (turned back to where it was set down).
+  const double heading = robot.headingDeg();
+  const double off = std::remainder(heading - sim::sceneAxesDeg(robot.scene()), 90.0);
+  g.found = pilot.squaring().result().found;
+  const double axis = g.found ? heading - off : robot.frame().headingDeg + 90.0 * static_cast<int>(setDownHeading);
+  if (g.found) g.offDeg = std::fabs(off);
+  g.heading = static_cast<sim::Heading>(sim::squareQuarter(axis));
+  const double turn = sim::squareRemainderDeg(axis);
+  // The cell's centre where the pilot believes it: off the robot by the offset the nearest walls gave it.
+  const PoseTracker& tracker = pilot.tracker();
+  const double forwardCm = tracker.along(explorerHeading) / 10.0;
+  const double rightCm = tracker.along(rotate(explorerHeading, 1)) / 10.0;
+  const double rad = axis * 3.14159265358979323846 / 180.0;
+  const sim::Vec2 forward(std::sin(rad), -std::cos(rad)), right(std::cos(rad), std::sin(rad));
+  const sim::Vec2 centre = sim::Vec2(robot.xCm(), robot.yCm()) - forwardCm * forward - rightCm * right;
+  g.moved = !(g.heading == setDownHeading && std::fabs(turn - robot.frame().headingDeg) < 1e-6 && forwardCm == 0.0 &&
+              rightCm == 0.0);
+  if (g.moved) g.placement = sim::placeOnGrid(robot.scene(), centre, turn, robot.frame().cellCm);
+  return g;
+}
+
+}  // namespace nxtmap::mapping

@@ -1,0 +1,26 @@
+// The grid a robot maps on once its start's sweep is over: turned square to the scene's walls (or, with no
+// straight wall seen, as it was set down) and with the cell's centre where the pilot's snap put it. The
+// simulator lays the truth on it, so that a run is scored on the grid it mapped (MappingRun, HouseMapper).
+#pragma once
+
+#include "common/explore/Pose.hpp"
+#include "common/motion/Pilot.hpp"
+#include "host/sim/Heading.hpp"
+#include "host/sim/SimRobot.hpp"
+#include "host/sim/TruthRaster.hpp"
+
+namespace nxtmap::mapping {
+
+struct SquaredGrid {
+  bool moved = false;       // false: the grid as laid when the robot was set down (nothing to re-lay)
+  bool found = false;       // the sweep saw the walls
+  double offDeg = 0.0;      // found: degrees from the robot's heading to the walls' nearest axis (0..45)
+  sim::Placement placement;  // moved: the grid over the scene, the start cell the robot's believed cell
+  sim::Heading heading = sim::Heading::N;  // moved: the explorer's heading in that grid's terms
+};
+
+// `setDownHeading`: the heading the run's grid was laid with; `explorerHeading`: the explorer's now.
+SquaredGrid squaredGrid(const sim::SimRobot& robot, const Pilot& pilot, Dir explorerHeading,
+                        sim::Heading setDownHeading);
+
+}  // namespace nxtmap::mapping
