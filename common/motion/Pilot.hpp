@@ -212,6 +212,12 @@ class Pilot {
   uint32_t approachCells_ = 0;  // driven, whole cells (for the time counted)
   // The finished sweeps' (and calibration's) readings, raw samples and rotation (mrad), for the counters.
   uint32_t sweepReads_ = 0, sweepSamples_ = 0, sweepMrad_ = 0;
+  template <class Sweep>  // StartSquaring or TurnCalibration, just finished
+  void countSweep(const Sweep& s) {
+    sweepReads_ += s.readings();
+    sweepSamples_ += s.samples();
+    sweepMrad_ += s.turnedMrad();
+  }
 #endif
   Pose startPose_{};  // where the explorer starts once the robot is square
   int32_t cellMm_;

@@ -27,9 +27,7 @@ DriveAction Pilot::square(const DriveEvent& e) {
   if (config_.calibrateTurns > 0 && !calibration_.finished()) {
     const DriveAction a = calibration_.step(e);
     if (!calibration_.finished()) return a;
-    sweepReads_ += calibration_.readings();
-    sweepSamples_ += calibration_.samples();
-    sweepMrad_ += calibration_.turnedMrad();
+    countSweep(calibration_);
     if (calibration_.found()) {
       turnErrorPpm_ += calibration_.errorPpm();
       tracker_.knowTurn(kCalibratedTurnPpm * kCalibratedTurnPpm);
@@ -40,9 +38,7 @@ DriveAction Pilot::square(const DriveEvent& e) {
   } else {
     const DriveAction a = squaring_.step(e);
     if (!squaring_.finished()) return a;
-    sweepReads_ += squaring_.readings();
-    sweepSamples_ += squaring_.samples();
-    sweepMrad_ += squaring_.turnedMrad();
+    countSweep(squaring_);
     approachIfFar();
     if (phase_ == Phase::Approach) return DriveAction::rotate(commandMrad_);
   }

@@ -69,13 +69,7 @@ SimBrick::SimBrick(sim::RobotPlacement placed, const SimBrickConfig& config)
       reach_(packedBytes(config_.run.grid.cells, config_.run.grid.cells, 1)),
       confinement_(reach_.data(), config_.run.grid.cells, config_.run.grid.cells, DoorwayLimits{4, 15, 3, 2},
                    stack_.config().geometry.hitCells()),
-      house_(stack_, confinement_,
-             [&] {
-               PilotConfig p;
-               p.correct = config_.run.poseCorrection;
-               p.wheels = mapping::storedCalibration(config_.run.noise.wheels);
-               return p;
-             }()),
+      house_(stack_, confinement_, pilotConfig()),
       shadow_(packedBytes(stack_.map().grid().capacityWidth(), stack_.map().grid().capacityHeight(), 2)),
       link_(stack_.map().grid(), shadow_.data(), linkConfigFor(config.link, stack_.config().geometry)) {}
 
@@ -97,6 +91,13 @@ bool SimBrick::finished() const { return stack_.finished(); }
 void SimBrick::trueCell(int& col, int& row) const {
   col = robot_.col();
   row = robot_.row();
+}
+
+PilotConfig SimBrick::pilotConfig() const {
+  PilotConfig p;
+  p.correct = config_.run.poseCorrection;
+  p.wheels = mapping::storedCalibration(config_.run.noise.wheels);
+  return p;
 }
 
 WheelCalibration SimBrick::wheels() const {
@@ -158,10 +159,7 @@ void SimBrick::startExploring() {
   }
   // A new run on the map as it is, from where the robot stands.
   restPose_ = pose();
-  PilotConfig pilot;
-  pilot.correct = config_.run.poseCorrection;
-  pilot.wheels = mapping::storedCalibration(config_.run.noise.wheels);
-  pending_ = stack_.start(config_.run.strategy, pilot, restPose_);
+  pending_ = stack_.start(config_.run.strategy, pilotConfig(), restPose_);
   mode_ = stack_.finished() ? BrickMode::Done : BrickMode::Exploring;
 }
 

@@ -79,6 +79,8 @@ class SimBrick {
   void toWorld(Cell c, int& col, int& row) const { frame_.toWorld(c, col, row); }
 
  private:
+  // A run's (and the house's) pilot: pose correction as configured, the wheels as the store holds them.
+  PilotConfig pilotConfig() const;
   void carryOut(const protocol::Command& c);
   void startExploring();
   void takeMapChunk(const protocol::MapChunkMsg& chunk);
