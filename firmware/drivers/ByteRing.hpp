@@ -1,10 +1,13 @@
 #pragma once
 #include <cstdint>
 
+#include "firmware/board/Mmio.hpp"
+
 namespace nxtmap::fw {
 
 // A single-producer single-consumer byte ring of N bytes (a power of two): one side may run in an
-// interrupt. Full rings drop new bytes and count them.
+// interrupt. Full rings drop new bytes and count them. A byte is stored before the head that publishes it
+// moves, and loaded before the tail that frees its place moves (compiler barriers: buf_ is not volatile).
 template <uint16_t N>
 class ByteRing {
   static_assert(N > 0 && (N & (N - 1)) == 0 && N <= 32768, "N is a power of two");
@@ -16,12 +19,15 @@ class ByteRing {
       return false;
     }
     buf_[head_ & (N - 1)] = b;
+    compilerBarrier();
     head_ = static_cast<uint16_t>(head_ + 1);
     return true;
   }
   bool pop(uint8_t& b) {
     if (head_ == tail_) return false;
+    compilerBarrier();
     b = buf_[tail_ & (N - 1)];
+    compilerBarrier();
     tail_ = static_cast<uint16_t>(tail_ + 1);
     return true;
   }
