@@ -6,15 +6,18 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <thread>
 
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
+#include "host/fileio/AtomicFile.hpp"
 #include "host/fileio/OutputTarget.hpp"
 #include "host/mapio/MapFiles.hpp"
 #include "host/mapping/MapScore.hpp"
 #include "host/mapping/MappingRun.hpp"
+#include "host/mapping/RunTrace.hpp"
 #include "host/report/ExperimentTable.hpp"
 #include "host/report/MapImage.hpp"
 #include "host/report/MapText.hpp"
@@ -105,6 +108,9 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
   sim->add_option("--delay-ms", o.delayMs, "live mode: delay per frame in ms (default 30)");
   sim->add_option("--save", o.save, "save the explored map as ROS map_server FILE.yaml + FILE.pgm (world frame)");
   sim->add_option("--png", o.png, "write a PNG of the final map (missed obstacles light red, wrong cells orange)");
+  sim->add_option("--trace", o.trace,
+                  "write a CSV of the pose the robot believes and the pose it truly has after every action "
+                  "(explorer frame, mm and mrad), to see where a lost run went astray");
   return sim;
 }
 
@@ -154,6 +160,20 @@ std::string wheelsLine(const mapping::MappingRun& run) {
   return out.str();
 }
 
+// Where the trace went and what it shows of the belief leaving the robot's cell.
+std::string traceLine(const mapping::RunTrace& t, const std::string& file) {
+  std::ostringstream out;
+  out << "wrote " << file << ": ";
+  if (t.firstLostStep() == 0)
+    out << "the believed cell was the robot's after every action";
+  else
+    out << "the believed cell first left the robot's after action " << t.firstLostStep() << " (" << t.lostSteps()
+        << " actions lost in all)";
+  out << "; worst error " << report::formatNumber(t.worstErrorMm(), 0) << " mm, "
+      << report::formatNumber(t.worstErrorMrad() * 0.18 / 3.141592653589793, 1) << " deg";
+  return out.str();
+}
+
 }  // namespace
 
 int runSim(const SimOptions& o) {
@@ -182,7 +202,10 @@ int runSim(const SimOptions& o) {
     if (ext != ".yaml" && ext != ".yml") throw CliError("--save must name a .yaml file, not '" + o.save + "'");
   }
   std::string outputError;  // the outputs are checked before the run (a missing folder, a device): nothing written yet
-  for (const std::string& out : {o.png, o.save}) {
+  if (!o.trace.empty() && std::filesystem::path(o.trace).extension() != ".csv") {
+    throw CliError("--trace must name a .csv file, not '" + o.trace + "'");
+  }
+  for (const std::string& out : {o.png, o.save, o.trace}) {
     if (!out.empty() && !fileio::resolveOutputTarget(out, outputError)) throw CliError(outputError);
   }
   const sim::Site site = loadSiteFile(o.world, robot.cellCm);
@@ -193,24 +216,23 @@ int runSim(const SimOptions& o) {
   textOptions.color = colorWanted();
   mapping::MappingRun run(site, config);
   const sim::World& world = run.world();
-  if (show == Show::Live) {
-    drawFrame(run, textOptions, true);
-    while (!run.finished()) {
-      const DriveAction done = run.lastAction();
-      run.step();
-      // Redraw when the robot moved or turned (reads and steering alone would make the display crawl).
-      const bool turned = done.kind == DriveAction::Kind::Rotate && (done.value > 700 || done.value < -700);
-      if (done.kind == DriveAction::Kind::Drive || turned || run.finished()) {
-        drawFrame(run, textOptions, false);
-        if (o.delayMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(o.delayMs));
-      }
-    }
-  } else {
-    run.runToEnd();
-    if (show == Show::Final) {
-      std::cout << report::renderMapText(run, textOptions) << statusLine(run) << '\n';
+  std::ostringstream traceText;
+  std::optional<mapping::RunTrace> trace;
+  if (!o.trace.empty()) trace.emplace(traceText);
+  if (show == Show::Live) drawFrame(run, textOptions, true);
+  for (uint64_t n = 1; !run.finished(); ++n) {
+    const DriveAction done = run.lastAction();
+    run.step();
+    if (trace) trace->record(run, n, done);
+    if (show != Show::Live) continue;
+    // Redraw when the robot moved or turned (reads and steering alone would make the display crawl).
+    const bool turned = done.kind == DriveAction::Kind::Rotate && (done.value > 700 || done.value < -700);
+    if (done.kind == DriveAction::Kind::Drive || turned || run.finished()) {
+      drawFrame(run, textOptions, false);
+      if (o.delayMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(o.delayMs));
     }
   }
+  if (show == Show::Final) std::cout << report::renderMapText(run, textOptions) << statusLine(run) << '\n';
 
   const Counters c = run.counters();
   const mapping::MapScore s = mapping::scoreRun(run);
@@ -264,6 +286,11 @@ int runSim(const SimOptions& o) {
     std::string error;
     if (!report::writeMapPng(o.png, run, report::MapImageOptions{}, error)) throw CliError(error);
     std::cout << "wrote " << o.png << "\n";
+  }
+  if (trace) {
+    std::string error;
+    if (!fileio::writeFileAtomically(o.trace, traceText.str(), error)) throw CliError(error);
+    std::cout << traceLine(*trace, o.trace) << "\n";
   }
   if (!o.save.empty()) {
     std::string error;

@@ -24,6 +24,7 @@ struct SimOptions {
   int delayMs = 30;            // live frame delay
   std::string png;             // optional PNG of the final map
   std::string save;            // optional ROS map_server YAML (+PGM) of the explored map, world frame
+  std::string trace;           // optional CSV of the believed and true pose after every action (mapping::RunTrace)
 };
 
 // Registers the subcommand; the options are filled in by CLI11.

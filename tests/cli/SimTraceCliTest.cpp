@@ -1,0 +1,101 @@
+// `nxtmap sim --trace FILE.csv`: the believed and the true pose after every action, as a process writes them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "CliTestSupport.hpp"
+
+namespace nxtmap::cli::test {
+namespace {
+
+const std::string kHeader =
+    "step,action,value,true_x_mm,true_y_mm,true_theta_mrad,cell_x,cell_y,heading,est_x_mm,est_y_mm,est_theta_mrad,"
+    "err_x_mm,err_y_mm,err_theta_mrad,lost";
+
+std::vector<std::string> fields(const std::string& row) {
+  std::vector<std::string> out;
+  std::istringstream in(row);
+  for (std::string f; std::getline(in, f, ',');) out.push_back(f);
+  return out;
+}
+
+long num(const std::string& f) { return std::strtol(f.c_str(), nullptr, 10); }
+
+TEST(SimTrace, AnIdealRunNeverLeavesItsCellAndTracesEveryAction) {
+  TempDir tmp("trace");
+  const std::string csv = tmp.path("run.csv");
+  const RunOutput r = runCli("sim worlds/seed-appendix-a/occupancy-089.map --start 1,20 --show none --trace " + csv);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("the believed cell was the robot's after every action"), std::string::npos) << r.out;
+  const std::vector<std::string> rows = lines(readFile(csv));
+  ASSERT_GT(rows.size(), 100u);
+  EXPECT_EQ(rows[0], kHeader);
+  // The published robot, no noise: on its cell's centre (10 cm cells; the simulated wheels' arithmetic may leave
+  // it a few tenths of a mm off after each move, 2 mm at most over a run), square, after every action.
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const std::vector<std::string> f = fields(rows[i]);
+    ASSERT_EQ(f.size(), 16u) << rows[i];
+    EXPECT_EQ(num(f[0]), static_cast<long>(i)) << "one row per action, numbered from 1";
+    EXPECT_NEAR(num(f[3]), 100 * num(f[6]), 3) << rows[i];
+    EXPECT_NEAR(num(f[4]), 100 * num(f[7]), 3) << rows[i];
+    EXPECT_EQ(num(f[5]), 0) << rows[i];
+    EXPECT_EQ(f[15], "0") << rows[i];
+  }
+  EXPECT_EQ(fields(rows[1])[1], "read") << "the first action reads the front sensor where it was set down";
+}
+
+TEST(SimTrace, TheErrorIsTheTruthLessTheBeliefAndLostMeansAnotherCell) {
+  TempDir tmp("trace");
+  const std::string csv = tmp.path("run.csv");
+  const RunOutput r = runCli("sim worlds/seed-appendix-a/start-positions.map --start 11,11 --robot brick --noise nxt "
+                             "--start-jitter 10 --seed 2 --show none --trace " + csv);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::vector<std::string> rows = lines(readFile(csv));
+  ASSERT_GT(rows.size(), 100u);
+  long firstLost = 0, lostRows = 0;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const std::vector<std::string> f = fields(rows[i]);
+    ASSERT_EQ(f.size(), 16u) << rows[i];
+    // 20 cm cells; each column is rounded to whole mm or mrad on its own, so the sum may be 1 off.
+    EXPECT_NEAR(num(f[12]), num(f[3]) - (200 * num(f[6]) + num(f[9])), 1) << rows[i];
+    EXPECT_NEAR(num(f[13]), num(f[4]) - (200 * num(f[7]) + num(f[10])), 1) << rows[i];
+    EXPECT_NEAR(num(f[14]), num(f[5]) - num(f[11]), 1) << rows[i];
+    const double cellX = std::floor(num(f[3]) / 200.0 + 0.5), cellY = std::floor(num(f[4]) / 200.0 + 0.5);
+    const bool onACellFace = std::fabs(std::fabs(std::fmod(num(f[3]), 200.0)) - 100) <= 1 ||
+                             std::fabs(std::fabs(std::fmod(num(f[4]), 200.0)) - 100) <= 1;
+    if (!onACellFace) {
+      EXPECT_EQ(f[15] == "1", cellX != num(f[6]) || cellY != num(f[7])) << rows[i];
+    }
+    if (f[15] == "1") {
+      ++lostRows;
+      if (firstLost == 0) firstLost = num(f[0]);
+    }
+  }
+  std::ostringstream expect;
+  if (firstLost == 0)
+    expect << "the believed cell was the robot's after every action";
+  else
+    expect << "first left the robot's after action " << firstLost << " (" << lostRows << " actions lost in all)";
+  EXPECT_NE(r.out.find(expect.str()), std::string::npos) << r.out;
+}
+
+TEST(SimTrace, ABadTraceFileIsRefusedBeforeTheRun) {
+  TempDir tmp("trace");
+  for (const std::string& bad : {tmp.path("run.txt"), tmp.path("no/such/folder/run.csv"), tmp.path("") + "/"}) {
+    SCOPED_TRACE(bad);
+    const RunOutput r = runCli("sim worlds/seed-appendix-a/occupancy-089.map --start 1,20 --show none --trace " + bad);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+    EXPECT_EQ(r.out.find("time units"), std::string::npos) << "no run: " << r.out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(tmp.path("run.txt")));
+  EXPECT_FALSE(std::filesystem::exists(tmp.path("no")));
+}
+
+}  // namespace
+}  // namespace nxtmap::cli::test
