@@ -17,6 +17,19 @@ constexpr int32_t wrapQuarter(int32_t v) {
   return r > q / 2 ? r - q : r;
 }
 
+// v modulo a full turn, in (-2 kQuarterMrad, 2 kQuarterMrad].
+constexpr int32_t wrapHalfTurn(int32_t v) {
+  const int32_t full = 4 * WallDirection::kQuarterMrad;
+  while (v > full / 2) v -= full;
+  while (v <= -full / 2) v += full;
+  return v;
+}
+
+// The dips' bearings from the sweep's zero heading (a dip's centre plus its sensor's quarter turns).
+constexpr int32_t bearing(const WallDirection::Dip& d) {
+  return wrapHalfTurn(d.centreMrad + static_cast<int32_t>(d.sensor) * WallDirection::kQuarterMrad);
+}
+
 }  // namespace
 
 bool WallDirection::addHeading(int32_t mrad) {
@@ -62,7 +75,7 @@ WallDirection::Flank WallDirection::flankTop(int s, int k, int dir) const {
     }
     skipped = false;
     const int16_t v = cm_[j][s];
-    if (v > full) return v > full + floor / 4 + 4 ? cut : rose;  // a wall's flank rises slower than that
+    if (v > full) return v > full + floor / 16 + 4 ? cut : rose;  // a wall's flank rises slower than that
     if (v > top) top = v;
     if (v + kCornerDropCm < top) return Flank{true, true, top};  // past a corner: a nearer wall again
   }
@@ -125,9 +138,19 @@ int WallDirection::dips(Dip* out, int max) const {
   return n;
 }
 
+int WallDirection::distinct(Dip* found, int n) {
+  int kept = 0;
+  for (int i = 0; i < n; ++i) {
+    bool seen = false;
+    for (int j = 0; j < kept && !seen; ++j) seen = abs32(wrapHalfTurn(bearing(found[i]) - bearing(found[j]))) <= kAgreeMrad;
+    if (!seen) found[kept++] = found[i];
+  }
+  return kept;
+}
+
 WallDirectionEstimate WallDirection::estimate() const {
   Dip found[kMaxDips];
-  const int n = dips(found, kMaxDips);
+  const int n = distinct(found, dips(found, kMaxDips));
   WallDirectionEstimate e;
   e.dips = static_cast<uint8_t>(n);
   int best = -1, bestCount = 0;

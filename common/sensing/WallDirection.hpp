@@ -71,6 +71,9 @@ class WallDirection {
  private:
   bool valid(int s, int k) const { return cm_[k][s] > 0 && cm_[k][s] <= kFarCm; }
   bool localMinimum(int s, int k) const;
+  // Keeps the first of the dips that lie on the same bearing (two sensors that faced the same wall or
+  // object in turn): one feature, one vote. Returns how many are kept, moved to the front.
+  static int distinct(Dip* found, int n);
   // The flank of the dip whose floor is at index k, going `dir` (-1, +1): it rises through floor +
   // tolerance, or turns down before at a corner (its highest reading), or is not a wall's (runs off the
   // sweep or jumps).

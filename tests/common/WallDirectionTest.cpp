@@ -126,14 +126,56 @@ TEST(WallDirection, HandComputedDipCentreAndObjectEdge) {
   EXPECT_EQ(d[0].widthMrad, 724);
   EXPECT_EQ(d[0].floorCm, 50);
 
-  // The same floor, but past its right flank the echo jumps to 130 cm (above 55 + 50 / 4 + 4): an object's edge.
-  const int16_t object[] = {60, 54, 51, 50, 50, 50, 50, 50, 51, 130, 130};
-  WallDirection o;
-  for (int k = 0; k < 11; ++k) {
-    o.addHeading(-435 + 87 * k);
-    o.addReading(Sensor::Front, object[k]);
+  // The same floor, but past its right flank the echo jumps above 55 + 50 / 16 + 4 = 62 cm (a wall's flank rises
+  // about 5 % of its floor per 5 degree step where it passes the level): an object's edge. 62 is still a wall's.
+  struct Edge {
+    int16_t pastCm;
+    int dips;
+  };
+  for (const Edge edge : {Edge{130, 0}, Edge{63, 0}, Edge{62, 1}, Edge{58, 1}}) {
+    const int16_t object[] = {60, 54, 51, 50, 50, 50, 50, 50, 51, edge.pastCm, edge.pastCm};
+    WallDirection o;
+    for (int k = 0; k < 11; ++k) {
+      o.addHeading(-435 + 87 * k);
+      o.addReading(Sensor::Front, object[k]);
+    }
+    EXPECT_EQ(o.dips(d, 4), edge.dips) << "past the right flank " << edge.pastCm << " cm";
   }
-  EXPECT_EQ(o.dips(d, 4), 0);
+}
+
+TEST(WallDirection, OneWallSeenByTwoSensorsIsOneWall) {
+  // One wall 60 cm north, turned 42 degrees: the front sensor faces its normal at +42 degrees of the sweep, the
+  // right one at -48. Two dips a quarter turn apart agree modulo a quarter turn, but they are one wall: one vote.
+  Room one;
+  one.west = one.east = one.south = 400;
+  one.north = 60;
+  one.turnedDeg = 42;
+  const WallDirection w = sweep(one, 6, 12);
+  WallDirection::Dip d[4];
+  ASSERT_EQ(w.dips(d, 4), 2);
+  EXPECT_EQ(d[0].sensor, Sensor::Front);
+  EXPECT_EQ(d[1].sensor, Sensor::Right);
+  const WallDirectionEstimate e = w.estimate();
+  EXPECT_EQ(e.dips, 1);
+  EXPECT_EQ(e.agreeing, 1);
+  ASSERT_TRUE(e.found) << "a wall alone, wide and clean, still names the walls";
+  EXPECT_NEAR(e.mrad * 0.18 / kPi, 42.0, 1.5);
+
+  // A post 100 cm away, 20 cm wide, seen by the front sensor at +25 degrees and by the right one at -65: its
+  // nearest point stays in the 12 degree cone for 24 degrees, then the echo jumps to the far wall or is lost.
+  // Once two dips agreed (and named walls 25 degrees off); now it is one narrow thing, no wall.
+  WallDirection post;
+  for (int k = 0; k <= 36; ++k) {
+    const int32_t mrad = -1571 + 87 * k;
+    post.addHeading(mrad);
+    for (int s = 0; s < 2; ++s) {
+      const double off = mrad * 0.18 / kPi + 90.0 * s - 25.0;  // degrees from the post's bearing
+      post.addReading(static_cast<Sensor>(s), std::fabs(off) <= 17.5 ? 100 : (std::fabs(off) <= 22.5 ? 104 : 0));
+    }
+  }
+  ASSERT_EQ(post.dips(d, 4), 2);
+  EXPECT_EQ(post.estimate().dips, 1);
+  EXPECT_FALSE(post.estimate().found);
 }
 
 TEST(WallDirection, HeadingsMustIncreaseAndFitTheCapacity) {
