@@ -69,7 +69,9 @@ HouseMapper::HouseMapper(sim::RobotPlacement placed, const HouseConfig& config)
       confinement_(reachBits_.data(), config_.grid.cells, config_.grid.cells, config_.doorways,
                    explorerConfig_.geometry.hitCells()),
       session_(stack_, confinement_, pilotFor(config_)),
-      planner_(plannerFor(config_), explorerConfig_.geometry) {}
+      planner_(plannerFor(config_), explorerConfig_.geometry) {
+  setDownCm_ = sim::Vec2(robot_.xCm(), robot_.yCm());
+}
 
 HouseCounters HouseMapper::counters() const {
   HouseCounters c;
@@ -132,7 +134,7 @@ void HouseMapper::layTruthSquare() {
   squared_ = true;
   if (!config_.squareAtStart) return;
   const mapping::SquaredGrid g = mapping::squaredGrid(robot_, *stack_.pilot(), stack_.explorer()->pose().heading,
-                                                      config_.heading);
+                                                      config_.heading, setDownCm_);
   if (!g.moved) return;
   const sim::Placement& p = g.placement;
   world_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, world_.name());

@@ -107,6 +107,7 @@ class HouseMapper {
   // Once the first room's sweep is over: the truth laid on the grid the robot now maps on (SquaredGrid).
   void layTruthSquare();
   bool squared_ = false;  // layTruthSquare has run (or there is no sweep)
+  sim::Vec2 setDownCm_;   // where the robot's centre was set down (plane, cm)
 
   sim::World world_;  // the truth on the robot's grid
   HouseConfig config_;

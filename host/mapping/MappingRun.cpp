@@ -67,6 +67,7 @@ MappingRun::MappingRun(Setup setup, const RunConfig&)
              explorerConfigFor(truth_, setup.placed.robot, config_.noise.sonar, config_.minRangeM, config_.rangeM,
                                config_.beamHalfAngleDeg, config_.blindCm, config_.searchSliceStates)) {
   setDownFrameDeg_ = robot_.frame().headingDeg;
+  setDownCm_ = sim::Vec2(robot_.xCm(), robot_.yCm());
   startMovedCm_ = setup.placed.startMovedCm;
   PilotConfig pilot;
   pilot.correct = config_.poseCorrection;
@@ -99,7 +100,7 @@ uint64_t MappingRun::runToEnd() {
 
 void MappingRun::layTruthSquare() {
   squared_ = true;
-  const SquaredGrid g = squaredGrid(robot_, *stack_.pilot(), explorer().pose().heading, config_.heading);
+  const SquaredGrid g = squaredGrid(robot_, *stack_.pilot(), explorer().pose().heading, config_.heading, setDownCm_);
   squaredOffDeg_ = g.offDeg;
   if (!g.moved) return;  // as laid
   const sim::Placement& p = g.placement;

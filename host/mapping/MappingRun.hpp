@@ -110,6 +110,7 @@ class MappingRun {
   bool squared_ = false;  // layTruthSquare has run
   double startMovedCm_ = 0;
   double setDownFrameDeg_ = 0;  // the grid's turn as the robot was set down (sim::GridFrame::headingDeg)
+  sim::Vec2 setDownCm_;         // where the robot's centre was set down (plane, cm)
   double squaredOffDeg_ = 0;    // after the sweep: degrees from the robot's heading to the walls' nearest axis
   sim::World truth_;
   FrameTransform frame_;

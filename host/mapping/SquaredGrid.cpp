@@ -6,9 +6,12 @@
 #include "host/sim/StartJitter.hpp"
 
 namespace nxtmap::mapping {
+namespace {
+constexpr double kDroveOffCm = 5.0;
+}  // namespace
 
 SquaredGrid squaredGrid(const sim::SimRobot& robot, const Pilot& pilot, Dir explorerHeading,
-                        sim::Heading setDownHeading) {
+                        sim::Heading setDownHeading, const sim::Vec2& setDownCm) {
   SquaredGrid g;
   // The walls' axis nearest to where the robot now faces: the frame it believes it maps in; with no straight
   // wall seen, the frame it was set down in (turned back to where it was set down).
@@ -26,8 +29,10 @@ SquaredGrid squaredGrid(const sim::SimRobot& robot, const Pilot& pilot, Dir expl
   const double rad = axis * 3.14159265358979323846 / 180.0;
   const sim::Vec2 forward(std::sin(rad), -std::cos(rad)), right(std::cos(rad), std::sin(rad));
   const sim::Vec2 centre = sim::Vec2(robot.xCm(), robot.yCm()) - forwardCm * forward - rightCm * right;
+  // Turning on the spot leaves the centre within a few mm of where it was; an approach drives 20 cm or more.
+  const bool droveOff = std::hypot(robot.xCm() - setDownCm.x(), robot.yCm() - setDownCm.y()) > kDroveOffCm;
   g.moved = !(g.heading == setDownHeading && std::fabs(turn - robot.frame().headingDeg) < 1e-6 && forwardCm == 0.0 &&
-              rightCm == 0.0);
+              rightCm == 0.0 && !droveOff);
   if (g.moved) g.placement = sim::placeOnGrid(robot.scene(), centre, turn, robot.frame().cellCm);
   return g;
 }

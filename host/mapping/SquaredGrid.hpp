@@ -19,8 +19,10 @@ struct SquaredGrid {
   sim::Heading heading = sim::Heading::N;  // moved: the explorer's heading in that grid's terms
 };
 
-// `setDownHeading`: the heading the run's grid was laid with; `explorerHeading`: the explorer's now.
+// `setDownHeading`: the heading the run's grid was laid with; `setDownCm`: where the robot's centre was set
+// down; `explorerHeading`: the explorer's now. A robot that drove off (towards a far wall, to find one:
+// PilotConfig::approaches) maps from where it stands, walls found or not: its grid moves with it.
 SquaredGrid squaredGrid(const sim::SimRobot& robot, const Pilot& pilot, Dir explorerHeading,
-                        sim::Heading setDownHeading);
+                        sim::Heading setDownHeading, const sim::Vec2& setDownCm);
 
 }  // namespace nxtmap::mapping
