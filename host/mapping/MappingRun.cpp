@@ -87,7 +87,8 @@ DriveEvent MappingRun::carryOut(const DriveAction& a) {
 bool MappingRun::step() {
   if (stack_.finished()) return false;
   const bool squaring = config_.squareAtStart && !squared_;
-  last_ = stack_.step(carryOut(last_));
+  lastEvent_ = carryOut(last_);
+  last_ = stack_.step(lastEvent_);
   if (squaring && stack_.pilot() != nullptr && stack_.pilot()->explorerStarted()) layTruthSquare();
   return !stack_.finished();
 }

@@ -67,6 +67,8 @@ class MappingRun {
   Counters counters() const { return stack_.counters(); }
   bool finished() const { return stack_.finished(); }
   const DriveAction& lastAction() const { return last_; }
+  // What the robot answered to the action step() carried out last (a reading, a turn, a drive).
+  const DriveEvent& lastEvent() const { return lastEvent_; }
   const Pilot& pilot() const { return *stack_.pilot(); }
   const sim::SimRobot& robot() const { return robot_; }
   // The truth on the robot's grid (the safe rule: a cell holding any part of an obstacle is blocked).
@@ -118,6 +120,7 @@ class MappingRun {
   ExplorerBuffer buffer_;  // the memory of stack_, of config_.grid's capacity
   ExplorerStack stack_;    // one run of config_.strategy, started in the constructor
   DriveAction last_;
+  DriveEvent lastEvent_;
 };
 
 }  // namespace nxtmap::mapping

@@ -29,6 +29,17 @@ const char* kindName(DriveAction::Kind k) {
   return "?";
 }
 
+const char* statusName(RangeStatus s) {
+  switch (s) {
+    case RangeStatus::Good: return "good";
+    case RangeStatus::NoEcho: return "no-echo";
+    case RangeStatus::TooNear: return "too-near";
+    case RangeStatus::TooFar: return "too-far";
+    case RangeStatus::Inconsistent: return "inconsistent";
+  }
+  return "?";
+}
+
 }  // namespace
 
 TracePose tracePose(const MappingRun& run) {
@@ -72,14 +83,20 @@ TracePose tracePose(const MappingRun& run) {
 }
 
 RunTrace::RunTrace(std::ostream& out) : out_(out) {
-  out_ << "step,action,value,true_x_mm,true_y_mm,true_theta_mrad,cell_x,cell_y,heading,est_x_mm,est_y_mm,"
+  out_ << "step,action,value,sensor,reading_cm,reading,true_x_mm,true_y_mm,true_theta_mrad,cell_x,cell_y,heading,est_x_mm,est_y_mm,"
           "est_theta_mrad,err_x_mm,err_y_mm,err_theta_mrad,lost\n";
 }
 
 void RunTrace::record(const MappingRun& run, uint64_t step, const DriveAction& done) {
   const TracePose t = tracePose(run);
   const auto whole = [](double v) { return std::lround(v); };
-  out_ << step << ',' << kindName(done.kind) << ',' << done.value << ',' << whole(t.trueXMm) << ','
+  out_ << step << ',' << kindName(done.kind) << ',' << done.value << ',';
+  const DriveEvent& e = run.lastEvent();
+  if (done.kind == DriveAction::Kind::Read && e.kind == DriveEvent::Kind::Range)
+    out_ << "FRBL"[static_cast<int>(e.sensor) & 3] << ',' << e.reading.cm << ',' << statusName(e.reading.status);
+  else
+    out_ << ",,";
+  out_ << ',' << whole(t.trueXMm) << ','
        << whole(t.trueYMm) << ',' << whole(t.trueThetaMrad) << ',' << t.cellX << ',' << t.cellY << ','
        << "NESW"[t.headingQuarters & 3] << ',' << t.estXMm << ',' << t.estYMm << ',' << t.estThetaMrad << ','
        << whole(t.errXMm) << ',' << whole(t.errYMm) << ',' << whole(t.errThetaMrad) << ',' << (t.lost ? 1 : 0)

@@ -27,7 +27,8 @@ struct TracePose {
 // The belief and the truth of `run` as it stands now.
 TracePose tracePose(const MappingRun& run);
 
-// Writes one CSV row per action and, at the end, a summary of where the belief first left the robot's cell.
+// Writes one CSV row per action (for a reading also its sensor, F R B L, its cm and its status) and, at the
+// end, a summary of where the belief first left the robot's cell.
 class RunTrace {
  public:
   explicit RunTrace(std::ostream& out);

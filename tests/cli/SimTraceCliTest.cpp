@@ -14,7 +14,7 @@ namespace nxtmap::cli::test {
 namespace {
 
 const std::string kHeader =
-    "step,action,value,true_x_mm,true_y_mm,true_theta_mrad,cell_x,cell_y,heading,est_x_mm,est_y_mm,est_theta_mrad,"
+    "step,action,value,sensor,reading_cm,reading,true_x_mm,true_y_mm,true_theta_mrad,cell_x,cell_y,heading,est_x_mm,est_y_mm,est_theta_mrad,"
     "err_x_mm,err_y_mm,err_theta_mrad,lost";
 
 std::vector<std::string> fields(const std::string& row) {
@@ -39,14 +39,20 @@ TEST(SimTrace, AnIdealRunNeverLeavesItsCellAndTracesEveryAction) {
   // it a few tenths of a mm off after each move, 2 mm at most over a run), square, after every action.
   for (size_t i = 1; i < rows.size(); ++i) {
     const std::vector<std::string> f = fields(rows[i]);
-    ASSERT_EQ(f.size(), 16u) << rows[i];
+    ASSERT_EQ(f.size(), 19u) << rows[i];
     EXPECT_EQ(num(f[0]), static_cast<long>(i)) << "one row per action, numbered from 1";
-    EXPECT_NEAR(num(f[3]), 100 * num(f[6]), 3) << rows[i];
-    EXPECT_NEAR(num(f[4]), 100 * num(f[7]), 3) << rows[i];
-    EXPECT_EQ(num(f[5]), 0) << rows[i];
-    EXPECT_EQ(f[15], "0") << rows[i];
+    EXPECT_EQ(f[1] == "read", !f[3].empty()) << "a sensor for readings only: " << rows[i];
+    EXPECT_NEAR(num(f[6]), 100 * num(f[9]), 3) << rows[i];
+    EXPECT_NEAR(num(f[7]), 100 * num(f[10]), 3) << rows[i];
+    EXPECT_EQ(num(f[8]), 0) << rows[i];
+    EXPECT_EQ(f[18], "0") << rows[i];
   }
-  EXPECT_EQ(fields(rows[1])[1], "read") << "the first action reads the front sensor where it was set down";
+  const std::vector<std::string> first = fields(rows[1]);
+  EXPECT_EQ(first[1], "read") << "the first action reads the front sensor where it was set down";
+  EXPECT_EQ(first[3], "F");
+  // Occupancy-089 from 1,20 facing north: the far wall 1.95 m ahead, beyond the published robot's 1 m.
+  EXPECT_EQ(first[4], "195") << rows[1];
+  EXPECT_EQ(first[5], "too-far") << rows[1];
 }
 
 TEST(SimTrace, TheErrorIsTheTruthLessTheBeliefAndLostMeansAnotherCell) {
@@ -60,18 +66,18 @@ TEST(SimTrace, TheErrorIsTheTruthLessTheBeliefAndLostMeansAnotherCell) {
   long firstLost = 0, lostRows = 0;
   for (size_t i = 1; i < rows.size(); ++i) {
     const std::vector<std::string> f = fields(rows[i]);
-    ASSERT_EQ(f.size(), 16u) << rows[i];
+    ASSERT_EQ(f.size(), 19u) << rows[i];
     // 20 cm cells; each column is rounded to whole mm or mrad on its own, so the sum may be 1 off.
-    EXPECT_NEAR(num(f[12]), num(f[3]) - (200 * num(f[6]) + num(f[9])), 1) << rows[i];
-    EXPECT_NEAR(num(f[13]), num(f[4]) - (200 * num(f[7]) + num(f[10])), 1) << rows[i];
-    EXPECT_NEAR(num(f[14]), num(f[5]) - num(f[11]), 1) << rows[i];
-    const double cellX = std::floor(num(f[3]) / 200.0 + 0.5), cellY = std::floor(num(f[4]) / 200.0 + 0.5);
-    const bool onACellFace = std::fabs(std::fabs(std::fmod(num(f[3]), 200.0)) - 100) <= 1 ||
-                             std::fabs(std::fabs(std::fmod(num(f[4]), 200.0)) - 100) <= 1;
+    EXPECT_NEAR(num(f[15]), num(f[6]) - (200 * num(f[9]) + num(f[12])), 1) << rows[i];
+    EXPECT_NEAR(num(f[16]), num(f[7]) - (200 * num(f[10]) + num(f[13])), 1) << rows[i];
+    EXPECT_NEAR(num(f[17]), num(f[8]) - num(f[14]), 1) << rows[i];
+    const double cellX = std::floor(num(f[6]) / 200.0 + 0.5), cellY = std::floor(num(f[7]) / 200.0 + 0.5);
+    const bool onACellFace = std::fabs(std::fabs(std::fmod(num(f[6]), 200.0)) - 100) <= 1 ||
+                             std::fabs(std::fabs(std::fmod(num(f[7]), 200.0)) - 100) <= 1;
     if (!onACellFace) {
-      EXPECT_EQ(f[15] == "1", cellX != num(f[6]) || cellY != num(f[7])) << rows[i];
+      EXPECT_EQ(f[18] == "1", cellX != num(f[9]) || cellY != num(f[10])) << rows[i];
     }
-    if (f[15] == "1") {
+    if (f[18] == "1") {
       ++lostRows;
       if (firstLost == 0) firstLost = num(f[0]);
     }
