@@ -10,20 +10,13 @@ inline void compilerBarrier() { asm volatile("" ::: "memory"); }
 
 // The real register backend of the drivers: 32-bit volatile accesses at absolute addresses.
 // Host tests use a fake with the same three members (tests/firmware/FakeBus.hpp).
-// Each access is also a compiler barrier (as Linux's readl/writel): a PDC channel reads and writes RAM
-// the compiler cannot see, so the bytes a driver stores before it starts a transfer must be in RAM when the
-// register write starts it, and the bytes it loads after reading a counter must be loaded after that read
-// (with link-time optimisation every driver is inlined into its callers and could otherwise be reordered).
+// A PDC channel reads and writes RAM the compiler cannot see: a driver puts compilerBarrier() between
+// the stores of a buffer and the register write that starts its transfer, and between the counter read that
+// says bytes arrived and the loads of them (with link-time optimisation every driver is inlined into its
+// callers, and plain stores and loads may move across volatile accesses).
 struct Mmio {
-  static uint32_t read(uint32_t addr) {
-    const uint32_t v = *reinterpret_cast<volatile uint32_t*>(addr);
-    compilerBarrier();
-    return v;
-  }
-  static void write(uint32_t addr, uint32_t value) {
-    compilerBarrier();
-    *reinterpret_cast<volatile uint32_t*>(addr) = value;
-  }
+  static uint32_t read(uint32_t addr) { return *reinterpret_cast<volatile uint32_t*>(addr); }
+  static void write(uint32_t addr, uint32_t value) { *reinterpret_cast<volatile uint32_t*>(addr) = value; }
   static uint32_t address(const void* p) { return static_cast<uint32_t>(reinterpret_cast<uintptr_t>(p)); }
 };
 

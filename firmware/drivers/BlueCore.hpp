@@ -244,6 +244,7 @@ class BlueCore {
     if (n == 0) return;
     const uint16_t wrapped = static_cast<uint16_t>(tx_.size() - n);
     inFlight_ = static_cast<uint16_t>(n + wrapped);
+    compilerBarrier();  // the ring's bytes in RAM before the PDC reads them
     bus_.write(kUs1Tpr, bus_.address(tx_.tailPointer()));
     bus_.write(kUs1Tcr, n);
     if (wrapped > 0) {

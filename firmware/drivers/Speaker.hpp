@@ -2,6 +2,7 @@
 #include <cstdint>
 
 #include "firmware/board/At91sam7s.hpp"
+#include "firmware/board/Mmio.hpp"
 
 namespace nxtmap::fw {
 
@@ -72,6 +73,7 @@ class Speaker {
     const uint32_t f = hz == 0 ? 1000 : clampHz(hz);
     left_ = f * duration / 1000;
     bus_.write(ssc::kCmr, divider(mck, static_cast<uint16_t>(f)));
+    compilerBarrier();  // the wave in RAM before the PDC sends it
     bus_.write(ssc::kTpr, bus_.address(wave_));
     bus_.write(ssc::kTcr, take());
     if (left_ > 0) queueNext();

@@ -2,6 +2,7 @@
 #include <cstdint>
 
 #include "firmware/board/At91sam7s.hpp"
+#include "firmware/board/Mmio.hpp"
 
 namespace nxtmap::fw {
 
@@ -40,12 +41,14 @@ class UsartRxDma {
     using namespace reg;
     if (out_ == kBufferBytes) {
       if (bus_.read(kUs1Rncr) != 0) return false;
+      compilerBarrier();  // every byte of the buffer loaded before the PDC may fill it again
       bus_.write(kUs1Rnpr, bus_.address(&buf_[cur_][0]));
       bus_.write(kUs1Rncr, kBufferBytes);
       cur_ ^= 1u;
       out_ = 0;
     }
     if (out_ >= filled()) return false;
+    compilerBarrier();  // the byte loaded after the counters that say it is there
     b = buf_[cur_][out_++];
     return true;
   }
