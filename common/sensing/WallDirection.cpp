@@ -142,7 +142,8 @@ int WallDirection::distinct(Dip* found, int n) {
   int kept = 0;
   for (int i = 0; i < n; ++i) {
     bool seen = false;
-    for (int j = 0; j < kept && !seen; ++j) seen = abs32(wrapHalfTurn(bearing(found[i]) - bearing(found[j]))) <= kAgreeMrad;
+    for (int j = 0; j < kept && !seen; ++j)
+      seen = abs32(wrapHalfTurn(bearing(found[i]) - bearing(found[j]))) <= kAgreeMrad;
     if (!seen) found[kept++] = found[i];
   }
   return kept;

@@ -76,7 +76,7 @@ class Lcd {
     const uint8_t cmds[3] = {0x00, 0x10, static_cast<uint8_t>(0xB0 | page_)};
     command(cmds, 3);
     bus_.write(reg::kPioSodr, reg::kPinLcdA0);  // data
-    compilerBarrier();  // the page's pixels in RAM before the PDC sends them
+    compilerBarrier();                          // the page's pixels in RAM before the PDC sends them
     bus_.write(reg::kSpiTpr, bus_.address(&frame_[page_][0]));
     bus_.write(reg::kSpiTcr, kWidth);
     bus_.write(reg::kSpiPtcr, 1u << 8);  // TXTEN

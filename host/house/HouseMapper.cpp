@@ -133,8 +133,8 @@ void HouseMapper::drive(DriveAction a) {
 void HouseMapper::layTruthSquare() {
   squared_ = true;
   if (!config_.squareAtStart) return;
-  const mapping::SquaredGrid g = mapping::squaredGrid(robot_, *stack_.pilot(), stack_.explorer()->pose().heading,
-                                                      config_.heading, setDownCm_);
+  const mapping::SquaredGrid g =
+      mapping::squaredGrid(robot_, *stack_.pilot(), stack_.explorer()->pose().heading, config_.heading, setDownCm_);
   if (!g.moved) return;
   const sim::Placement& p = g.placement;
   world_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, world_.name());

@@ -83,7 +83,8 @@ TracePose tracePose(const MappingRun& run) {
 }
 
 RunTrace::RunTrace(std::ostream& out) : out_(out) {
-  out_ << "step,action,value,sensor,reading_cm,reading,true_x_mm,true_y_mm,true_theta_mrad,cell_x,cell_y,heading,est_x_mm,est_y_mm,"
+  out_ << "step,action,value,sensor,reading_cm,reading,true_x_mm,true_y_mm,true_theta_mrad,cell_x,cell_y,heading,est_x_"
+          "mm,est_y_mm,"
           "est_theta_mrad,err_x_mm,err_y_mm,err_theta_mrad,lost\n";
 }
 
@@ -96,10 +97,9 @@ void RunTrace::record(const MappingRun& run, uint64_t step, const DriveAction& d
     out_ << "FRBL"[static_cast<int>(e.sensor) & 3] << ',' << e.reading.cm << ',' << statusName(e.reading.status);
   else
     out_ << ",,";
-  out_ << ',' << whole(t.trueXMm) << ','
-       << whole(t.trueYMm) << ',' << whole(t.trueThetaMrad) << ',' << t.cellX << ',' << t.cellY << ','
-       << "NESW"[t.headingQuarters & 3] << ',' << t.estXMm << ',' << t.estYMm << ',' << t.estThetaMrad << ','
-       << whole(t.errXMm) << ',' << whole(t.errYMm) << ',' << whole(t.errThetaMrad) << ',' << (t.lost ? 1 : 0)
+  out_ << ',' << whole(t.trueXMm) << ',' << whole(t.trueYMm) << ',' << whole(t.trueThetaMrad) << ',' << t.cellX << ','
+       << t.cellY << ',' << "NESW"[t.headingQuarters & 3] << ',' << t.estXMm << ',' << t.estYMm << ',' << t.estThetaMrad
+       << ',' << whole(t.errXMm) << ',' << whole(t.errYMm) << ',' << whole(t.errThetaMrad) << ',' << (t.lost ? 1 : 0)
        << '\n';
   if (t.lost) {
     ++lostSteps_;

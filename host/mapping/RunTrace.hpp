@@ -21,7 +21,7 @@ struct TracePose {
   int cellX = 0, cellY = 0, headingQuarters = 0;       // the explorer's cell and heading (0 N, 1 E, 2 S, 3 W)
   int32_t estXMm = 0, estYMm = 0, estThetaMrad = 0;    // the tracker's offset from the cell's centre and axis
   double errXMm = 0, errYMm = 0, errThetaMrad = 0;     // truth minus belief
-  bool lost = false;  // the centre lies in another cell than the believed one
+  bool lost = false;                                   // the centre lies in another cell than the believed one
 };
 
 // The belief and the truth of `run` as it stands now.

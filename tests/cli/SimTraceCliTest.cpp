@@ -14,7 +14,8 @@ namespace nxtmap::cli::test {
 namespace {
 
 const std::string kHeader =
-    "step,action,value,sensor,reading_cm,reading,true_x_mm,true_y_mm,true_theta_mrad,cell_x,cell_y,heading,est_x_mm,est_y_mm,est_theta_mrad,"
+    "step,action,value,sensor,reading_cm,reading,true_x_mm,true_y_mm,true_theta_mrad,cell_x,cell_y,heading,est_x_mm,"
+    "est_y_mm,est_theta_mrad,"
     "err_x_mm,err_y_mm,err_theta_mrad,lost";
 
 std::vector<std::string> fields(const std::string& row) {
@@ -58,8 +59,10 @@ TEST(SimTrace, AnIdealRunNeverLeavesItsCellAndTracesEveryAction) {
 TEST(SimTrace, TheErrorIsTheTruthLessTheBeliefAndLostMeansAnotherCell) {
   TempDir tmp("trace");
   const std::string csv = tmp.path("run.csv");
-  const RunOutput r = runCli("sim worlds/seed-appendix-a/start-positions.map --start 11,11 --robot brick --noise nxt "
-                             "--start-jitter 10 --seed 2 --show none --trace " + csv);
+  const RunOutput r = runCli(
+      "sim worlds/seed-appendix-a/start-positions.map --start 11,11 --robot brick --noise nxt "
+      "--start-jitter 10 --seed 2 --show none --trace " +
+      csv);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const std::vector<std::string> rows = lines(readFile(csv));
   ASSERT_GT(rows.size(), 100u);
