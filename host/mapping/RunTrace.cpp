@@ -10,14 +10,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// An angle in degrees brought into (-180, 180].
-double wrapDeg(double deg) {
-  double a = std::fmod(deg, 360.0);
-  if (a <= -180.0) a += 360.0;
-  if (a > 180.0) a -= 360.0;
-  return a;
-}
-
 const char* kindName(DriveAction::Kind k) {
   switch (k) {
     case DriveAction::Kind::Read: return "read";
@@ -59,7 +51,7 @@ TracePose tracePose(const MappingRun& run) {
   t.trueXMm = (dCol * (exCol - ox) + dRow * (exRow - oy)) * cellMm;
   t.trueYMm = (dCol * (eyCol - ox) + dRow * (eyRow - oy)) * cellMm;
   const double northDeg = sim::headingToDeg(frame.toWorld(Dir::North));
-  const double trueDeg = wrapDeg(robot.headingDeg() - grid.headingDeg - northDeg);
+  const double trueDeg = std::remainder(robot.headingDeg() - grid.headingDeg - northDeg, 360.0);
 
   // The belief: the explorer's cell and heading, the tracker's offset.
   const Pose p = run.explorer().pose();
@@ -71,7 +63,7 @@ TracePose tracePose(const MappingRun& run) {
   t.estYMm = tracker.yMm();
   t.estThetaMrad = tracker.thetaMrad();
 
-  t.trueThetaMrad = wrapDeg(trueDeg - 90.0 * t.headingQuarters) * kPi / 0.18;
+  t.trueThetaMrad = std::remainder(trueDeg - 90.0 * t.headingQuarters, 360.0) * kPi / 0.18;
   t.errXMm = t.trueXMm - (t.cellX * cellMm + t.estXMm);
   t.errYMm = t.trueYMm - (t.cellY * cellMm + t.estYMm);
   t.errThetaMrad = t.trueThetaMrad - t.estThetaMrad;
@@ -83,9 +75,10 @@ TracePose tracePose(const MappingRun& run) {
 }
 
 RunTrace::RunTrace(std::ostream& out) : out_(out) {
-  out_ << "step,action,value,sensor,reading_cm,reading,true_x_mm,true_y_mm,true_theta_mrad,cell_x,cell_y,heading,est_x_"
-          "mm,est_y_mm,"
-          "est_theta_mrad,err_x_mm,err_y_mm,err_theta_mrad,lost\n";
+  out_ << "step,action,value,sensor,reading_cm,reading,"
+          "true_x_mm,true_y_mm,true_theta_mrad,"
+          "cell_x,cell_y,heading,est_x_mm,est_y_mm,est_theta_mrad,"
+          "err_x_mm,err_y_mm,err_theta_mrad,lost\n";
 }
 
 void RunTrace::record(const MappingRun& run, uint64_t step, const DriveAction& done) {
