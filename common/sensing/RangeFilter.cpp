@@ -4,8 +4,9 @@ namespace nxtmap {
 
 RangeFilter::Verdict RangeFilter::verdictOf(uint8_t raw) const {
   if (raw == 255) return Verdict::NoEcho;
-  if (raw <= geometry_.minCm) return Verdict::TooNear;
-  if (raw > geometry_.maxCm) return Verdict::TooFar;
+  const int16_t cm = geometry_.trueCm(raw);  // the limits are true distances
+  if (cm <= geometry_.minCm) return Verdict::TooNear;
+  if (cm > geometry_.maxCm) return Verdict::TooFar;
   return Verdict::Accepted;
 }
 
@@ -31,9 +32,9 @@ bool RangeFilter::done() const {
 }
 
 namespace {
-// The mean of the values within kToleranceCm of their median (sorts `v` in place); n > 0.
+// The sum of the values within kToleranceCm of their median (sorts `v` in place); n > 0.
 // `near` is how many values went into it.
-int16_t meanNearMedian(uint8_t* v, uint8_t n, int16_t tolerance, uint8_t& near) {
+int16_t sumNearMedian(uint8_t* v, uint8_t n, int16_t tolerance, uint8_t& near) {
   for (uint8_t i = 1; i < n; ++i) {  // insertion sort: at most 10 values
     const uint8_t x = v[i];
     uint8_t j = i;
@@ -53,7 +54,7 @@ int16_t meanNearMedian(uint8_t* v, uint8_t n, int16_t tolerance, uint8_t& near) 
       ++near;
     }
   }
-  return static_cast<int16_t>((sum + near / 2) / near);
+  return sum;
 }
 }  // namespace
 
@@ -82,19 +83,19 @@ RangeReading RangeFilter::result() const {
     // Beyond the range: the echo's distance too when a majority of the samples agree on it.
     uint8_t n = 0;
     if (r.status == RangeStatus::TooFar && nFar > 0) {
-      const int16_t cm = meanNearMedian(far, nFar, kToleranceCm, n);
-      if (2 * n > count_) r.cm = cm;
+      const int16_t sum = sumNearMedian(far, nFar, kToleranceCm, n);
+      if (2 * n > count_) r.cm = geometry_.trueCm(sum, n);
     }
     return r;
   }
   uint8_t n = 0;
-  const int16_t cm = meanNearMedian(accepted, nAccepted, kToleranceCm, n);
+  const int16_t sum = sumNearMedian(accepted, nAccepted, kToleranceCm, n);
   if (2 * n <= count_) {
     r.status = RangeStatus::Inconsistent;
     return r;
   }
   r.status = RangeStatus::Good;
-  r.cm = cm;
+  r.cm = geometry_.trueCm(sum, n);
   return r;
 }
 

@@ -26,11 +26,25 @@ struct RangeGeometry {
   // cell (FaceLines), and the start's snap lays the nearest faces 2m past a cell edge. 0..cellCm / 4. (The
   // RAM-run firmware image has no room for it, nor for FaceLines: it keeps faces on edges.)
   int16_t faceMarginCm = 0;
+  // The sensor's linear error, as measured for its kind: raw = true * scalePer10k / 10000 + biasMm (the LEGO
+  // 9846 sensor: 0.9757 x + 1.88 cm, docs/nxt-sonar-and-odometry.md). RangeFilter takes it off every echo it
+  // reports, so a reading is the true distance; 10000 and 0 (the default): none. scalePer10k 5000..20000,
+  // |biasMm| <= 100.
+  int16_t scalePer10k = 10000;
+  int16_t biasMm = 0;
 #ifndef NXTMAP_NO_START_SQUARING
   constexpr bool facesAnywhere() const { return faceMarginCm > 0; }
 #else
   constexpr bool facesAnywhere() const { return false; }
 #endif
+
+  // The true distance (whole cm, rounded, 0..254) of an echo the sensor read as the mean of `n` (1..10) whole-cm
+  // samples summing to `sumCm` (each 0..254); with no linear error, the samples' mean rounded half up.
+  constexpr int16_t trueCm(int32_t sumCm, int32_t n = 1) const {
+    const int32_t mmTimesN = (sumCm * 10 - biasMm * n) * 10000 / scalePer10k;  // n times the true mm
+    const int32_t cm = (mmTimesN + 5 * n) / (10 * n);
+    return static_cast<int16_t>(cm < 0 ? 0 : (cm > 254 ? 254 : cm));
+  }
 
   // Cells a "nothing within range" reading proves free: those wholly inside the range.
   constexpr int16_t freeCells() const { return static_cast<int16_t>((2 * (maxCm + mountCm) - cellCm) / (2 * cellCm)); }

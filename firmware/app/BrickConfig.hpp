@@ -20,6 +20,7 @@ struct BrickConfig {
   MotionGeometry drive{56, 112, 100, 360};  // 10 cm cells
   int16_t minCm = 5, maxCm = 100, mountCm = 0;
   int16_t faceMarginCm = 0;  // the published raster worlds: faces on cell edges
+  int16_t sonarScalePer10k = 10000, sonarBiasMm = 0;  // readings as they come, as the published robot
   bool turnNeedsRoom = false;  // a point
   int16_t squareSweepMrad = 0;  // set down square on a cell's centre, as the published runs
 #else
@@ -30,6 +31,10 @@ struct BrickConfig {
   // Walls stand anywhere, not on the cells' edges: an echo marks the cell holding the face brought 3 cm nearer
   // (the sensor's per-pose error and whole-cm reading) and the pilot learns where faces lie (RangeGeometry).
   int16_t faceMarginCm = 3;
+  // The LEGO 9846 sensor's linear error, taken off every reading (RangeGeometry::scalePer10k, biasMm): raw =
+  // 0.9757 x true + 1.88 cm (docs/nxt-sonar-and-odometry.md). A sensor measured otherwise: its own fit here.
+  int16_t sonarScalePer10k = 9757;
+  int16_t sonarBiasMm = 19;
   // The 16 x 18 cm body sweeps 12 cm from its centre when it turns, more than half a cell: it turns only
   // where the four cells around it are known free (ExplorerConfig::turnNeedsRoom).
   bool turnNeedsRoom = true;
@@ -45,6 +50,8 @@ struct BrickConfig {
     c.geometry.maxCm = maxCm;
     c.geometry.mountCm = mountCm;
     c.geometry.faceMarginCm = faceMarginCm;
+    c.geometry.scalePer10k = sonarScalePer10k;
+    c.geometry.biasMm = sonarBiasMm;
     c.turnNeedsRoom = turnNeedsRoom;
     return c;
   }

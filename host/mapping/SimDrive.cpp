@@ -49,6 +49,10 @@ ExplorerConfig explorerConfigFor(const sim::World& world, const sim::RobotDescri
                                 beamHalfAngleDeg >= 0.0 ? beamHalfAngleDeg : sonar.coneHalfAngleDeg, robot.mountCm);
   e.geometry.blindCm = blindCm >= 0 ? static_cast<int16_t>(blindCm) : sonarBlindCm(sonar);
   e.geometry.faceMarginCm = static_cast<int16_t>(robot.faceMarginCm);
+  if (robot.correctsSonar) {
+    e.geometry.scalePer10k = static_cast<int16_t>(std::lround(sonar.rangeScale * 10000.0));
+    e.geometry.biasMm = static_cast<int16_t>(std::lround(sonar.biasCm * 10.0));
+  }
   e.turnNeedsRoom = robot.turnNeedsRoom();
   e.searchSliceStates = searchSliceStates;
   return e;

@@ -32,7 +32,8 @@ int16_t sonarBlindCm(const sim::SonarNoise& sonar);
 // variances; the values 0. Wheels without systematic errors are stored as known to 0.1 deg/m and 0.1 %.
 WheelCalibration storedCalibration(const sim::WheelNoise& wheels);
 // The explorer's configuration for a simulated robot on `world`: its sonar geometry (beamHalfAngleDeg < 0:
-// the sonar's cone; blindCm < 0: the sonar's blind zone), its body's room to turn, and the search slices.
+// the sonar's cone; blindCm < 0: the sonar's blind zone; the sonar's linear error when the robot corrects it), its
+// body's room to turn, and the search slices.
 ExplorerConfig explorerConfigFor(const sim::World& world, const sim::RobotDescription& robot,
                                  const sim::SonarNoise& sonar, double minRangeM, double rangeM, double beamHalfAngleDeg,
                                  int blindCm, uint16_t searchSliceStates);

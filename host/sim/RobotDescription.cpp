@@ -37,6 +37,7 @@ RobotDescription brick() {
   r.minRangeM = 0.07;
   r.rangeM = 1.2;
   r.faceMarginCm = 3;  // walls anywhere; 3 cm: the sensor's per-pose error and its whole-cm reading
+  r.correctsSonar = true;
   return r;
 }
 

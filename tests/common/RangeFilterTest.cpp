@@ -64,6 +64,32 @@ TEST(RangeFilter, SensorRulesFromTable) {
   }
 }
 
+TEST(RangeFilter, TakesTheSensorsLinearErrorOff) {
+  // The brick's geometry with the LEGO sensor's fit, raw = 0.9757 x true + 1.88 cm: readings are true distances,
+  // and so are the limits (7 cm, 1.2 m).
+  RangeGeometry g{20, 7, 120, 6};
+  g.scalePer10k = 9757;
+  g.biasMm = 19;
+  const std::vector<FilterCase> cases = {
+      {"a near wall reads long", {21, 21, 21}, RangeStatus::Good, 20, 3},
+      {"a far wall reads short", {100, 100, 100}, RangeStatus::Good, 101, 3},
+      {"the samples' mean is corrected, not each sample", {41, 42, 42}, RangeStatus::Good, 41, 3},
+      {"raw 9 cm is 7.3 cm: too near", {9, 9, 9}, RangeStatus::TooNear, 0, 3},
+      {"raw 10 cm is 8.3 cm: good", {10, 10, 10}, RangeStatus::Good, 8, 3},
+      {"raw 119 cm is 120.0 cm: good", {119, 119, 119}, RangeStatus::Good, 120, 3},
+      {"raw 120 cm is 121.0 cm: too far", {120, 120, 120}, RangeStatus::TooFar, 121, 3},
+      {"an echo beyond the range keeps its true distance", {180, 180, 180}, RangeStatus::TooFar, 183, 3},
+      {"the farthest echo stays a byte", {254, 254, 254}, RangeStatus::TooFar, 254, 3},
+      {"no echo stays no echo", {255, 255, 255}, RangeStatus::NoEcho, 0, 3},
+  };
+  for (const FilterCase& c : cases) {
+    const RangeReading r = RangeFilter::filter(g, c.raw.data(), static_cast<uint8_t>(c.raw.size()));
+    EXPECT_EQ(r.status, c.status) << c.name;
+    EXPECT_EQ(r.samples, c.samples) << c.name;
+    EXPECT_EQ(r.cm, c.cm) << c.name;
+  }
+}
+
 TEST(RangeFilter, NeverTakesMoreThanTenSamples) {
   RangeFilter f(RangeGeometry{});
   for (int i = 0; i < 30; ++i) f.add(static_cast<uint8_t>(i % 2 ? 255 : 40));
