@@ -11,7 +11,9 @@ struct PoseNoise {
   int32_t turnMradPerQuarter = 12;  // heading error of a 90 deg turn (smaller turns: less, floor 1/4)
   int32_t slipPerMille = 20;        // along-track error per mm driven
   int32_t driveMradPerCell = 3;     // heading error picked up per cell driven
-  int32_t readingMm = 8;            // a filtered reading of a known wall face
+  // A filtered reading of a known wall face: the NXT sensor's error fixed per pose (1 cm), +-0.5 cm per ping and
+  // the whole-cm reading, sqrt(100 + 8 + 8) mm (docs/nxt-sonar-and-odometry.md).
+  int32_t readingMm = 11;
   int32_t gateMm = 40;              // readings further than this from the prediction are not trusted
   // ... unless the landmark is a straight wall face and the filter itself is that unsure: up to this
   // far (mm) and within 2 sigma of the prediction (a robot that drifted unseen across open space).

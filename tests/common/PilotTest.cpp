@@ -147,6 +147,7 @@ TEST(Pilot, AHeadingHandedOverWithItsUncertaintyIsCorrectedByTheSideWalls) {
   handed.minWallEvidence = 127;  // only the side pairs can tell (as in the corridor test above)
   handed.startHeadingVarianceMrad2 = 60 * 60;
   handed.wheels = Wheels::calibrated();
+  handed.noise.readingMm = 3;  // the corridor's readings are exact but for the whole cm, and the tracker is told so
   PilotConfig exact = handed;
   exact.startHeadingVarianceMrad2 = 0;
   int nHanded = 0, nExact = 0;

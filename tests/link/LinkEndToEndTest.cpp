@@ -114,29 +114,34 @@ TEST(LinkEndToEnd, CleanLinkMapsTheRoomAndReachesAGoal) {
 // What the brick learns of its wheels reaches the PC (Counters): an uncalibrated robot's turn error and
 // drift, as the brick's pilot learnt them (the turns' error learnt the right way round in this small room).
 TEST(LinkEndToEnd, ThePcHearsWhatTheBrickLearntOfItsWheels) {
+  // An uncalibrated robot in a small room: what the brick learnt of its turns reaches the PC to the 10 ppm. One
+  // room's walls teach the turns' error with its sign in most runs, not all (measured, seeds 1-12: 9 of 12, RMS
+  // error 1.6 % against the true 2 %; a robot that learnt nothing keeps the store's 0 in all 12).
   const sim::World world = roomWorld();
-  SimBrickConfig c = brickConfig();
-  c.run.noise = *sim::noiseProfileByName("nxt-uncalibrated");
-  c.run.seed = 4;
-  SimBrick brick(world, c);
-  Session pc;
-  LinkHarness h(brick, pc, HarnessConfig{});
-  ASSERT_TRUE(h.runUntil([&] { return pc.connected(); }, 1000));
-  pc.explore();
-  ASSERT_TRUE(h.runUntil([&] { return brick.mode() == protocol::BrickMode::Done; }, 600000));
-  const uint32_t done = h.nowMs();
-  ASSERT_TRUE(h.runUntil([&] { return h.nowMs() > done + 3000; }, 5000));  // a Counters after the last drive
-  ASSERT_TRUE(pc.brickCounters().has_value());
-  const sim::WheelModel truth(c.run.noise.wheels, 5.6, 11.2, c.run.seed);
-  const double turnPct = pc.brickCounters()->wheelTurn10Ppm * 1e-3;
-  const double driftDegPerM = pc.brickCounters()->wheelDrift10UradPerM * 1e-5 * 57.29578;
-  std::printf("learnt turns %+.2f %% (true %+.2f), drift %+.2f deg/m (true %+.2f)\n", turnPct,
-              truth.systematicTurnError() * 100, driftDegPerM, truth.systematicDriftRadPerM() * 57.29578);
-  EXPECT_EQ(pc.brickCounters()->wheelTurn10Ppm, (brick.wheels().turnPpm + (brick.wheels().turnPpm >= 0 ? 5 : -5)) / 10);
-  EXPECT_EQ(pc.brickCounters()->wheelDrift10UradPerM,
-            (brick.wheels().driftUradPerM + (brick.wheels().driftUradPerM >= 0 ? 5 : -5)) / 10);
-  EXPECT_GT(turnPct * truth.systematicTurnError(), 0.0);  // the same sign
-  EXPECT_GT(std::abs(turnPct), 1.0);                      // learnt, not the store's 0
+  int learnt = 0;
+  for (uint64_t seed = 1; seed <= 12; ++seed) {
+    SimBrickConfig c = brickConfig();
+    c.run.noise = *sim::noiseProfileByName("nxt-uncalibrated");
+    c.run.seed = seed;
+    SimBrick brick(world, c);
+    Session pc;
+    LinkHarness h(brick, pc, HarnessConfig{});
+    ASSERT_TRUE(h.runUntil([&] { return pc.connected(); }, 1000)) << seed;
+    pc.explore();
+    ASSERT_TRUE(h.runUntil([&] { return brick.mode() == protocol::BrickMode::Done; }, 600000)) << seed;
+    const uint32_t done = h.nowMs();
+    ASSERT_TRUE(h.runUntil([&] { return h.nowMs() > done + 3000; }, 5000));  // a Counters after the last drive
+    ASSERT_TRUE(pc.brickCounters().has_value()) << seed;
+    EXPECT_EQ(pc.brickCounters()->wheelTurn10Ppm, (brick.wheels().turnPpm + (brick.wheels().turnPpm >= 0 ? 5 : -5)) / 10)
+        << seed;
+    EXPECT_EQ(pc.brickCounters()->wheelDrift10UradPerM,
+              (brick.wheels().driftUradPerM + (brick.wheels().driftUradPerM >= 0 ? 5 : -5)) / 10)
+        << seed;
+    const sim::WheelModel truth(c.run.noise.wheels, 5.6, 11.2, c.run.seed);
+    const double turnPct = pc.brickCounters()->wheelTurn10Ppm * 1e-3;
+    if (turnPct * truth.systematicTurnError() > 0.0 && std::abs(turnPct) > 0.5) ++learnt;  // its sign, not the 0
+  }
+  EXPECT_GE(learnt, 8);
 }
 
 TEST(LinkEndToEnd, FivePercentDamagedBytesAndADisconnectLoseNothingAndRunNothingTwice) {
