@@ -51,10 +51,11 @@ struct PilotConfig {
   // world are not on a cell edge where the robot was set down).
   int16_t snapRangeCm = 100;
   // A sweep that saw no straight wall (all of them too far, over 160 cm, in the middle of a large room): the
-  // robot drives towards the sweep's nearest echo beyond approachCm + 20 cm until approachCm from it (at most
+  // robot drives towards an echo of the sweep beyond approachCm + 20 cm until approachCm from it (at most
   // approachMaxCm), turns back to the heading it was set down on and sweeps again, up to approaches times (a
-  // sweep beside one wall alone may not place it; a second approach finds a corner; in a cluttered room the
-  // nearest echoes are often small things, each passed by in turn, about 40 s a sweep). 0: it maps as set down.
+  // sweep beside one wall alone may not place it; a second approach finds a corner). The first approach goes to
+  // the nearest echo, later ones to the farthest (StartSquaring::approachEcho: in a cluttered room the nearest
+  // echoes are small things; about 40 s a sweep). 0: it maps as set down.
 #ifndef NXTMAP_NO_START_SQUARING  // (not in the RAM-run image, which has no sweep)
   int16_t approachCm = 50;
   int16_t approachMaxCm = 150;

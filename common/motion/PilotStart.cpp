@@ -50,9 +50,9 @@ DriveAction Pilot::square(const DriveEvent& e) {
 
 #ifndef NXTMAP_NO_START_SQUARING
 void Pilot::approachIfFar() {
-  // No straight wall within the sweep's reach: towards the nearest echo (the sweep ended at its zero, off by
-  // the residual), PilotConfig::approachCm.
-  const StartSquaring::Echo& n = squaring_.nearestEcho();
+  // No straight wall within the sweep's reach: towards an echo (StartSquaring::approachEcho; the sweep ended at its
+  // zero, off by the residual), PilotConfig::approachCm.
+  const StartSquaring::Echo& n = squaring_.approachEcho();
   const int32_t driveCm = n.cm - config_.approachCm;
   if (squaring_.result().found || approached_ >= config_.approaches || config_.approachCm <= 0 || !n.seen ||
       driveCm < 20)

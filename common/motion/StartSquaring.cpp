@@ -33,7 +33,7 @@ DriveAction StartSquaring::begin() {
   headingMrad_ = targetMrad_ = 0;
   readings_ = samples_ = turnedMrad_ = 0;
   stalled_ = false;
-  nearest_ = Echo{};
+  target_ = Echo{};
   return turn(Phase::ToStart, -sweepMrad_);
 }
 
@@ -59,10 +59,13 @@ DriveAction StartSquaring::readNext() {
 }
 
 void StartSquaring::noteEcho(Sensor s, int16_t cm) {
-  if (cm < approachFromCm_ || (nearest_.seen && cm >= nearest_.cm)) return;
+  if (cm < approachFromCm_) return;
+  const bool farthest = approaches_ > 0;  // see approachEcho()
+  if (farthest && cm > kFarthestCm) return;
+  if (target_.seen && (farthest ? cm <= target_.cm : cm >= target_.cm)) return;
   const int32_t mrad = withinHalfTurn(headingMrad_ + static_cast<int32_t>(s) * WallDirection::kQuarterMrad);
   if (avoiding_ && abs32(withinHalfTurn(mrad - avoidMrad_)) < 2 * WallDirection::kQuarterMrad / 3) return;
-  nearest_ = Echo{true, mrad, cm};
+  target_ = Echo{true, mrad, cm};
 }
 
 DriveAction StartSquaring::step(const DriveEvent& e) {

@@ -27,19 +27,24 @@ class StartSquaring {
   const WallDirectionEstimate& result() const { return result_; }
   // The robot's heading minus the walls' axis it turned onto, as the encoders tell it (mrad, + clockwise).
   int32_t residualMrad() const { return headingMrad_ - targetMrad_; }
-  // The nearest echo of the sweep at least approachFromCm away (a wall or a thing to drive towards when the sweep
-  // found no wall): its direction from the sweep's zero (mrad, + clockwise, -pi..pi) and range (cm).
+  // The echo of the sweep to drive towards when it found no wall, at least approachFromCm away: its direction from
+  // the sweep's zero (mrad, + clockwise, -pi..pi) and range (cm). The nearest at first (in most rooms a wall is
+  // near); once an approach found no wall there (avoid()), the farthest up to kFarthestCm: the nearer echoes are
+  // things standing in a large room, and what bounds a room is its walls. (Farther echoes come off walls at a
+  // slant, towards a corner: in an empty 4.4 m room an approach there ended beside one wall, 7 degrees off.)
+  static constexpr int16_t kFarthestCm = 230;
   struct Echo {
     bool seen = false;
     int32_t mrad = 0;
     int16_t cm = 0;
   };
-  const Echo& nearestEcho() const { return nearest_; }
-  // Echoes within a sixth of a turn of `mrad` (from the sweep's zero) are not the nearest echo from now on: the
-  // wall an approach went to (kept across begin()).
+  const Echo& approachEcho() const { return target_; }
+  // Echoes within a sixth of a turn of `mrad` (from the sweep's zero) are not taken from now on: the way an
+  // approach went (kept across begin()), and from now on the farthest echo is taken.
   void avoid(int32_t mrad) {
     avoiding_ = true;
     avoidMrad_ = mrad;
+    if (approaches_ < 255) ++approaches_;
   }
   uint32_t readings() const { return readings_; }
   uint32_t samples() const { return samples_; }
@@ -54,8 +59,9 @@ class StartSquaring {
 
   int32_t sweepMrad_, stepMrad_;
   int16_t approachFromCm_;
-  Echo nearest_;
+  Echo target_;
   bool avoiding_ = false;
+  uint8_t approaches_ = 0;  // avoid() calls: approaches made
   int32_t avoidMrad_ = 0;
   Phase phase_ = Phase::Idle;
   WallDirection walls_;
