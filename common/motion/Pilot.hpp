@@ -160,7 +160,9 @@ class Pilot {
   DriveAction square(const DriveEvent& e);  // the start's sweep (Phase::Square)
   DriveAction snap(const DriveEvent& e);    // once square, the cell's lattice laid on the nearest walls
   DriveAction approach(const DriveEvent& e);
-  void approachIfFar();  // after a sweep that saw no straight wall: Phase::Approach when there is one to take  // Phase::Approach: towards the nearest echo, back, sweep again
+  // After a sweep that saw no straight wall: Phase::Approach (towards an echo, back, sweep again) when there is
+  // one to take (StartSquaring::approachEcho).
+  void approachIfFar();
   DriveAction begin(const Action& a);
 #ifndef NXTMAP_NO_START_SQUARING
   DriveAction turnStalled(const DriveEvent& e);  // Phase::Turn's rotation stalled: turn back
@@ -197,7 +199,7 @@ class Pilot {
   StartSquaring squaring_;        // calibration and the turn correction (PilotConfig's are ignored there)
   TurnCalibration calibration_;
   int32_t turnErrorPpm_;  // the turn error every rotation is corrected by, ppm (see PilotConfig::wheels)
-  FaceLines faces_;  // the learnt faces of the walls read for the pose (faces anywhere only)
+  FaceLines faces_;       // the learnt faces of the walls read for the pose (faces anywhere only)
   // Phase::Snap: per axis (0 across the start heading's columns, 1 along its rows) the nearest wall's
   // distance from the robot's centre (mm, 0 = none yet) and the offset from the cell centre that puts its
   // face on a cell edge (mm, the tracker's x and y).

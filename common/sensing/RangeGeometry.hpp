@@ -67,7 +67,9 @@ struct RangeGeometry {
   }
   // Where a wall cell k cells out is taken to have its face, mm from the cell centre, until learnt otherwise:
   // (k - 1/2) cells, plus 2 * faceMarginCm past the edge when faces lie anywhere (where the snap lays them).
-  constexpr int32_t faceMm(int32_t k) const { return (2 * k - 1) * cellCm * 5 + (facesAnywhere() ? 20 * faceMarginCm : 0); }
+  constexpr int32_t faceMm(int32_t k) const {
+    return (2 * k - 1) * cellCm * 5 + (facesAnywhere() ? 20 * faceMarginCm : 0);
+  }
 };
 
 }  // namespace nxtmap

@@ -19,10 +19,10 @@ struct BrickConfig {
 #if defined(NXTMAP_SIM_GEOMETRY)
   MotionGeometry drive{56, 112, 100, 360};  // 10 cm cells
   int16_t minCm = 5, maxCm = 100, mountCm = 0;
-  int16_t faceMarginCm = 0;  // the published raster worlds: faces on cell edges
+  int16_t faceMarginCm = 0;                           // the published raster worlds: faces on cell edges
   int16_t sonarScalePer10k = 10000, sonarBiasMm = 0;  // readings as they come, as the published robot
-  bool turnNeedsRoom = false;  // a point
-  int16_t squareSweepMrad = 0;  // set down square on a cell's centre, as the published runs
+  bool turnNeedsRoom = false;                         // a point
+  int16_t squareSweepMrad = 0;                        // set down square on a cell's centre, as the published runs
 #else
   MotionGeometry drive{};  // 56 mm wheels, 112 mm track, 200 mm cells
   int16_t minCm = 7;       // the LEGO sensor is unreliable closer than this

@@ -132,7 +132,8 @@ TEST(LinkEndToEnd, ThePcHearsWhatTheBrickLearntOfItsWheels) {
     const uint32_t done = h.nowMs();
     ASSERT_TRUE(h.runUntil([&] { return h.nowMs() > done + 3000; }, 5000));  // a Counters after the last drive
     ASSERT_TRUE(pc.brickCounters().has_value()) << seed;
-    EXPECT_EQ(pc.brickCounters()->wheelTurn10Ppm, (brick.wheels().turnPpm + (brick.wheels().turnPpm >= 0 ? 5 : -5)) / 10)
+    EXPECT_EQ(pc.brickCounters()->wheelTurn10Ppm,
+              (brick.wheels().turnPpm + (brick.wheels().turnPpm >= 0 ? 5 : -5)) / 10)
         << seed;
     EXPECT_EQ(pc.brickCounters()->wheelDrift10UradPerM,
               (brick.wheels().driftUradPerM + (brick.wheels().driftUradPerM >= 0 ? 5 : -5)) / 10)
