@@ -60,7 +60,7 @@ DriveAction StartSquaring::readNext() {
 
 void StartSquaring::noteEcho(Sensor s, int16_t cm) {
   if (cm < approachFromCm_) return;
-  const bool farthest = approaches_ > 0;  // see approachEcho()
+  const bool farthest = avoiding_;  // see approachEcho()
   if (farthest && cm > kFarthestCm) return;
   if (target_.seen && (farthest ? cm <= target_.cm : cm >= target_.cm)) return;
   const int32_t mrad = withinHalfTurn(headingMrad_ + static_cast<int32_t>(s) * WallDirection::kQuarterMrad);

@@ -44,7 +44,6 @@ class StartSquaring {
   void avoid(int32_t mrad) {
     avoiding_ = true;
     avoidMrad_ = mrad;
-    if (approaches_ < 255) ++approaches_;
   }
   uint32_t readings() const { return readings_; }
   uint32_t samples() const { return samples_; }
@@ -60,8 +59,7 @@ class StartSquaring {
   int32_t sweepMrad_, stepMrad_;
   int16_t approachFromCm_;
   Echo target_;
-  bool avoiding_ = false;
-  uint8_t approaches_ = 0;  // avoid() calls: approaches made
+  bool avoiding_ = false;  // an approach was made (avoid())
   int32_t avoidMrad_ = 0;
   Phase phase_ = Phase::Idle;
   WallDirection walls_;
