@@ -15,6 +15,16 @@ struct FilterCase {
   uint8_t samples;  // raw samples consumed
 };
 
+// Each case through the filter: its status, samples and range (cm is 0 where there is no range).
+void expectFiltered(const RangeGeometry& g, const std::vector<FilterCase>& cases) {
+  for (const FilterCase& c : cases) {
+    const RangeReading r = RangeFilter::filter(g, c.raw.data(), static_cast<uint8_t>(c.raw.size()));
+    EXPECT_EQ(r.status, c.status) << c.name;
+    EXPECT_EQ(r.samples, c.samples) << c.name;
+    EXPECT_EQ(r.cm, c.cm) << c.name;
+  }
+}
+
 TEST(RangeFilter, SensorRulesFromTable) {
   const RangeGeometry g{10, 5, 100, 0};
   const std::vector<FilterCase> cases = {
@@ -54,14 +64,7 @@ TEST(RangeFilter, SensorRulesFromTable) {
        0,
        10},
   };
-  for (const FilterCase& c : cases) {
-    const RangeReading r = RangeFilter::filter(g, c.raw.data(), static_cast<uint8_t>(c.raw.size()));
-    EXPECT_EQ(r.status, c.status) << c.name;
-    EXPECT_EQ(r.samples, c.samples) << c.name;
-    if (c.status == RangeStatus::Good || c.status == RangeStatus::TooFar) {
-      EXPECT_EQ(r.cm, c.cm) << c.name;
-    }
-  }
+  expectFiltered(g, cases);
 }
 
 TEST(RangeFilter, TakesTheSensorsLinearErrorOff) {
@@ -82,12 +85,7 @@ TEST(RangeFilter, TakesTheSensorsLinearErrorOff) {
       {"the farthest echo stays a byte", {254, 254, 254}, RangeStatus::TooFar, 254, 3},
       {"no echo stays no echo", {255, 255, 255}, RangeStatus::NoEcho, 0, 3},
   };
-  for (const FilterCase& c : cases) {
-    const RangeReading r = RangeFilter::filter(g, c.raw.data(), static_cast<uint8_t>(c.raw.size()));
-    EXPECT_EQ(r.status, c.status) << c.name;
-    EXPECT_EQ(r.samples, c.samples) << c.name;
-    EXPECT_EQ(r.cm, c.cm) << c.name;
-  }
+  expectFiltered(g, cases);
 }
 
 TEST(RangeFilter, NeverTakesMoreThanTenSamples) {
