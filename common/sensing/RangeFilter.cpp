@@ -2,20 +2,11 @@
 
 namespace nxtmap {
 
-RangeFilter::RangeFilter(const RangeGeometry& geometry) : geometry_(geometry) {
-  // Once, not per sample: the largest raw readings still at or below each limit (-1: none).
-  rawNear_ = rawFar_ = -1;
-  for (int16_t raw = 0; raw < 255; ++raw) {
-    const int16_t cm = geometry_.trueCm(raw);
-    if (cm <= geometry_.minCm) rawNear_ = raw;
-    if (cm <= geometry_.maxCm) rawFar_ = raw;
-  }
-}
-
 RangeFilter::Verdict RangeFilter::verdictOf(uint8_t raw) const {
   if (raw == 255) return Verdict::NoEcho;
-  if (raw <= rawNear_) return Verdict::TooNear;
-  if (raw > rawFar_) return Verdict::TooFar;
+  const int16_t cm = geometry_.trueCm(raw);  // the limits are true distances
+  if (cm <= geometry_.minCm) return Verdict::TooNear;
+  if (cm > geometry_.maxCm) return Verdict::TooFar;
   return Verdict::Accepted;
 }
 

@@ -16,7 +16,7 @@ class RangeFilter {
   static constexpr uint8_t kAgree = 3;
   static constexpr int16_t kToleranceCm = 4;  // spread accepted around the median
 
-  explicit RangeFilter(const RangeGeometry& geometry);
+  explicit RangeFilter(const RangeGeometry& geometry) : geometry_(geometry) {}
 
   void reset() { count_ = 0; }
   // Adds one raw sample (ignored once done()).
@@ -34,9 +34,6 @@ class RangeFilter {
   Verdict verdictOf(uint8_t raw) const;
 
   RangeGeometry geometry_;
-  // The limits as raw samples (cm): a sample at or below rawNear_ is too near, above rawFar_ too far (the
-  // geometry's minCm and maxCm are true distances; RangeGeometry::trueCm rises with the raw reading).
-  int16_t rawNear_ = 0, rawFar_ = 0;
   uint8_t raw_[kMaxSamples] = {};
   uint8_t count_ = 0;
 };
