@@ -135,11 +135,14 @@ class BlueCore {
     sent_ = false;
   }
   // The link is gone (CMD line low): the PC's unread bytes and the bytes still queued for it are
-  // dropped, the transmitter stops (RSTTX abandons the byte being shifted out), and only then ARM7_CMD
+  // dropped, the transmitter stops (its PDC's counters zeroed, both buffers; RSTTX abandons the byte
+  // being shifted out), and only then ARM7_CMD
   // goes low: from here every byte to the module is a command again.
   void leaveStream(uint32_t nowMs) {
     using namespace reg;
     bus_.write(kUs1Ptcr, 1u << 9);  // TXTDIS
+    bus_.write(kUs1Tcr, 0);         // the PDC keeps both counters: a stale next buffer (TNCR) would
+    bus_.write(kUs1Tncr, 0);        // follow the next command with old stream bytes
     bus_.write(kUs1Cr, 1u << 3);    // RSTTX
     bus_.write(kUs1Cr, 1u << 6);    // TXEN
     tx_.clear();

@@ -14,7 +14,8 @@ using namespace reg;
 // USART1 + PDC + the BC4 module at register level. The module answers OPEN_PORT, ACCEPT_CONNECTION
 // and OPEN_STREAM (raising its CMD line, read through ADC channel 6), checks the ARM's checksum rule,
 // and while the ARM holds ARM7_CMD high exchanges raw bytes (data mode). A PDC transfer may be held
-// (holdTx) to stand for bytes still on their way; TXTDIS abandons it. Bytes to the ARM go through the
+// (holdTx) to stand for bytes still on their way; TXTDIS abandons it, and its counters keep what was
+// left (as the PDC's do: a transfer enabled later sends TCR bytes, then TNCR bytes from TNPR). Bytes to the ARM go through the
 // receive PDC (RPR/RCR chained to RNPR/RNCR) and only while RTS is low: hardware handshaking holds RTS
 // high while the receiver is off or RCR = RNCR = 0 (deliver()).
 struct Bc4 {
@@ -59,9 +60,13 @@ struct Bc4 {
         resetHeld = false;
         if (indicateReset) reply(0x14, {});  // RESET_INDICATION
       }
-      if (a == kUs1Ptcr && (v & (1u << 8))) {  // TXTEN: the PDC sends TCR bytes from TPR at once
+      if (a == kUs1Ptcr && (v & (1u << 8))) {  // TXTEN: TCR bytes from TPR, then TNCR from TNPR
         const uint8_t* p = bus.pointer(bus.regs[kUs1Tpr]);
         heldTx.assign(p, p + bus.regs[kUs1Tcr]);
+        if (bus.regs[kUs1Tncr] != 0) {
+          const uint8_t* q = bus.pointer(bus.regs[kUs1Tnpr]);
+          heldTx.insert(heldTx.end(), q, q + bus.regs[kUs1Tncr]);
+        }
         if (!holdTx) releaseTx();
       }
     };
@@ -90,6 +95,7 @@ struct Bc4 {
     heldTx.clear();
     for (uint8_t b : bytes) received(b);
     bus.regs[kUs1Tcr] = 0;
+    bus.regs[kUs1Tncr] = 0;
   }
   void reply(uint8_t code, std::vector<uint8_t> payload) {
     std::vector<uint8_t> f{static_cast<uint8_t>(payload.size() + 3), code};
@@ -270,6 +276,36 @@ TEST(BlueCore, LosingTheLinkMidTransferSendsNoStreamByteAsACommand) {
   }
   EXPECT_NE(stopAt, 0u);
   EXPECT_LT(stopAt, lowAt);
+}
+
+// A transfer round the transmit ring's end goes as two PDC buffers (TCR, then TNCR). Lost mid-way,
+// neither buffer's rest may follow the next command: the PDC keeps both counters until they are
+// written, and a stale TNCR would send old stream bytes behind OPEN_PORT, in command mode.
+TEST(BlueCore, LosingTheLinkMidAWrappedTransferSendsNoStaleByteAfterTheNextCommand) {
+  Bc4 m;
+  BlueCore<FakeBus> bt(m.bus);
+  uint32_t now = 0;
+  toStream(m, bt, now);
+  const std::array<uint8_t, 30> frame{0x1C, 0x00, 0xEE, 0xEE, 0xEE, 0xEE, 0xEE, 0xEE, 0xEE, 0xEE,
+                                      0xEE, 0xEE, 0xEE, 0xEE, 0xEE, 0xEE, 0xEE, 0xEE, 0xEE, 0xEE};
+  m.holdTx = true;  // frames for the PC, each still on its way, until one crosses the ring's end
+  for (int i = 0; i < 40 && m.bus.regs[kUs1Tncr] == 0; ++i) {
+    m.releaseTx();
+    runMs(m, bt, now, 1);
+    ASSERT_TRUE(bt.write(frame.data(), frame.size()));
+  }
+  ASSERT_NE(m.bus.regs[kUs1Tncr], 0u) << "a frame must go as two buffers";
+  m.cmdLine = false;
+  m.commands.clear();
+  m.holdTx = false;
+  runMs(m, bt, now, 5);
+  EXPECT_FALSE(m.badChecksum) << "a stream byte reached the module as part of a command";
+  EXPECT_TRUE(m.partial.empty()) << "stream bytes wait in the module as the start of a command";
+  ASSERT_FALSE(m.commands.empty());
+  for (const auto& c : m.commands) EXPECT_EQ(c[1], 0x03) << "only OPEN_PORT after the loss";
+  m.requestConnection();
+  runMs(m, bt, now, 10);
+  EXPECT_TRUE(bt.streaming()) << "the next PC is accepted";
 }
 
 TEST(BlueCore, TheNextPcIsAcceptedAfterALinkLoss) {
