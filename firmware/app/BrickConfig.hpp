@@ -19,6 +19,7 @@ struct BrickConfig {
 #if defined(NXTMAP_SIM_GEOMETRY)
   MotionGeometry drive{56, 112, 100, 360};  // 10 cm cells
   int16_t minCm = 5, maxCm = 100, mountCm = 0;
+  int16_t blindCm = 0;                                // a near obstacle reads too near (the published model)
   int16_t faceMarginCm = 0;                           // the published raster worlds: faces on cell edges
   int16_t sonarScalePer10k = 10000, sonarBiasMm = 0;  // readings as they come, as the published robot
   bool turnNeedsRoom = false;                         // a point
@@ -28,6 +29,9 @@ struct BrickConfig {
   int16_t minCm = 7;       // the LEGO sensor is unreliable closer than this
   int16_t maxCm = 120;     // and beyond this
   int16_t mountCm = 6;     // sensor faces ahead of the robot's centre
+  // Nearer than this the LEGO sensor returns no echo at all (about 7 cm, docs/nxt-sonar-and-odometry.md): "no
+  // echo" does not vouch for a cell reaching into it (RangeGeometry::blindCm).
+  int16_t blindCm = 7;
   // Walls stand anywhere, not on the cells' edges: an echo marks the cell holding the face brought 3 cm nearer
   // (the sensor's per-pose error and whole-cm reading) and the pilot learns where faces lie (RangeGeometry).
   int16_t faceMarginCm = 3;
@@ -49,6 +53,7 @@ struct BrickConfig {
     c.geometry.minCm = minCm;
     c.geometry.maxCm = maxCm;
     c.geometry.mountCm = mountCm;
+    c.geometry.blindCm = blindCm;
     c.geometry.faceMarginCm = faceMarginCm;
     c.geometry.scalePer10k = sonarScalePer10k;
     c.geometry.biasMm = sonarBiasMm;
