@@ -8,8 +8,10 @@
 #include <sstream>
 
 #include "host/cli/Args.hpp"
+#include "host/cli/EmulatedMapScore.hpp"
 #include "host/cli/Errors.hpp"
 #include "host/cli/LcdSeries.hpp"
+#include "host/cli/RadioMirror.hpp"
 #include "host/emu/EmulatedRun.hpp"
 #include "host/emu/LinkServer.hpp"
 #include "host/fileio/OutputTarget.hpp"
@@ -41,6 +43,9 @@ CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
                 "tools may come and go); default disconnect with --listen, else explored (the time limit always "
                 "applies)");
   c->add_option("--enter-at", o.enterAt, "emulated second at which Enter is pressed, < 0 never (default 1)");
+  c->add_flag("--score", o.score,
+              "a PC listens on the radio and keeps the map the brick streams (as the console would); at the end that "
+              "map is scored against the world: detected, wrong cells, unsafe free (not with --listen)");
   return c;
 }
 
@@ -65,6 +70,7 @@ int runEmulate(const EmulateOptions& o) {
   if (until != "explored" && until != "disconnect" && until != "time")
     throw CliError("--until must be explored, disconnect or time, not '" + o.until + "'");
   if (until == "disconnect" && o.listen.empty()) throw CliError("--until disconnect needs --listen");
+  if (o.score && !o.listen.empty()) throw CliError("--score listens on the radio itself: not with --listen");
   run.stopWhenExplored = until == "explored";
   run.stopWhenPcLeaves = until == "disconnect";
   std::string lcdError;  // --lcd is checked before the run (a missing folder, a device): nothing written yet
@@ -104,9 +110,29 @@ int runEmulate(const EmulateOptions& o) {
   std::unique_ptr<LcdSeries> series;
   std::unique_ptr<emu::EmulatedRun> holder;
   std::string seriesError;
-  if (o.lcdEvery > 0.0) {
+  if (o.lcdEvery > 0.0)
     series = std::make_unique<LcdSeries>(o.lcd, static_cast<uint64_t>(o.lcdEvery * static_cast<double>(emu::kMckHz)));
-    run.onEvent = [&](uint64_t cycles) { return !series->poll(cycles, holder->brick().lcd(), seriesError); };
+  std::unique_ptr<RadioMirror> mirror;
+  if (o.score) {
+    mirror = std::make_unique<RadioMirror>();
+    run.brick.link = mirror->endpoint();
+    run.stopWhenExplored = false;  // the run ends once the map's last changes have come over the radio
+  }
+  const bool untilExplored = until == "explored";
+  bool explorerStarted = false;
+  ExplorerStart start;
+  if (series || mirror) {
+    run.onEvent = [&](uint64_t cycles) {
+      if (series && !series->poll(cycles, holder->brick().lcd(), seriesError)) return true;
+      if (!mirror) return false;
+      if (!explorerStarted && mirror->map().known() > 0) {  // the explorer's first cells: the sweep is over
+        explorerStarted = true;
+        const sim::SimRobot& r = holder->brick().robot();
+        start = ExplorerStart{sim::Vec2(r.xCm(), r.yCm()), r.headingDeg()};
+      }
+      const bool explored = untilExplored && holder->readSymbolByte("g_explorerDone").value_or(0) == 1;
+      return mirror->step(static_cast<uint32_t>(cycles / (emu::kMckHz / 1000)), explored);
+    };
   }
   holder = std::make_unique<emu::EmulatedRun>(*load.image, site, run);
   emu::EmulatedRun& emulated = *holder;
@@ -142,6 +168,18 @@ int runEmulate(const EmulateOptions& o) {
       << " bytes to the PC, " << r.btFromPc << " from it\n"
       << "robot            x " << num(r.xCm) << " cm, y " << num(r.yCm) << " cm, heading " << num(r.headingDeg)
       << " deg, driven " << num(r.drivenCm) << " cm\n";
+  if (mirror) {
+    const mapping::MapScore m =
+        scoreEmulatedMap(emulated.brick(), mirror->map(), mirror->believedCell(), start, run.brick.noise.sonar);
+    out << "detected         " << num(m.detectedPct()) << " % of the observable occupied cells (" << m.detectedOccupied
+        << " of " << m.observableOccupied << "), in the map that came over the radio\n"
+        << "wrong cells      " << m.wrongCells << " (unsafe free " << m.unsafeFree << ", phantom occupied "
+        << m.phantomOccupied << ")\n"
+        << "aligned          map turned " << num(m.alignRotationDeg) << " deg, moved " << num(m.alignShiftCol) << ","
+        << num(m.alignShiftRow) << " cells to fit the world best: detected " << num(m.detectedPctAligned())
+        << " %, wrong " << m.wrongCellsAligned << "\n"
+        << "lost             " << (m.lost ? "yes: the brick believes it stands in another cell" : "no") << "\n";
+  }
   std::cout << out.str() << std::flush;
   if (!o.lcd.empty()) {
     std::string error;

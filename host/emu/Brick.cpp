@@ -10,10 +10,11 @@ namespace {
 constexpr uint64_t kCrosstalkWindow = kMckHz / 1000 * 30;  // pings within 30 ms hear each other
 
 // The robot set down in the site as the configuration says.
-sim::SimRobot robotFor(const sim::Site& site, const BrickConfig& c) {
-  const sim::RobotPlacement placed =
-      sim::placeRobot(site, sim::PlacementRequest{c.robot, c.startPose, c.startCol, c.startRow, c.heading,
-                                                  c.startJitterDeg, c.seed, c.mountOffsetCm});
+sim::RobotPlacement placementFor(const sim::Site& site, const BrickConfig& c) {
+  return sim::placeRobot(site, sim::PlacementRequest{c.robot, c.startPose, c.startCol, c.startRow, c.heading,
+                                                     c.startJitterDeg, c.seed, c.mountOffsetCm});
+}
+sim::SimRobot robotFor(const sim::RobotPlacement& placed, const BrickConfig& c) {
   return sim::SimRobot(placed.scene, placed.robot, placed.grid.frame, placed.start.cm, placed.start.headingDeg, c.noise,
                        c.seed, 255.0);
 }
@@ -23,7 +24,8 @@ Brick::Brick(const ElfImage& image, const sim::World& world, const BrickConfig& 
     : Brick(image, sim::siteFromRaster(world), c) {}
 
 Brick::Brick(const ElfImage& image, const sim::Site& site, const BrickConfig& c)
-    : robot_(robotFor(site, c)),
+    : placement_(placementFor(site, c)),
+      robot_(robotFor(placement_, c)),
       machine_(image, c.machine),
       pioa_(machine_.clock()),
       twi_(machine_.clock(), avr_),

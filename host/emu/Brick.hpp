@@ -22,6 +22,7 @@
 #include "host/emu/UltrasonicSensor.hpp"
 #include "host/emu/Usart.hpp"
 #include "host/sim/NoiseProfile.hpp"
+#include "host/sim/RobotPlacement.hpp"
 #include "host/sim/SimRobot.hpp"
 #include "host/sim/Site.hpp"
 #include "host/sim/World.hpp"
@@ -60,6 +61,10 @@ class Brick {
   Machine& machine() { return machine_; }
   const Machine& machine() const { return machine_; }
   sim::SimRobot& robot() { return robot_; }
+  const sim::SimRobot& robot() const { return robot_; }
+  // Where the robot was set down: its grid (the explorer's cell (0, 0) is grid.startCol/startRow, facing
+  // heading) and the truth on it.
+  const sim::RobotPlacement& placement() const { return placement_; }
   const AvrModel& avr() const { return avr_; }
   AvrModel& avr() { return avr_; }
   const Lcd& lcd() const { return lcd_; }
@@ -79,6 +84,7 @@ class Brick {
  private:
   bool othersFiring(int port) const;
 
+  sim::RobotPlacement placement_;
   sim::SimRobot robot_;
   Machine machine_;
   AvrModel avr_;

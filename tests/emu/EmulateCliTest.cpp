@@ -32,6 +32,8 @@ TEST(EmulateCli, RejectsBadOptionsWithOneLine) {
                    "--until must be explored, disconnect or time, not 'soon'");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --until disconnect"),
                    "--until disconnect needs --listen");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --score --listen pty"),
+                   "--score listens on the radio itself: not with --listen");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --firmware /nonexistent/fw.elf"), "make firmware");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --firmware README.md"), "not an ELF");
   expectUsageError(
@@ -71,6 +73,28 @@ TEST(EmulateCli, ForeignFirmwareSaysItsRamIsNotMeasured) {
 }
 
 #ifdef NXTMAP_EMU_FIRMWARE_DIR
+// --score: the map that came over the radio, scored against the world. The published-geometry image on a
+// published room without noise maps it as the host does (EndToEnd): every observable wall cell, no wrong cell,
+// the robot where it believes it is; and a room the image cannot see whole is scored as it is (not 100 %).
+TEST(EmulateCli, ScoreRatesTheMapThatCameOverTheRadio) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "a whole room at emulation speed: make test runs this from the Release build";
+#endif
+  const std::string sim = shellQuote(std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap-sim.elf");
+  const RunOutput r = runCli("emulate " + kRoom + " --start 1,20 --score --firmware " + sim);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("PC connected, stream mode"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("detected         100 % of the observable occupied cells"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("wrong cells      0 (unsafe free 0, phantom occupied 0)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("lost             no"), std::string::npos) << r.out;
+  const RunOutput cut = runCli("emulate " + kRoom + " --start 1,20 --score --seconds 60 --firmware " + sim);
+  EXPECT_EQ(cut.exitCode, 0) << cut.err;
+  EXPECT_NE(cut.out.find("time limit reached"), std::string::npos) << cut.out;
+  EXPECT_NE(cut.out.find("detected         "), std::string::npos) << cut.out;
+  EXPECT_EQ(cut.out.find("detected         100 %"), std::string::npos) << "a minute of a room is not all of it\n"
+                                                                       << cut.out;
+}
+
 TEST(EmulateCli, RealFirmwareRunPrintsMeasurementsAndLcd) {
   TempDir dir("emucli");
   const std::string png = dir.path("lcd.png");

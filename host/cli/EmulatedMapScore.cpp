@@ -1,0 +1,47 @@
+#include "host/cli/EmulatedMapScore.hpp"
+
+#include <cmath>
+
+#include "host/mapping/FrameTransform.hpp"
+#include "host/mapping/SimDrive.hpp"
+#include "host/sim/SceneAxes.hpp"
+#include "host/sim/StartJitter.hpp"
+#include "host/sim/TruthRaster.hpp"
+
+namespace nxtmap::cli {
+
+mapping::MapScore scoreEmulatedMap(const emu::Brick& brick, const link::MirrorMap& map, std::optional<Cell> believed,
+                                   const ExplorerStart& start, const sim::SonarNoise& sonar) {
+  const sim::RobotPlacement& placed = brick.placement();
+  const sim::Scene& scene = *placed.scene;
+  const double axis = start.headingDeg - std::remainder(start.headingDeg - sim::sceneAxesDeg(scene), 90.0);
+  const auto heading = static_cast<sim::Heading>(sim::squareQuarter(axis));
+  const sim::Placement grid =
+      sim::placeOnGrid(scene, start.centreCm, sim::squareRemainderDeg(axis), placed.robot.cellCm);
+  const sim::World truth = sim::rasterizeScene(scene, grid.frame, grid.width, grid.height, placed.truth.name());
+  const ExplorerConfig explorer =
+      mapping::explorerConfigFor(truth, placed.robot, sonar, placed.robot.minRangeM, placed.robot.rangeM, -1.0, -1, 1);
+
+  mapping::ScoreInput in;
+  in.scene = &scene;
+  in.truth = &truth;
+  in.frame = grid.frame;
+  in.startCol = grid.startCol;
+  in.startRow = grid.startRow;
+  in.freeCells = explorer.geometry.freeCells();
+  in.hitCells = explorer.geometry.hitCells();
+  const mapping::FrameTransform frame(in.startCol, in.startRow, heading);
+  map.forEach([&](Cell c, CellState state) {
+    if (state == CellState::Unknown) return;
+    mapping::KnownCell k;
+    k.state = state;
+    frame.toWorld(c, k.col, k.row);
+    in.known.push_back(k);
+  });
+  in.trueCentreCm = sim::Vec2(brick.robot().xCm(), brick.robot().yCm());
+  in.believedCol = in.believedRow = -1;  // no Status: no cell of the grid, lost
+  if (believed) frame.toWorld(*believed, in.believedCol, in.believedRow);
+  return mapping::scoreMap(in);
+}
+
+}  // namespace nxtmap::cli

@@ -1,0 +1,33 @@
+// EmulatedMapScore: the emulated brick's map, as a PC keeps it from the radio (link::MirrorMap), scored
+// against the world as a simulated run's map is (mapping::scoreMap: detected, wrong, unsafe free, lost, and
+// the same after the best rigid alignment), so `nxtmap emulate --score` and the benchmark put the firmware's
+// figures beside the host's on the same room and seed.
+// The grid it is scored on is laid as the simulator lays it once the start's sweep is over
+// (mapping::SquaredGrid): turned to the walls' axis nearest to where the robot faced when its explorer began
+// (the radio's first map cells) and centred on the robot's centre then. The brick's sub-cell offset from its
+// tracker does not come over the radio: the grid may sit up to a few cm off the one the brick believes in.
+#pragma once
+
+#include <optional>
+
+#include "host/emu/Brick.hpp"
+#include "host/link/MirrorMap.hpp"
+#include "host/mapping/MapScore.hpp"
+#include "host/sim/NoiseProfile.hpp"
+#include "host/sim/Scene.hpp"
+
+namespace nxtmap::cli {
+
+// The robot's true pose when the brick's explorer began (centre, plane cm; compass heading, degrees).
+struct ExplorerStart {
+  sim::Vec2 centreCm{0.0, 0.0};
+  double headingDeg = 0.0;
+};
+
+// The brick's map and believed cell (its explorer's frame, as its last Status said; none counts as lost),
+// scored against the truth on the grid laid at `start`. `sonar`: the noise profile the robot ran under (its
+// trusted range decides which cells a reading can prove).
+mapping::MapScore scoreEmulatedMap(const emu::Brick& brick, const link::MirrorMap& map, std::optional<Cell> believed,
+                                   const ExplorerStart& start, const sim::SonarNoise& sonar);
+
+}  // namespace nxtmap::cli

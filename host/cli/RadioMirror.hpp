@@ -1,0 +1,41 @@
+// RadioMirror: a PC listening to the emulated brick over an in-memory radio, as the console would: it says
+// Hello, keeps the copy of the brick's map the brick streams (link::Session's MirrorMap) and sends nothing
+// else. `nxtmap emulate` scores that copy: the map a user gets is the one that came over the radio.
+// Stepped with the brick's emulated clock (once per emulated millisecond), so a run stays repeatable.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "host/emu/LinkEndpoint.hpp"
+#include "host/link/Session.hpp"
+
+namespace nxtmap::cli {
+
+class RadioMirror {
+ public:
+  RadioMirror();
+  // The brick's end of the radio (BrickConfig::link).
+  emu::LinkEndpoint* endpoint() { return &radio_; }
+  // One exchange at emulated millisecond `ms` (a repeated ms does nothing). Returns true once the map
+  // has been quiet for kQuietMs after `explored` turned true: the brick's last changes have arrived.
+  bool step(uint32_t ms, bool explored);
+  const link::MirrorMap& map() const { return session_.map(); }
+  // The cell the brick believes it stands in, as its last Status said (none before one arrived).
+  std::optional<Cell> believedCell() const {
+    if (!session_.status()) return std::nullopt;
+    return session_.status()->pose.cell;
+  }
+  bool connected() const { return session_.connected(); }
+  // A map change unacknowledged is sent again by the brick: this long without one, the copy is whole.
+  static constexpr uint32_t kQuietMs = 5000;
+
+ private:
+  emu::MemoryLink radio_;
+  link::Session session_;
+  uint32_t lastMs_ = UINT32_MAX;
+  uint64_t changes_ = 0;
+  uint32_t changedMs_ = 0;
+};
+
+}  // namespace nxtmap::cli
