@@ -106,6 +106,9 @@ class HousePlanner {
   void recordRoom(const HouseReport& r, int fromRoom, const RoomExit* via, const std::vector<Cell>& entranceHouse);
   network::RoomTransform anchoredStart(const HouseReport& r, const network::RoomTransform& toHouse);
   bool leadsToMappedRoom(const Pending& p);
+  // Adds a gateway with the pairs of cells neither room's map holds as a wall (a doorway seen from one room
+  // may fall a cell into the other's wall); none left: no gateway. The house stays valid to save.
+  void addPassableGateway(network::Gateway g);
   bool queueOpening();
 
   HousePlannerConfig config_;

@@ -50,7 +50,7 @@ void HousePlanner::recordRoom(const HouseReport& r, int fromRoom, const RoomExit
     network_.addRoom(std::move(node));
   }
   for (const RoomParts::Cut& cut : parts.cuts) {
-    network_.addGateway(network::Gateway{first + cut.partA, first + cut.partB, cut.cells, cut.cells});
+    addPassableGateway(network::Gateway{first + cut.partA, first + cut.partB, cut.cells, cut.cells});
   }
   const auto partOf = [&](Cell at) { return first + std::max(0, parts.partOf(at)); };
   if (fromRoom >= 0 && via != nullptr && !entrance.empty()) {
@@ -59,7 +59,7 @@ void HousePlanner::recordRoom(const HouseReport& r, int fromRoom, const RoomExit
     g.roomB = partOf(entrance[entrance.size() / 2]);
     g.cellsA = cellsOf(via->door);
     g.cellsB = entrance;
-    network_.addGateway(std::move(g));
+    addPassableGateway(std::move(g));
   }
   for (const RoomExit& e : r.exits) pending_.push_back(Pending{partOf(e.inside), e});
   network::RoomNode seen;
@@ -99,6 +99,22 @@ network::RoomTransform HousePlanner::anchoredStart(const HouseReport& r, const n
                                            toHouse.quarterTurns());
 }
 
+void HousePlanner::addPassableGateway(network::Gateway g) {
+  const auto& rooms = network_.rooms();
+  const network::RoomMap& a = rooms[static_cast<size_t>(g.roomA)].map;
+  const network::RoomMap& b = rooms[static_cast<size_t>(g.roomB)].map;
+  network::Gateway kept{g.roomA, g.roomB, {}, {}};
+  for (size_t i = 0; i < g.cellsA.size() && i < g.cellsB.size(); ++i) {
+    if (a.at(g.cellsA[i]) == CellState::Occupied || b.at(g.cellsB[i]) == CellState::Occupied) continue;
+    kept.cellsA.push_back(g.cellsA[i]);
+    kept.cellsB.push_back(g.cellsB[i]);
+  }
+  if (kept.cellsA.size() < g.cellsA.size())
+    log::debug("house", "  gateway %d-%d: %zu of %zu cells are a wall in a room's map, dropped", g.roomA, g.roomB,
+               g.cellsA.size() - kept.cellsA.size(), g.cellsA.size());
+  if (!kept.cellsA.empty()) network_.addGateway(std::move(kept));
+}
+
 bool HousePlanner::leadsToMappedRoom(const Pending& p) {
   const network::RoomNode& owner = network_.rooms()[static_cast<size_t>(p.room)];
   const Cell inside = owner.toHouse.apply(p.exit.inside);
@@ -129,7 +145,7 @@ bool HousePlanner::leadsToMappedRoom(const Pending& p) {
           }
         }
       }
-      if (!known) network_.addGateway(network::Gateway{p.room, static_cast<int>(j), cells, inJ});
+      if (!known) addPassableGateway(network::Gateway{p.room, static_cast<int>(j), cells, inJ});
       return true;
     }
   }
