@@ -15,6 +15,7 @@
 
 #include "host/bench/LinkBench.hpp"
 #include "host/bench/EmuBench.hpp"
+#include "host/bench/EmuRoomBench.hpp"
 #include "host/bench/LegoRoundTripBench.hpp"
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
@@ -208,6 +209,7 @@ int run(int argc, char** argv) {
   table.print();
   bench::printLinkBench(dir + "/occupancy-120.map", 1, 20);
   nxtmap::bench::runEmuBench(dir);            // the emulated brick's budgets on the real firmware
+  nxtmap::bench::runEmuRoomBench(dir);        // the flash image's map under nxt beside the host's
   nxtmap::bench::runLegoRoundTripBench(dir);  // a PC tool's wait for the brick, idle and driving
   const int rc = nxtmap::bench::runPlanBench();
   if (rc != 0) return rc;
@@ -222,6 +224,7 @@ int main(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "house") return nxtmap::bench::runHouseBench();      // that section alone
     if (argc > 1 && std::string(argv[1]) == "realism") return nxtmap::bench::runRealismBench();  // that section alone
     if (argc > 1 && std::string(argv[1]) == "emu") return nxtmap::bench::runEmuBench(scenarioDir(1, argv));
+    if (argc > 1 && std::string(argv[1]) == "emu-room") return nxtmap::bench::runEmuRoomBench(scenarioDir(1, argv));
     if (argc > 1 && std::string(argv[1]) == "lego") return nxtmap::bench::runLegoRoundTripBench(scenarioDir(1, argv));
     if (argc > 1 && std::string(argv[1]) == "link") {  // that section alone
       nxtmap::bench::printLinkBench(scenarioDir(1, argv) + "/occupancy-120.map", 1, 20);

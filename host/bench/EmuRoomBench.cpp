@@ -1,0 +1,116 @@
+#include "host/bench/EmuRoomBench.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+#include "host/cli/EmulatedMapScore.hpp"
+#include "host/cli/RadioMirror.hpp"
+#include "host/cli/SiteFiles.hpp"
+#include "host/emu/EmulatedRun.hpp"
+#include "host/mapping/MappingRun.hpp"
+#include "host/sim/NoiseProfile.hpp"
+#include "host/sim/RobotDescription.hpp"
+
+namespace nxtmap::bench {
+namespace {
+constexpr double kTargetPoints = 1.0;  // emulated mean detected within this of the host's
+constexpr double kJitterDeg = 10.0;
+constexpr double kLimitS = 3600.0;      // emulated seconds per run at most
+constexpr const char* kStart = "1,20";  // occupancy-089's published start (raster cell)
+
+struct Figures {
+  double detected = 0.0;
+  int wrong = 0, lost = 0;
+};
+
+Figures emulated(const emu::ElfImage& image, const sim::Site& site, const sim::RobotDescription& brick,
+                 const sim::NoiseProfile& noise, uint64_t seed) {
+  cli::RadioMirror mirror;
+  emu::EmulatedRunOptions o;
+  o.brick.robot = brick;
+  o.brick.startPose = cli::parseSiteStart(site, kStart, "N");
+  o.brick.startJitterDeg = kJitterDeg;
+  o.brick.noise = noise;
+  o.brick.seed = seed;
+  o.brick.link = mirror.endpoint();
+  o.maxSeconds = kLimitS;
+  o.stopWhenExplored = false;
+  std::unique_ptr<emu::EmulatedRun> run;
+  cli::ExplorerStart start;
+  bool started = false;
+  o.onEvent = [&](uint64_t cycles) {
+    if (!started && mirror.map().known() > 0) {
+      started = true;
+      start = cli::ExplorerStart{sim::Vec2(run->brick().robot().xCm(), run->brick().robot().yCm()),
+                                 run->brick().robot().headingDeg()};
+    }
+    const bool explored = run->readSymbolByte("g_explorerDone").value_or(0) == 1;
+    return mirror.step(static_cast<uint32_t>(cycles / (emu::kMckHz / 1000)), explored);
+  };
+  run = std::make_unique<emu::EmulatedRun>(image, site, o);
+  run->run();
+  const mapping::MapScore s =
+      cli::scoreEmulatedMap(run->brick(), mirror.map(), mirror.believedCell(), start, noise.sonar);
+  return Figures{s.detectedPct(), s.wrongCells, s.lost ? 1 : 0};
+}
+
+Figures host(const sim::Site& site, const sim::RobotDescription& brick, const sim::NoiseProfile& noise, uint64_t seed) {
+  mapping::RunConfig c;
+  c.robot = brick;
+  c.startPose = cli::parseSiteStart(site, kStart, "N");
+  c.squareAtStart = true;  // as the brick does (and `sim --robot brick`)
+  c.startJitterDeg = kJitterDeg;
+  c.noise = noise;
+  c.seed = seed;
+  c.strategy = mapping::Strategy::Propagation;
+  mapping::MappingRun run(site, c);
+  run.runToEnd();
+  const mapping::MapScore s = mapping::scoreRun(run);
+  return Figures{s.detectedPct(), s.wrongCells, s.lost ? 1 : 0};
+}
+}  // namespace
+
+int runEmuRoomBench(const std::string& scenarioDir) {
+  const char* env = std::getenv("NXTMAP_FLASH_FIRMWARE");
+  const std::string fw = env ? env : "build/firmware/nxtmap.elf";
+  const char* seedsEnv = std::getenv("NXTMAP_EMU_ROOM_SEEDS");
+  const int seeds = seedsEnv ? std::max(1, std::atoi(seedsEnv)) : 5;
+  std::cout << "\nemulated brick room: " << fw << " on occupancy-089 from " << kStart
+            << ", brick robot, noise nxt, start jitter " << kJitterDeg << " deg, seeds 1-" << seeds
+            << "; host: the same with MappingRun (propagation)\n";
+  emu::ElfLoad load = emu::ElfImage::load(fw);
+  const sim::RobotDescription brick = *sim::robotByName("brick");
+  if (!load.image) {
+    std::cout << "  SKIPPED: " << load.error << " (make firmware)\n";
+    return 1;
+  }
+  const sim::Site site = cli::loadSiteFile(scenarioDir + "/occupancy-089.map", brick.cellCm);
+  const sim::NoiseProfile noise = *sim::noiseProfileByName("nxt");
+  Figures sumE, sumH;
+  std::printf("  %-5s %12s %6s %5s %12s %6s %5s\n", "seed", "brick det %", "wrong", "lost", "host det %", "wrong",
+              "lost");
+  for (int s = 1; s <= seeds; ++s) {
+    const Figures e = emulated(*load.image, site, brick, noise, static_cast<uint64_t>(s));
+    const Figures h = host(site, brick, noise, static_cast<uint64_t>(s));
+    std::printf("  %-5d %12.1f %6d %5s %12.1f %6d %5s\n", s, e.detected, e.wrong, e.lost ? "yes" : "no", h.detected,
+                h.wrong, h.lost ? "yes" : "no");
+    std::fflush(stdout);
+    sumE.detected += e.detected;
+    sumE.wrong += e.wrong;
+    sumE.lost += e.lost;
+    sumH.detected += h.detected;
+    sumH.wrong += h.wrong;
+    sumH.lost += h.lost;
+  }
+  const double gap = std::fabs(sumE.detected - sumH.detected) / seeds;
+  const bool ok = gap <= kTargetPoints;
+  std::printf("  mean detected: brick %.1f %%, host %.1f %% (lost %d / %d of %d)\n", sumE.detected / seeds,
+              sumH.detected / seeds, sumE.lost, sumH.lost, seeds);
+  std::printf("  brick within %.0f point of the host run      %7.1f     target <= %.0f      %s\n", kTargetPoints, gap,
+              kTargetPoints, ok ? "PASS" : "MISS");
+  return ok ? 0 : 1;
+}
+
+}  // namespace nxtmap::bench

@@ -1,0 +1,15 @@
+// EmuRoomBench: the brick's flash image (nxtmap.elf: 20 cm cells, the brick's body and mounts) maps a brick
+// room under the `nxt` noise, set down up to 10 degrees off square, in the emulated brick; beside it the host
+// runs the same room, noise and seeds (MappingRun, propagation: the strategy the brick's Enter starts). The
+// brick's map is the one that came over the radio (`nxtmap emulate --score`). Target (issue 18): the emulated
+// brick's mean detected within 1 point of the host's. The two draw their noise on their own timing, so a seed
+// is another draw of the same noise on each: the means converge, single runs do not.
+#pragma once
+#include <string>
+
+namespace nxtmap::bench {
+
+// occupancy-089 from 1,20, seeds 1..NXTMAP_EMU_ROOM_SEEDS (default 5). Returns the targets missed.
+int runEmuRoomBench(const std::string& scenarioDir);
+
+}  // namespace nxtmap::bench
