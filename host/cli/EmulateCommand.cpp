@@ -168,18 +168,9 @@ int runEmulate(const EmulateOptions& o) {
       << " bytes to the PC, " << r.btFromPc << " from it\n"
       << "robot            x " << num(r.xCm) << " cm, y " << num(r.yCm) << " cm, heading " << num(r.headingDeg)
       << " deg, driven " << num(r.drivenCm) << " cm\n";
-  if (mirror) {
-    const mapping::MapScore m =
-        scoreEmulatedMap(emulated.brick(), mirror->map(), mirror->believedCell(), start, run.brick.noise.sonar);
-    out << "detected         " << num(m.detectedPct()) << " % of the observable occupied cells (" << m.detectedOccupied
-        << " of " << m.observableOccupied << "), in the map that came over the radio\n"
-        << "wrong cells      " << m.wrongCells << " (unsafe free " << m.unsafeFree << ", phantom occupied "
-        << m.phantomOccupied << ")\n"
-        << "aligned          map turned " << num(m.alignRotationDeg) << " deg, moved " << num(m.alignShiftCol) << ","
-        << num(m.alignShiftRow) << " cells to fit the world best: detected " << num(m.detectedPctAligned())
-        << " %, wrong " << m.wrongCellsAligned << "\n"
-        << "lost             " << (m.lost ? "yes: the brick believes it stands in another cell" : "no") << "\n";
-  }
+  if (mirror)
+    out << scoreLines(
+        scoreEmulatedMap(emulated.brick(), mirror->map(), mirror->believedCell(), start, run.brick.noise.sonar));
   std::cout << out.str() << std::flush;
   if (!o.lcd.empty()) {
     std::string error;

@@ -1,9 +1,11 @@
 #include "host/cli/EmulatedMapScore.hpp"
 
 #include <cmath>
+#include <sstream>
 
 #include "host/mapping/FrameTransform.hpp"
 #include "host/mapping/SimDrive.hpp"
+#include "host/report/ExperimentTable.hpp"
 #include "host/sim/SceneAxes.hpp"
 #include "host/sim/StartJitter.hpp"
 #include "host/sim/TruthRaster.hpp"
@@ -42,6 +44,20 @@ mapping::MapScore scoreEmulatedMap(const emu::Brick& brick, const link::MirrorMa
   in.believedCol = in.believedRow = -1;  // no Status: no cell of the grid, lost
   if (believed) frame.toWorld(*believed, in.believedCol, in.believedRow);
   return mapping::scoreMap(in);
+}
+
+std::string scoreLines(const mapping::MapScore& m) {
+  const auto num = [](double v) { return report::formatNumber(v, 1); };
+  std::ostringstream out;
+  out << "detected         " << num(m.detectedPct()) << " % of the observable occupied cells (" << m.detectedOccupied
+      << " of " << m.observableOccupied << "), in the map that came over the radio\n"
+      << "wrong cells      " << m.wrongCells << " (unsafe free " << m.unsafeFree << ", phantom occupied "
+      << m.phantomOccupied << ")\n"
+      << "aligned          map turned " << num(m.alignRotationDeg) << " deg, moved " << num(m.alignShiftCol) << ","
+      << num(m.alignShiftRow) << " cells to fit the world best: detected " << num(m.detectedPctAligned())
+      << " %, wrong " << m.wrongCellsAligned << "\n"
+      << "lost             " << (m.lost ? "yes: the brick believes it stands in another cell" : "no") << "\n";
+  return out.str();
 }
 
 }  // namespace nxtmap::cli

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "host/emu/Brick.hpp"
 #include "host/link/MirrorMap.hpp"
@@ -29,5 +30,8 @@ struct ExplorerStart {
 // trusted range decides which cells a reading can prove).
 mapping::MapScore scoreEmulatedMap(const emu::Brick& brick, const link::MirrorMap& map, std::optional<Cell> believed,
                                    const ExplorerStart& start, const sim::SonarNoise& sonar);
+
+// The score as `nxtmap emulate --score` prints it: detected, wrong cells, aligned, lost; one line each.
+std::string scoreLines(const mapping::MapScore& m);
 
 }  // namespace nxtmap::cli
