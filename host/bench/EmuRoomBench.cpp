@@ -41,20 +41,10 @@ Figures emulated(const emu::ElfImage& image, const sim::Site& site, const sim::R
   o.maxSeconds = kLimitS;
   o.stopWhenExplored = false;
   std::unique_ptr<emu::EmulatedRun> run;
-  cli::ExplorerStart start;
-  bool started = false;
-  o.onEvent = [&](uint64_t cycles) {
-    if (!started && mirror.map().known() > 0) {
-      started = true;
-      start = cli::ExplorerStart{sim::Vec2(run->brick().robot().xCm(), run->brick().robot().yCm()),
-                                 run->brick().robot().headingDeg()};
-    }
-    const bool explored = run->readSymbolByte("g_explorerDone").value_or(0) == 1;
-    return mirror.step(static_cast<uint32_t>(cycles / (emu::kMckHz / 1000)), explored);
-  };
+  o.onEvent = [&](uint64_t cycles) { return mirror.follow(*run, cycles, true); };
   run = std::make_unique<emu::EmulatedRun>(image, site, o);
   run->run();
-  return figures(cli::scoreEmulatedMap(run->brick(), mirror.map(), mirror.believedCell(), start, noise.sonar));
+  return figures(cli::scoreEmulatedMap(run->brick(), mirror, noise.sonar));
 }
 
 Figures host(const sim::Site& site, const sim::RobotDescription& brick, const sim::NoiseProfile& noise, uint64_t seed) {

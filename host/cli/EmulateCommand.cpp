@@ -119,19 +119,10 @@ int runEmulate(const EmulateOptions& o) {
     run.stopWhenExplored = false;  // the run ends once the map's last changes have come over the radio
   }
   const bool untilExplored = until == "explored";
-  bool explorerStarted = false;
-  ExplorerStart start;
   if (series || mirror) {
     run.onEvent = [&](uint64_t cycles) {
       if (series && !series->poll(cycles, holder->brick().lcd(), seriesError)) return true;
-      if (!mirror) return false;
-      if (!explorerStarted && mirror->map().known() > 0) {  // the explorer's first cells: the sweep is over
-        explorerStarted = true;
-        const sim::SimRobot& r = holder->brick().robot();
-        start = ExplorerStart{sim::Vec2(r.xCm(), r.yCm()), r.headingDeg()};
-      }
-      const bool explored = untilExplored && holder->readSymbolByte("g_explorerDone").value_or(0) == 1;
-      return mirror->step(static_cast<uint32_t>(cycles / (emu::kMckHz / 1000)), explored);
+      return mirror && mirror->follow(*holder, cycles, untilExplored);
     };
   }
   holder = std::make_unique<emu::EmulatedRun>(*load.image, site, run);
@@ -168,9 +159,7 @@ int runEmulate(const EmulateOptions& o) {
       << " bytes to the PC, " << r.btFromPc << " from it\n"
       << "robot            x " << num(r.xCm) << " cm, y " << num(r.yCm) << " cm, heading " << num(r.headingDeg)
       << " deg, driven " << num(r.drivenCm) << " cm\n";
-  if (mirror)
-    out << scoreLines(
-        scoreEmulatedMap(emulated.brick(), mirror->map(), mirror->believedCell(), start, run.brick.noise.sonar));
+  if (mirror) out << scoreLines(scoreEmulatedMap(emulated.brick(), *mirror, run.brick.noise.sonar));
   std::cout << out.str() << std::flush;
   if (!o.lcd.empty()) {
     std::string error;

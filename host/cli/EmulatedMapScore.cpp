@@ -12,9 +12,10 @@
 
 namespace nxtmap::cli {
 
-mapping::MapScore scoreEmulatedMap(const emu::Brick& brick, const link::MirrorMap& map, std::optional<Cell> believed,
-                                   const ExplorerStart& start, const sim::SonarNoise& sonar) {
+mapping::MapScore scoreEmulatedMap(const emu::Brick& brick, const RadioMirror& radio, const sim::SonarNoise& sonar) {
   const sim::RobotPlacement& placed = brick.placement();
+  const ExplorerStart& start = radio.explorerStart();
+  const std::optional<Cell> believed = radio.believedCell();
   const sim::Scene& scene = *placed.scene;
   const double axis = start.headingDeg - std::remainder(start.headingDeg - sim::sceneAxesDeg(scene), 90.0);
   const auto heading = static_cast<sim::Heading>(sim::squareQuarter(axis));
@@ -33,7 +34,7 @@ mapping::MapScore scoreEmulatedMap(const emu::Brick& brick, const link::MirrorMa
   in.freeCells = explorer.geometry.freeCells();
   in.hitCells = explorer.geometry.hitCells();
   const mapping::FrameTransform frame(in.startCol, in.startRow, heading);
-  map.forEach([&](Cell c, CellState state) {
+  radio.map().forEach([&](Cell c, CellState state) {
     if (state == CellState::Unknown) return;
     mapping::KnownCell k;
     k.state = state;

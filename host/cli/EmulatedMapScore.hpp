@@ -8,28 +8,19 @@
 // tracker does not come over the radio: the grid may sit up to a few cm off the one the brick believes in.
 #pragma once
 
-#include <optional>
 #include <string>
 
+#include "host/cli/RadioMirror.hpp"
 #include "host/emu/Brick.hpp"
-#include "host/link/MirrorMap.hpp"
 #include "host/mapping/MapScore.hpp"
 #include "host/sim/NoiseProfile.hpp"
-#include "host/sim/Scene.hpp"
 
 namespace nxtmap::cli {
 
-// The robot's true pose when the brick's explorer began (centre, plane cm; compass heading, degrees).
-struct ExplorerStart {
-  sim::Vec2 centreCm{0.0, 0.0};
-  double headingDeg = 0.0;
-};
-
-// The brick's map and believed cell (its explorer's frame, as its last Status said; none counts as lost),
-// scored against the truth on the grid laid at `start`. `sonar`: the noise profile the robot ran under (its
-// trusted range decides which cells a reading can prove).
-mapping::MapScore scoreEmulatedMap(const emu::Brick& brick, const link::MirrorMap& map, std::optional<Cell> believed,
-                                   const ExplorerStart& start, const sim::SonarNoise& sonar);
+// The brick's map and believed cell as `radio` kept them (its explorer's frame; no Status counts as lost),
+// scored against the truth on the grid laid at the radio's explorer start. `sonar`: the noise profile the
+// robot ran under (its trusted range decides which cells a reading can prove).
+mapping::MapScore scoreEmulatedMap(const emu::Brick& brick, const RadioMirror& radio, const sim::SonarNoise& sonar);
 
 // The score as `nxtmap emulate --score` prints it: detected, wrong cells, aligned, lost; one line each.
 std::string scoreLines(const mapping::MapScore& m);

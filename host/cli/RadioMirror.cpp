@@ -21,4 +21,14 @@ bool RadioMirror::step(uint32_t ms, bool explored) {
   return explored && ms >= changedMs_ + kQuietMs;
 }
 
+bool RadioMirror::follow(emu::EmulatedRun& run, uint64_t cycles, bool untilExplored) {
+  if (!started_ && map().known() > 0) {
+    started_ = true;
+    const sim::SimRobot& r = run.brick().robot();
+    start_ = ExplorerStart{sim::Vec2(r.xCm(), r.yCm()), r.headingDeg()};
+  }
+  const bool explored = untilExplored && run.readSymbolByte("g_explorerDone").value_or(0) == 1;
+  return step(static_cast<uint32_t>(cycles / (emu::kMckHz / 1000)), explored);
+}
+
 }  // namespace nxtmap::cli

@@ -7,10 +7,18 @@
 #include <cstdint>
 #include <optional>
 
+#include "host/emu/EmulatedRun.hpp"
 #include "host/emu/LinkEndpoint.hpp"
 #include "host/link/Session.hpp"
+#include "host/sim/Scene.hpp"
 
 namespace nxtmap::cli {
+
+// The robot's true pose when the brick's explorer began (centre, plane cm; compass heading, degrees).
+struct ExplorerStart {
+  sim::Vec2 centreCm{0.0, 0.0};
+  double headingDeg = 0.0;
+};
 
 class RadioMirror {
  public:
@@ -20,13 +28,17 @@ class RadioMirror {
   // One exchange at emulated millisecond `ms` (a repeated ms does nothing). Returns true once the map
   // has been quiet for kQuietMs after `explored` turned true: the brick's last changes have arrived.
   bool step(uint32_t ms, bool explored);
+  // The same for `run` at its cycle count (EmulatedRunOptions::onEvent), `explored` read from the firmware
+  // (g_explorerDone) unless the run ends on its time limit only; notes where the robot stood when the first
+  // map cells came (the start's sweep over, the explorer begun).
+  bool follow(emu::EmulatedRun& run, uint64_t cycles, bool untilExplored);
+  const ExplorerStart& explorerStart() const { return start_; }
   const link::MirrorMap& map() const { return session_.map(); }
   // The cell the brick believes it stands in, as its last Status said (none before one arrived).
   std::optional<Cell> believedCell() const {
     if (!session_.status()) return std::nullopt;
     return session_.status()->pose.cell;
   }
-  bool connected() const { return session_.connected(); }
   // A map change unacknowledged is sent again by the brick: this long without one, the copy is whole.
   static constexpr uint32_t kQuietMs = 5000;
 
@@ -36,6 +48,8 @@ class RadioMirror {
   uint32_t lastMs_ = UINT32_MAX;
   uint64_t changes_ = 0;
   uint32_t changedMs_ = 0;
+  bool started_ = false;
+  ExplorerStart start_;
 };
 
 }  // namespace nxtmap::cli
