@@ -46,6 +46,9 @@ CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
   c->add_flag("--score", o.score,
               "a PC listens on the radio and keeps the map the brick streams (as the console would); at the end that "
               "map is scored against the world: detected, wrong cells, unsafe free (not with --listen)");
+  c->add_flag("--profile", o.profile,
+              "print where the instructions of the costliest sensor update went, by firmware function (the "
+              "run is slower)");
   return c;
 }
 
@@ -73,6 +76,7 @@ int runEmulate(const EmulateOptions& o) {
   if (o.score && !o.listen.empty()) throw CliError("--score listens on the radio itself: not with --listen");
   run.stopWhenExplored = until == "explored";
   run.stopWhenPcLeaves = until == "disconnect";
+  run.profileWorstUpdate = o.profile;
   std::string lcdError;  // --lcd is checked before the run (a missing folder, a device): nothing written yet
   if (!o.lcd.empty() && !fileio::resolveOutputTarget(o.lcd, lcdError)) throw CliError("--lcd: " + lcdError);
   if (o.lcdEvery != 0.0 && o.lcd.empty()) throw CliError("--lcd-every needs --lcd FILE.png");
@@ -159,6 +163,11 @@ int runEmulate(const EmulateOptions& o) {
       << " bytes to the PC, " << r.btFromPc << " from it\n"
       << "robot            x " << num(r.xCm) << " cm, y " << num(r.yCm) << " cm, heading " << num(r.headingDeg)
       << " deg, driven " << num(r.drivenCm) << " cm\n";
+  if (o.profile) {
+    out << "costliest update " << r.maxPerUpdate << " instructions, by function:\n";
+    out << (r.worstUpdate.empty() ? std::string("  (no function symbols: nothing to attribute)\n")
+                                  : emu::profileLines(r.worstUpdate, r.maxPerUpdate, 15));
+  }
   if (mirror) out << scoreLines(scoreEmulatedMap(emulated.brick(), *mirror, run.brick.noise.sonar));
   std::cout << out.str() << std::flush;
   if (!o.lcd.empty()) {

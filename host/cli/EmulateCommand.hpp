@@ -27,6 +27,7 @@ struct EmulateOptions {
   std::string seed = "1";
   double seconds = 3600.0;  // emulated time limit
   double enterAt = 1.0;     // emulated second at which Enter is pressed (< 0: never)
+  bool profile = false;     // print where the costliest sensor update's instructions went
   bool score = false;       // a PC on the radio keeps the brick's map; scored against the world at the end
 };
 

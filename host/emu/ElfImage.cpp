@@ -2,6 +2,8 @@
 
 #include <elf.h>
 
+#include <algorithm>
+
 #include <cstring>
 
 #include "host/sim/InputFile.hpp"
@@ -103,9 +105,13 @@ struct ElfLoader {
           const size_t len = strnlen(s, maxLen);
           if (len == maxLen) continue;
           img.symbols_.emplace(std::string(s, len), sym.st_value);
+          if (ELF32_ST_TYPE(sym.st_info) == STT_FUNC && sym.st_size > 0)
+            img.functions_.push_back(FunctionSymbol{sym.st_value & ~1u, sym.st_size, std::string(s, len)});
         }
       }
     }
+    std::sort(img.functions_.begin(), img.functions_.end(),
+              [](const FunctionSymbol& a, const FunctionSymbol& b) { return a.address < b.address; });
     if (img.flashUsed_ == 0 && img.entry_ < kRamBase) return fail("no code in flash or RAM");
     result.image = std::move(img);
     return result;
@@ -118,6 +124,14 @@ std::optional<uint32_t> ElfImage::symbol(const std::string& name) const {
   const auto it = symbols_.find(name);
   if (it == symbols_.end()) return std::nullopt;
   return it->second;
+}
+
+const FunctionSymbol* ElfImage::functionAt(uint32_t address) const {
+  auto it = std::upper_bound(functions_.begin(), functions_.end(), address,
+                             [](uint32_t a, const FunctionSymbol& f) { return a < f.address; });
+  if (it == functions_.begin()) return nullptr;
+  --it;
+  return address - it->address < it->size ? &*it : nullptr;
 }
 
 std::optional<uint32_t> ElfImage::firstSymbol(std::initializer_list<const char*> names) const {

@@ -1,5 +1,6 @@
 // ElfImage: a firmware ELF32 (ARM, little-endian) loaded as the chip would hold it: every PT_LOAD segment
-// at its load address (LMA), so .data's initial image sits in flash. Symbols from .symtab by name.
+// at its load address (LMA), so .data's initial image sits in flash. Symbols from .symtab by name, and
+// its functions by address (for profiles).
 // A file named *.bin is a raw flash image for kFlashBase instead (at most kFlashSize bytes, no symbols):
 // what users have for LEGO's and other firmwares.
 #pragma once
@@ -24,6 +25,13 @@ constexpr size_t kMaxElfBytes = size_t{8} << 20;
 
 struct ElfLoad;
 
+// A function of the image: [address, address + size), the Thumb bit cleared.
+struct FunctionSymbol {
+  uint32_t address = 0;
+  uint32_t size = 0;
+  std::string name;  // as in the ELF (mangled)
+};
+
 class ElfImage {
  public:
   // A regular file of at most kMaxElfBytes; otherwise, or when it is no ARM ELF that fits the chip, an error.
@@ -39,6 +47,8 @@ class ElfImage {
   std::optional<uint32_t> symbol(const std::string& name) const;
   // The first of the names that exists.
   std::optional<uint32_t> firstSymbol(std::initializer_list<const char*> names) const;
+  // The function holding `address`, or nullptr (a raw image, or code no function symbol covers).
+  const FunctionSymbol* functionAt(uint32_t address) const;
   const std::string& path() const { return path_; }
   bool rawFlash() const { return raw_; }  // loaded from a raw .bin image: no symbols
 
@@ -51,6 +61,7 @@ class ElfImage {
   uint32_t entry_ = 0;
   bool raw_ = false;
   std::map<std::string, uint32_t> symbols_;
+  std::vector<FunctionSymbol> functions_;  // sorted by address
   friend struct ElfLoader;
 };
 

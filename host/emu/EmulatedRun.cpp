@@ -11,6 +11,7 @@ EmulatedRun::EmulatedRun(const ElfImage& image, const sim::Site& site, const Emu
   c.pressEnterAtS = options.pressEnterAtS;
   if (!options.timedFunction.empty() && image.symbol(options.timedFunction)) {
     c.machine.timedFunction = options.timedFunction;
+    c.machine.profileTimed = options.profileWorstUpdate;
     timed_ = true;
   }
   brick_ = std::make_unique<Brick>(image, site, c);
@@ -108,6 +109,7 @@ EmulatedRunReport EmulatedRun::run() {
   if (timed_) {
     r.sensorUpdates = s.timedCalls;
     r.maxPerUpdate = s.maxTimed;
+    if (const TimedProfile* p = m.timedProfile()) r.worstUpdate = p->byFunction(image_);
   } else {
     r.sensorUpdates = readSymbolWord("g_sensorUpdates").value_or(0);
   }

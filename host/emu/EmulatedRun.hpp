@@ -36,6 +36,7 @@ struct EmulatedRunOptions {
   // of the link in step with the brick); returning true ends the run.
   std::function<bool(uint64_t cycles)> onEvent;
   std::string timedFunction = "nxtmapSensorUpdate";  // timed when the image has it
+  bool profileWorstUpdate = false;  // keep where the costliest sensor update's instructions went (slower)
 };
 
 struct EmulatedRunReport {
@@ -52,6 +53,7 @@ struct EmulatedRunReport {
   std::optional<uint32_t> staticRamBudget;  // the firmware's own __static_ram figure, if it has one
   uint64_t sensorUpdates = 0;               // timed-function calls (or g_sensorUpdates)
   uint64_t maxPerUpdate = 0;                // most instructions in one sensor update
+  std::vector<FunctionCost> worstUpdate;    // profileWorstUpdate: that update's instructions by function
   uint64_t maxBusy = 0;                     // longest stretch between two idles
   uint64_t avrGood = 0, avrBad = 0, pings = 0;
   double drivenCm = 0.0;

@@ -125,6 +125,7 @@ Machine::Machine(const ElfImage& image, const MachineOptions& options)
     }
     if (!at) throw std::runtime_error("timed function '" + *options.timedFunction + "' is not in the firmware");
     timedEntry_ = *at & ~1u;
+    if (options.profileTimed) profile_ = std::make_unique<TimedProfile>();
     check(
         uc_hook_add(uc_, &h, UC_HOOK_CODE, reinterpret_cast<void*>(&Hooks::timedEntry), this, timedEntry_, timedEntry_),
         "timed function hook");

@@ -18,6 +18,7 @@
 #include "host/emu/Pmc.hpp"
 #include "host/emu/ResetController.hpp"
 #include "host/emu/StackGuard.hpp"
+#include "host/emu/TimedProfile.hpp"
 #include "host/emu/Watchdog.hpp"
 
 #include <cstdlib>
@@ -39,6 +40,8 @@ struct MachineOptions {
   std::optional<uint32_t> guardLow, stackLimit;
   // Time one function from entry to return (e.g. the sensor update), by symbol name or address.
   std::optional<std::string> timedFunction;
+  // Keep where the instructions of the timed function's costliest call went (timedProfile()).
+  bool profileTimed = false;
 };
 
 struct RamUse {
@@ -92,6 +95,8 @@ class Machine : public GuestMemory {
   // stops with a Model fault at the next block boundary (the first fault is kept).
   void reportModelFault(const std::string& what);
   MachineStats stats() const;
+  // The costliest timed call's profile (MachineOptions::profileTimed), else nullptr.
+  const TimedProfile* timedProfile() const { return profile_.get(); }
   RamUse ramUse() const;
   bool idle() const { return idle_; }
 
@@ -186,6 +191,8 @@ class Machine : public GuestMemory {
   uint64_t timedStart_ = 0;
   uint64_t blockStart_ = 0;  // clock at the start of the current block
   uint64_t timedCalls_ = 0, maxTimed_ = 0;
+  std::unique_ptr<TimedProfile> profile_;  // options_.profileTimed with a timed function
+  bool profiling_ = false;                 // inside a timed call, profile_ set: every block counted
   EmuFault fault_;
   std::function<bool()> externalWait_;
   bool trace_ = false;

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <sstream>
+#include <string>
 
 namespace nxtmap::cli::test {
 namespace {
@@ -112,6 +114,29 @@ TEST(EmulateCli, RealFirmwareRunPrintsMeasurementsAndLcd) {
     EXPECT_EQ(readFile(dir.path(n)).substr(1, 3), "PNG") << n;
   EXPECT_FALSE(std::filesystem::exists(dir.path("lcd-0005.png")));
   EXPECT_NE(r.out.find("wrote 4 pictures"), std::string::npos) << r.out;
+}
+
+// --profile: the costliest sensor update's instructions by firmware function, the most first, none
+// more than the update itself.
+TEST(EmulateCli, ProfileNamesWhereTheCostliestSensorUpdateWent) {
+  const RunOutput r = runCli("emulate " + kRoom + " --start 1,20 --seconds 20 --profile --firmware " +
+                             shellQuote(std::string(NXTMAP_EMU_FIRMWARE_DIR) + "/nxtmap.elf"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const size_t at = r.out.find("costliest update ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const unsigned long long total = std::stoull(r.out.substr(at + 17));
+  EXPECT_GT(total, 0u);
+  std::istringstream rest(r.out.substr(r.out.find('\n', at) + 1));
+  unsigned long long previous = total, named = 0;
+  int listed = 0;
+  for (std::string line; std::getline(rest, line) && line.rfind("  ", 0) == 0; ++listed) {
+    const unsigned long long n = std::stoull(line);
+    EXPECT_LE(n, previous) << line;
+    previous = n;
+    if (line.find("nxtmap::") != std::string::npos) named += n;
+  }
+  EXPECT_GE(listed, 3) << r.out;
+  EXPECT_GT(named, 0u) << "the firmware's own functions, by name: " << r.out;
 }
 
 // The firmware drives the brick robot (20 cm cells, 16 x 18 cm body) through a hand-made room turned 10 degrees,

@@ -50,6 +50,38 @@ TEST(Machine, TimesAFunctionFromEntryToReturn) {
   EXPECT_LT(s.maxTimed, 200u);
 }
 
+// The costliest timed call, by function: its instructions all attributed (to the timed function and
+// whatever it ran), the most first.
+TEST(Machine, ProfilesTheCostliestTimedCallByFunction) {
+  BrickConfig c;
+  c.machine.timedFunction = "pit_isr";
+  c.machine.profileTimed = true;
+  ProbeRun r("boot", c, 5.0);
+  ASSERT_TRUE(r.ok) << r.fault();
+  const TimedProfile* p = r.brick->machine().timedProfile();
+  ASSERT_NE(p, nullptr);
+  EXPECT_EQ(p->worstTotal(), r.brick->machine().stats().maxTimed);
+  const std::vector<FunctionCost> costs = p->byFunction(r.image);
+  ASSERT_FALSE(costs.empty());
+  uint64_t sum = 0;
+  for (size_t i = 0; i < costs.size(); ++i) {
+    sum += costs[i].instructions;
+    if (i > 0) {
+      EXPECT_GE(costs[i - 1].instructions, costs[i].instructions);
+    }
+  }
+  EXPECT_EQ(sum, p->worstTotal());
+  EXPECT_EQ(costs[0].name, "pit_isr");
+}
+
+TEST(Machine, KeepsNoProfileUnlessAsked) {
+  BrickConfig c;
+  c.machine.timedFunction = "pit_isr";
+  ProbeRun r("boot", c, 1.0);
+  ASSERT_TRUE(r.ok) << r.fault();
+  EXPECT_EQ(r.brick->machine().timedProfile(), nullptr);
+}
+
 // A store that makes an interrupt pending with IRQs enabled: the handler runs one instruction later (before
 // the marker's next store), as on the ARM7; not at the end of Unicorn's block.
 TEST(Machine, TakesAnInterruptAtTheInstructionAfterTheStoreThatRaisedIt) {
