@@ -20,12 +20,20 @@ WheelCalibration trackerWheels(WheelCalibration w) {
   w.turnPpm = 0;
   return w;
 }
+// The tracker's gate, at least PilotConfig::gateCellTenths of a cell.
+PoseNoise trackerNoise(PoseNoise n, int32_t cellMm, int32_t tenths) {
+  const int32_t floorMm = tenths * cellMm / 10;
+  if (n.gateMm < floorMm) n.gateMm = floorMm;
+  return n;
+}
 }  // namespace
 
 Pilot::Pilot(Explorer& explorer, const PilotConfig& config)
     : explorer_(explorer),
       config_(config),
-      tracker_(config.noise, trackerWheels(config.wheels)),
+      tracker_(trackerNoise(config.noise, static_cast<int32_t>(explorer.config().geometry.cellCm) * 10,
+                            config.gateCellTenths),
+               trackerWheels(config.wheels)),
 #ifndef NXTMAP_NO_START_SQUARING
       squaring_(config.squareSweepMrad, config.squareStepMrad),
       calibration_(squaring_, config.calibrateTurns),

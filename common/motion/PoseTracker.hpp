@@ -14,7 +14,9 @@ struct PoseNoise {
   // A filtered reading of a known wall face: the NXT sensor's error fixed per pose (1 cm), +-0.5 cm per ping and
   // the whole-cm reading, sqrt(100 + 8 + 8) mm (docs/nxt-sonar-and-odometry.md).
   int32_t readingMm = 11;
-  int32_t gateMm = 40;  // readings further than this from the prediction are not trusted
+  // Readings further than this from the prediction are not trusted (the pilot may raise it with its
+  // cell: PilotConfig::gateCellTenths).
+  int32_t gateMm = 40;
   // ... unless the landmark is a straight wall face and the filter itself is that unsure: up to this
   // far (mm) and within 2 sigma of the prediction (a robot that drifted unseen across open space).
   int32_t wideGateMm = 120;

@@ -79,9 +79,9 @@ inline Wheels noisyWheels(int slipPerMille, int turnMrad, uint32_t run) {
 }
 
 // A rectangular room of straight walls (mm, on cell faces or anywhere; the robot starts at the origin facing
-// North, +y; cells are 100 mm, centred on multiples of 100; the explorer's geometry as given). Ideal sonars: echoes within 1 m are
-// good readings, farther ones up to 2.55 m come back as too far with their distance. Runs the
-// pilot's explorer to the end.
+// North, +y; cells of the explorer's geometry, 100 mm by default, centred on multiples of their edge). Ideal
+// sonars: echoes within 1 m are good readings, farther ones up to 2.55 m come back as too far with their
+// distance. Runs the pilot's explorer to the end.
 struct RoomRun {
   double meanEstimateErrorMm =
       0;  // |true position - believed cell centre - tracker offset|, at the explorer's readings
@@ -90,10 +90,11 @@ struct RoomRun {
   int readings = 0;
   int wrongCells = 0;  // cells of the finished map in the other state than the room's
 };
-inline RoomRun runInRoom(PilotConfig config, double west, double east, double south, double north,
-                         const Wheels& wheels, const ExplorerConfig& explorer = ExplorerConfig{}) {
+inline RoomRun runInRoom(PilotConfig config, double west, double east, double south, double north, const Wheels& wheels,
+                         const ExplorerConfig& explorer = ExplorerConfig{}) {
   config.wheels = wheels.stored;
   Rig rig(config, explorer);
+  const double cell = explorer.geometry.cellCm * 10.0;  // mm
   uint32_t lcg = wheels.seed;
   const auto uniform = [&lcg](int amplitude) {  // -amplitude .. amplitude
     lcg = lcg * 1664525u + 1013904223u;
@@ -110,7 +111,7 @@ inline RoomRun runInRoom(PilotConfig config, double west, double east, double so
     switch (a.kind) {
       case DriveAction::Kind::Read: {
         const Cell c = rig.explorer.pose().cell;
-        const double bx = c.x * 100.0 + rig.pilot.tracker().xMm(), by = c.y * 100.0 + rig.pilot.tracker().yMm();
+        const double bx = c.x * cell + rig.pilot.tracker().xMm(), by = c.y * cell + rig.pilot.tracker().yMm();
         sum += std::hypot(x - bx, y - by);
         const double axis = static_cast<int>(rig.explorer.pose().heading) * 1.5707963;
         headingSum += std::fabs(std::remainder(h - axis, 6.2831853) * 1000.0 - rig.pilot.tracker().thetaMrad());
@@ -151,11 +152,12 @@ inline RoomRun runInRoom(PilotConfig config, double west, double east, double so
   EXPECT_TRUE(rig.pilot.finished());
   out.meanEstimateErrorMm = out.readings == 0 ? 0.0 : sum / out.readings;
   out.meanHeadingErrorMrad = out.readings == 0 ? 0.0 : headingSum / out.readings;
-  for (int16_t cy = static_cast<int16_t>(south / 100 - 2); cy <= north / 100 + 2; ++cy) {
-    for (int16_t cx = static_cast<int16_t>(west / 100 - 2); cx <= east / 100 + 2; ++cx) {
+  for (int16_t cy = static_cast<int16_t>(south / cell - 2); cy <= north / cell + 2; ++cy) {
+    for (int16_t cx = static_cast<int16_t>(west / cell - 2); cx <= east / cell + 2; ++cx) {
       const CellState st = rig.map.at(Cell{cx, cy});
       // Free when the whole cell lies inside the walls (a wall reaching a sliver into a cell blocks it).
-      const bool inside = cx * 100 - 50 >= west && cx * 100 + 50 <= east && cy * 100 - 50 >= south && cy * 100 + 50 <= north;
+      const bool inside = cx * cell - cell / 2 >= west && cx * cell + cell / 2 <= east &&
+                          cy * cell - cell / 2 >= south && cy * cell + cell / 2 <= north;
       if ((st == CellState::Occupied && inside) || (st == CellState::Free && !inside)) ++out.wrongCells;
     }
   }

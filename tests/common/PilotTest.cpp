@@ -279,6 +279,37 @@ TEST(Pilot, ASecondStraightFaceConfirmsAnOffsetTheFilterWasTooSureToTake) {
   }
 }
 
+TEST(Pilot, OnTwentyCentimetreCellsAnUnseenShoveOfAQuarterCellIsTakenFromTheNextWall) {
+  // The brick's 20 cm cells: a shove East of 50-55 mm, unseen (beyond the 40 mm gate, within 3/10 of a cell:
+  // PilotConfig::gateCellTenths), is corrected by the next reading of a known wall; with the 40 mm gate alone
+  // it is refused and the robot maps on from the wrong offset. No second straight face rescues either
+  // (PoseNoise::confirmWide off in both).
+  ExplorerConfig brick;
+  brick.geometry.cellCm = 20;
+  PilotConfig tenths;
+  tenths.noise.confirmWide = false;
+  PilotConfig fixed = tenths;
+  fixed.gateCellTenths = 0;
+  const struct {
+    int after;
+    int32_t kick;
+  } table[] = {{6, 50}, {10, -55}, {15, 50}, {20, -50}};
+  for (const auto& row : table) {
+    Wheels w;
+    w.kickAfterDrive = row.after;
+    w.kickEastMm = row.kick;
+    const RoomRun taken = runInRoom(tenths, -1500, 1700, -1300, 1900, w, brick);
+    const RoomRun refused = runInRoom(fixed, -1500, 1700, -1300, 1900, w, brick);
+    ASSERT_GT(taken.readings, 20);
+    EXPECT_LT(taken.meanEstimateErrorMm, refused.meanEstimateErrorMm / 2)
+        << "kick " << row.kick << " after " << row.after;
+    EXPECT_LE(taken.wrongCells, refused.wrongCells) << "kick " << row.kick << " after " << row.after;
+    std::printf("kick %d mm after drive %d: position error %.1f mm, %d wrong cells; 40 mm gate %.1f mm, %d\n", row.kick,
+                row.after, taken.meanEstimateErrorMm, taken.wrongCells, refused.meanEstimateErrorMm,
+                refused.wrongCells);
+  }
+}
+
 TEST(Pilot, ReadingsAreMarkedFromTheCellCentreWhenTheRobotIsKnownToBeOffIt) {
   // Every drive stops 60 mm short and the encoders say so: at each reading the robot stands 60 mm
   // behind the centre of its cell (the next move makes up for it). Marked from where the robot
