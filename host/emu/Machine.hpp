@@ -192,7 +192,8 @@ class Machine : public GuestMemory {
   uint64_t blockStart_ = 0;  // clock at the start of the current block
   uint64_t timedCalls_ = 0, maxTimed_ = 0;
   std::unique_ptr<TimedProfile> profile_;  // options_.profileTimed with a timed function
-  bool profiling_ = false;                 // inside a timed call, profile_ set: every block counted
+  // Inside a timed call with a profile kept: every block is counted.
+  bool profiling() const { return timedReturn_ != 0 && profile_ != nullptr; }
   EmuFault fault_;
   std::function<bool()> externalWait_;
   bool trace_ = false;

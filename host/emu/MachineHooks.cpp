@@ -24,7 +24,7 @@ void Machine::Hooks::block(uc_engine* uc, uint64_t address, uint32_t size, void*
   const int slot = m->modeSlot(a);
   const uint8_t mode = slot < 0 ? 0 : m->modes_[static_cast<size_t>(slot)];
   if (mode == 0 || a == m->timedReturn_ || m->clock_.now >= m->clock_.stopAt || !m->flashRestore_.empty() ||
-      m->efc_.busy() || m->trace_ || m->profiling_) {
+      m->efc_.busy() || m->trace_ || m->profiling()) {
     blockInFull(uc, address, size, user);
     return;
   }
@@ -49,9 +49,8 @@ void Machine::Hooks::blockInFull(uc_engine* uc, uint64_t address, uint32_t size,
   if (m->timedReturn_ != 0 && static_cast<uint32_t>(address) == m->timedReturn_) {
     m->maxTimed_ = std::max(m->maxTimed_, m->clock_.now - m->timedStart_);
     ++m->timedCalls_;
+    if (m->profiling()) m->profile_->endCall(m->clock_.now - m->timedStart_);
     m->timedReturn_ = 0;
-    if (m->profiling_) m->profile_->endCall(m->clock_.now - m->timedStart_);
-    m->profiling_ = false;
   }
   if (m->clock_.now >= m->clock_.stopAt) {
     uc_emu_stop(uc);  // before the block: PC == address, the block does not run
@@ -76,7 +75,7 @@ void Machine::Hooks::blockInFull(uc_engine* uc, uint64_t address, uint32_t size,
     log::debug("emu", "block %08x size %u cpsr %08x t=%llu", static_cast<unsigned>(address), size, cpsr,
                static_cast<unsigned long long>(m->clock_.now));
   const uint64_t n = (cpsr & kCpsrT) ? size / 2 : size / 4;
-  if (m->profiling_) m->profile_->count(static_cast<uint32_t>(address), n);
+  if (m->profiling()) m->profile_->count(static_cast<uint32_t>(address), n);
   m->blockStart_ = m->clock_.now;
   m->clock_.now += n;
   m->executed_ += n;
@@ -95,7 +94,6 @@ void Machine::Hooks::timedEntry(uc_engine* uc, uint64_t, uint32_t, void* user) {
   if (m->profile_) {
     m->profile_->beginCall();
     m->profile_->count(m->lastBlock_, m->clock_.now - m->blockStart_);
-    m->profiling_ = true;
   }
 }
 
