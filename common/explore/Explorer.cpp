@@ -52,10 +52,14 @@ void Explorer::apply(const Event& e) {
       ++counters_.sensorRequests;
       counters_.rawSamples += e.reading.samples;
       const Dir d = sensorDir(pose_.heading, e.sensor);
-      // Where it was set down the robot takes its blind zone as clear (a robot is put down in the open),
-      // everywhere else only what it saw from farther away (RangeGeometry::blindCm).
-      const RayMarkResult r = markRay(map_, config_.geometry, pose_.cell, d, e.reading, pose_.cell == startCell_);
+      // Where it was set down the robot takes its blind zone as clear (a robot is put down in the open), and
+      // where its body has turned a quarter on the spot (ExplorerConfig::turnNeedsRoom); everywhere else only
+      // what it saw from farther away (RangeGeometry::blindCm).
+      const bool trusted = pose_.cell == startCell_ || (turnedHere_ && config_.turnNeedsRoom);
+      const RayMarkResult r = markRay(map_, config_.geometry, pose_.cell, d, e.reading, trusted);
       if (r.conclusive) map_.setRead(pose_.cell, d);
+      if (r.cellsMarked == 0 && !trusted && config_.turnNeedsRoom && e.reading.status == RangeStatus::NoEcho)
+        blindDirs_ = static_cast<uint8_t>(blindDirs_ | (1u << static_cast<int>(d)));
       break;
     }
     case Event::Kind::Moved: {
@@ -66,13 +70,19 @@ void Explorer::apply(const Event& e) {
         if (!map_.markVisited(pose_.cell)) end_ = ExplorerEnd::GridFull;
         if (!route_.empty() && route_.front() == d) route_.pop();
       }
+      if (n > 0) {
+        turnedHere_ = false;
+        blindDirs_ = 0;
+      }
 #ifndef NXTMAP_NO_START_SQUARING
       if (roomWaived_ && route_.empty()) waiveRoom(false);  // reached: turn only with room again
 #endif
       counters_.cellsMoved += static_cast<uint32_t>(n);
       break;
     }
-    case Event::Kind::Blocked: ++counters_.blockedMoves;
+    case Event::Kind::Blocked:
+      ++counters_.blockedMoves;
+      if (e.amount != 0) blindDirs_ = 0;  // a turn met something: the blind zone stays untrusted here
 #ifndef NXTMAP_NO_START_SQUARING
       if (roomWaived_) waiveRoom(false);
 #endif
@@ -92,6 +102,11 @@ void Explorer::apply(const Event& e) {
       // Explorers turn in quarters; a 45 degree turn is counted for time but kept on the axis
       // grid by its pair.
       pose_.heading = rotate(pose_.heading, e.amount / 2);
+      if (e.amount / 2 != 0 && !turnedHere_) {  // the blind zone is now trusted: read again what it hid
+        turnedHere_ = true;
+        map_.forgetReads(pose_.cell, blindDirs_);
+        blindDirs_ = 0;
+      }
       counters_.turnEighths += static_cast<uint32_t>(e.amount < 0 ? -e.amount : e.amount);
       break;
     case Event::Kind::Thought: break;
@@ -108,7 +123,46 @@ Action Explorer::settle(const Action& a) {
     return settle(decide());
   }
 #endif
+  if (!proving_ && config_.turnNeedsRoom && config_.geometry.blindCells() > 0) {  // last: where the blind zone hid
+    proving_ = true;
+    scanRow_ = map_.grid().window().minY;
+    forgotten_ = 0;
+    return Action::think();  // the scan runs in slices (continueProveScan)
+  }
   return finish(ExplorerEnd::Complete);
+}
+
+Action Explorer::continueProveScan() {
+  const Bounds w = map_.grid().window();
+  for (int16_t rows = 0; rows < kProveScanRows && scanRow_ <= w.maxY; ++rows, ++scanRow_) {
+    for (int16_t x = w.minX; x <= w.maxX; ++x) forgetBlindReads(Cell{x, scanRow_});
+  }
+  if (scanRow_ <= w.maxY) return Action::think();
+  scanRow_ = kNoScan;
+  if (forgotten_ == 0) return finish(ExplorerEnd::Complete);
+  Sensor s;  // the robot's own cell may be among them
+  return nextRead(s) ? Action::read(s) : settle(decide());
+}
+
+void Explorer::forgetBlindReads(Cell c) {
+  uint8_t dirs = 0;
+  for (int d = 0; d < 4; ++d) {
+    const Dir dir = static_cast<Dir>(d);
+    const Cell n = advance(c, dir);
+    if (map_.wasRead(c, dir) && map_.at(n) == CellState::Unknown && map_.grid().fits(n))
+      dirs = static_cast<uint8_t>(dirs | (1u << d));
+  }
+  if (dirs == 0) return;
+  map_.forgetReads(c, dirs);
+  ++forgotten_;
+}
+
+bool Explorer::proveTurnDue() const {
+  if (!proving_ || blindDirs_ == 0 || turnedHere_) return false;
+#ifndef NXTMAP_NO_START_SQUARING
+  if (stalledTurns_.contains(pose_.cell)) return false;
+#endif
+  return route_.empty() || isVertical(route_.front()) == isVertical(pose_.heading);  // else the route turns
 }
 
 Action Explorer::startSearch(uint8_t purpose) {
@@ -138,6 +192,10 @@ Action Explorer::step(const Event& e) {
     NXTMAP_CHECK(e.kind == Event::Kind::Thought);  // nothing else can happen while thinking
     return settle(continueSearch());
   }
+  if (scanRow_ != kNoScan) {
+    NXTMAP_CHECK(e.kind == Event::Kind::Thought);
+    return continueProveScan();
+  }
   if (!started_ && e.kind != Event::Kind::Start) apply(Event::start());
   apply(e);
   if (end_ != ExplorerEnd::Running) return finish(end_);
@@ -145,6 +203,7 @@ Action Explorer::step(const Event& e) {
   if (e.kind == Event::Kind::Blocked) onBlocked();
   Sensor s;
   if (nextRead(s)) return Action::read(s);
+  if (proveTurnDue()) return Action::turn(2);  // a quarter on the spot proves the blind zone clear
   return settle(route_.empty() ? decide() : follow());
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <climits>
 
 #include "common/explore/Action.hpp"
 #include "common/explore/Counters.hpp"
@@ -91,6 +92,24 @@ class Explorer {
   ExplorerEnd end_ = ExplorerEnd::Running;
   bool started_ = false;
   Cell startCell_{};  // where the run started (the blind zone is trusted there)
+  // Since the robot came to its cell: whether it has turned a quarter there (its body swept its turning
+  // circle, so the blind zone is trusted as at the start), and the directions (bit d: Dir d) whose "no echo"
+  // concluded nothing for want of that trust, to be read again after such a turn.
+  bool turnedHere_ = false;
+  uint8_t blindDirs_ = 0;
+  // The last resort before a run ends complete (a body that sweeps its neighbours and a blind zone: see
+  // ExplorerConfig::turnNeedsRoom): every direction read from a cell
+  // whose neighbour that way is still unknown (a "no echo" that concluded nothing) is forgotten, so the
+  // strategy comes back to read it again, and from then on the robot turns a quarter where a "no echo"
+  // concluded nothing (proveTurnDue) to read it with the blind zone trusted.
+  bool proving_ = false;
+  static constexpr int16_t kNoScan = INT16_MIN;
+  static constexpr int16_t kProveScanRows = 4;  // rows of the map scanned per think slice
+  int16_t scanRow_ = kNoScan;                   // next row to scan for such reads; kNoScan: not scanning
+  uint16_t forgotten_ = 0;                      // cells with a direction forgotten by the scan
+  Action continueProveScan();
+  void forgetBlindReads(Cell c);
+  bool proveTurnDue() const;
   bool searching_ = false;
   uint8_t searchPurpose_ = 0;
 #ifndef NXTMAP_NO_START_SQUARING

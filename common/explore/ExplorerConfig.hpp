@@ -18,7 +18,11 @@ struct ExplorerConfig {
   // The robot's body reaches into the four neighbouring cells when it turns on the spot (a 16 x 18 cm
   // body sweeps 12 cm from its centre; a 20 cm cell leaves 10): it turns only in a cell whose four
   // neighbours are known free, and drives along its axis (forward or backward) elsewhere. false: a
-  // body that turns inside its own cell (the published point robot).
+  // body that turns inside its own cell (the published point robot). Such a body that has turned a quarter
+  // without meeting anything has also shown the near part of the neighbouring cells clear, as far as the
+  // sensor's blind zone reaches (RangeGeometry::blindCm: the brick's 6 cm mount + 7 cm reach 3 cm into them,
+  // the body 2 cm; in the last centimetre the LEGO sensor mostly answers, docs/nxt-sonar-and-odometry.md):
+  // a "no echo" read there is trusted, and before a run ends the robot turns where one was not.
   bool turnNeedsRoom = false;
 };
 

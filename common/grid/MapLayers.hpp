@@ -43,6 +43,8 @@ class MapLayers {
 
   bool wasRead(Cell c, Dir d) const { return (reads_.at(c) >> static_cast<int>(d)) & 1u; }
   void setRead(Cell c, Dir d) { reads_.set(c, static_cast<uint8_t>(reads_.at(c) | (1u << static_cast<int>(d)))); }
+  // Forgets the directions in `dirs` (bit d set: Dir d) as read from c, so they are read again.
+  void forgetReads(Cell c, uint8_t dirs) { reads_.set(c, static_cast<uint8_t>(reads_.at(c) & ~dirs & 0xFu)); }
 
   // Diagonal moves between c and c + (sx, sy), sx, sy = +-1, in either direction.
   bool diagonalUsed(Cell c, int sx, int sy) const;
