@@ -145,12 +145,13 @@ Action Explorer::continueProveScan() {
 }
 
 void Explorer::forgetBlindReads(Cell c) {
+  const uint8_t read = map_.readDirs(c);
+  if (read == 0) return;  // most cells of the window: never stood on
   uint8_t dirs = 0;
   for (int d = 0; d < 4; ++d) {
-    const Dir dir = static_cast<Dir>(d);
-    const Cell n = advance(c, dir);
-    if (map_.wasRead(c, dir) && map_.at(n) == CellState::Unknown && map_.grid().fits(n))
-      dirs = static_cast<uint8_t>(dirs | (1u << d));
+    if (((read >> d) & 1u) == 0) continue;
+    const Cell n = advance(c, static_cast<Dir>(d));
+    if (map_.at(n) == CellState::Unknown && map_.grid().fits(n)) dirs = static_cast<uint8_t>(dirs | (1u << d));
   }
   if (dirs == 0) return;
   map_.forgetReads(c, dirs);
