@@ -175,12 +175,15 @@ Action Explorer::startSearch(uint8_t purpose) {
 
 Action Explorer::continueSearch() {
   const uint8_t purpose = searchPurpose_;
+  if (searchEnded_) {  // the strategy's decision (a route walked back from far off) in a slice of its own
+    searching_ = searchEnded_ = false;
+    return searchDone(purpose);
+  }
   const TravelPlanner::Status st = planner_.proceed(
       map_.grid(), [this, purpose](Cell c, uint16_t cost) { return searchVisit(purpose, c, cost); },
       config_.searchSliceStates);
-  if (st == TravelPlanner::Status::Running) return Action::think();
-  searching_ = false;
-  return searchDone(purpose);
+  searchEnded_ = st != TravelPlanner::Status::Running;
+  return Action::think();
 }
 
 bool Explorer::searchVisit(uint8_t, Cell, uint16_t) { return true; }

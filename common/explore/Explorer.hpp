@@ -111,6 +111,7 @@ class Explorer {
   void forgetBlindReads(Cell c);
   bool proveTurnDue() const;
   bool searching_ = false;
+  bool searchEnded_ = false;  // the search is over: searchDone() at the next Thought
   uint8_t searchPurpose_ = 0;
 #ifndef NXTMAP_NO_START_SQUARING
   // ExplorerConfig::turnNeedsRoom waived: no goal was within reach with it; until the route is driven or

@@ -84,8 +84,8 @@ int runEmuRoomBench(const std::string& scenarioDir) {
   const sim::Site site = cli::loadSiteFile(scenarioDir + "/occupancy-089.map", brick.cellCm);
   const sim::NoiseProfile noise = *sim::noiseProfileByName("nxt");
   Figures sumE, sumH;
-  std::printf("  %-5s %8s %8s %6s %5s   %8s %8s %6s %5s\n", "seed", "brick %", "aligned", "wrong", "lost", "host %",
-              "aligned", "wrong", "lost");
+  std::printf("  %-5s %8s %8s %6s %5s %8s   %8s %8s %6s %5s\n", "seed", "brick %", "aligned", "wrong", "lost", "instr",
+              "host %", "aligned", "wrong", "lost");
   const auto add = [](Figures& sum, const Figures& f) {
     sum.detected += f.detected;
     sum.aligned += f.aligned;
@@ -96,8 +96,10 @@ int runEmuRoomBench(const std::string& scenarioDir) {
   for (int s = 1; s <= seeds; ++s) {
     const Figures e = emulated(*load.image, site, brick, noise, static_cast<uint64_t>(s));
     const Figures h = host(site, brick, noise, static_cast<uint64_t>(s));
-    std::printf("  %-5d %8.1f %8.1f %6d %5s   %8.1f %8.1f %6d %5s\n", s, e.detected, e.aligned, e.wrong,
-                e.lost ? "yes" : "no", h.detected, h.aligned, h.wrong, h.lost ? "yes" : "no");
+    // instr: the brick's costliest sensor update in that run (instructions).
+    std::printf("  %-5d %8.1f %8.1f %6d %5s %8llu   %8.1f %8.1f %6d %5s\n", s, e.detected, e.aligned, e.wrong,
+                e.lost ? "yes" : "no", static_cast<unsigned long long>(e.maxPerUpdate), h.detected, h.aligned, h.wrong,
+                h.lost ? "yes" : "no");
     std::fflush(stdout);
     add(sumE, e);
     add(sumH, h);
