@@ -41,7 +41,6 @@ Action Explorer::finish(ExplorerEnd why) {
 }
 
 void Explorer::apply(const Event& e) {
-  if (e.kind != Event::Kind::Thought) searchesIdle_ = 0;  // the robot did something
   switch (e.kind) {
     case Event::Kind::Start:
       pose_ = e.pose;
@@ -115,7 +114,7 @@ void Explorer::apply(const Event& e) {
 }
 
 Action Explorer::settle(const Action& a) {
-  if (a.kind != Action::Kind::Done || end_ != ExplorerEnd::Running) return a;  // (ended: as it ended)
+  if (a.kind != Action::Kind::Done) return a;
     // Nothing left within reach turning only where the body has room: try once more turning anywhere (a turn
     // that meets something is turned back by the pilot and heard as Event::turnBlocked).
 #ifndef NXTMAP_NO_START_SQUARING  // the RAM-run image has no room for it (nor the pilot's stall recovery)
@@ -168,8 +167,6 @@ bool Explorer::proveTurnDue() const {
 }
 
 Action Explorer::startSearch(uint8_t purpose) {
-  // Thinking is not an action (maxActions): a strategy that searches on and on without ever acting is stopped here.
-  if (++searchesIdle_ > kMaxIdleSearches) return finish(ExplorerEnd::ActionLimit);
   planner_.start(pose_);  // clears the planner's labels: a slice of its own
   searching_ = true;
   searchPurpose_ = purpose;

@@ -112,10 +112,6 @@ class Explorer {
   bool proveTurnDue() const;
   bool searching_ = false;
   bool searchEnded_ = false;  // the search is over: searchDone() at the next Thought
-  // Searches started since the robot last did anything; more than kMaxIdleSearches end the run (ActionLimit).
-  // The strategies need a few in a row (a propagation's ends, the room waiver, the blind-zone pass).
-  static constexpr uint8_t kMaxIdleSearches = 32;
-  uint8_t searchesIdle_ = 0;
   uint8_t searchPurpose_ = 0;
 #ifndef NXTMAP_NO_START_SQUARING
   // ExplorerConfig::turnNeedsRoom waived: no goal was within reach with it; until the route is driven or
