@@ -168,6 +168,7 @@ class Pilot {
   // After a sweep that saw no straight wall: Phase::Approach (towards an echo, back, sweep again) when there is
   // one to take (StartSquaring::approachEcho).
   void approachIfFar();
+  int approachesLeft() const;  // approaches approachIfFar may still make (PilotConfig::approaches)
   DriveAction begin(const Action& a);
 #ifndef NXTMAP_NO_START_SQUARING
   DriveAction turnStalled(const DriveEvent& e);  // Phase::Turn's rotation stalled: turn back

@@ -49,6 +49,10 @@ DriveAction Pilot::square(const DriveEvent& e) {
 }
 
 #ifndef NXTMAP_NO_START_SQUARING
+int Pilot::approachesLeft() const {
+  return config_.approachCm > 0 && approached_ < config_.approaches ? config_.approaches - approached_ : 0;
+}
+
 void Pilot::approachIfFar() {
   // No straight wall within the sweep's reach: towards an echo (StartSquaring::approachEcho; the sweep ended at its
   // zero, off by the residual), PilotConfig::approachCm.
@@ -108,7 +112,7 @@ DriveAction Pilot::approach(const DriveEvent& e) {
   }
   NXTMAP_CHECK(approachStep_ == 2 && rotated);  // an event that does not answer the action in progress
   phase_ = Phase::Square;
-  return squaring_.begin();
+  return squaring_.begin(approachesLeft());
 }
 #endif
 

@@ -27,7 +27,8 @@ StartSquaring::StartSquaring(int32_t sweepMrad, int32_t stepMrad, int16_t approa
   NXTMAP_CHECK(stepMrad > 0 && sweepMrad >= 0 && 2 * sweepMrad / stepMrad < WallDirection::kMaxSteps);
 }
 
-DriveAction StartSquaring::begin() {
+DriveAction StartSquaring::begin(int approachesLeft) {
+  approachesLeft_ = static_cast<int8_t>(approachesLeft < 0 ? -1 : (approachesLeft > 100 ? 100 : approachesLeft));
   walls_.clear();
   result_ = WallDirectionEstimate{};
   headingMrad_ = targetMrad_ = 0;
@@ -54,6 +55,11 @@ DriveAction StartSquaring::readNext() {
   if (!stalled_ && headingMrad_ + stepMrad_ <= sweepMrad_ + stepMrad_ / 2 && walls_.steps() < WallDirection::kMaxSteps)
     return turn(Phase::Step, stepMrad_);
   result_ = walls_.estimate();
+  if (!result_.found && approachesLeft_ >= 0 && (approachesLeft_ == 0 || !target_.seen)) {
+    const uint8_t dips = result_.dips;
+    result_ = walls_.widestWall();  // the last sweep: a wall alone rather than none
+    result_.dips = dips;
+  }
   targetMrad_ = result_.found ? result_.mrad : 0;
   return turn(Phase::ToWalls, targetMrad_ - headingMrad_);
 }

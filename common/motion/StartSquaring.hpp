@@ -19,7 +19,10 @@ class StartSquaring {
   // stepMrad: between headings (5 deg: a dip is 60-75 deg wide). At most WallDirection::kMaxSteps headings.
   explicit StartSquaring(int32_t sweepMrad = 1571, int32_t stepMrad = 87, int16_t approachFromCm = 70);
 
-  DriveAction begin();
+  // approachesLeft: how many more times the pilot would drive towards an echo (approachEcho()) if this sweep saw
+  // no straight wall; with none left, or no such echo, the sweep takes the widest wall dip alone
+  // (WallDirection::widestWall) rather than none. Negative: never (a calibration's sweeps).
+  DriveAction begin(int approachesLeft = -1);
   // The answer to the previous action; returns the next. DriveAction::done() once square.
   DriveAction step(const DriveEvent& e);
   bool finished() const { return phase_ == Phase::Done; }
@@ -60,6 +63,7 @@ class StartSquaring {
   int16_t approachFromCm_;
   Echo target_;
   bool avoiding_ = false;  // an approach was made (avoid())
+  int8_t approachesLeft_ = -1;  // begin()'s
   int32_t avoidMrad_ = 0;
   Phase phase_ = Phase::Idle;
   WallDirection walls_;

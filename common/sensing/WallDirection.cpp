@@ -180,4 +180,21 @@ WallDirectionEstimate WallDirection::estimate() const {
   return e;
 }
 
+WallDirectionEstimate WallDirection::widestWall() const {
+  Dip found[kMaxDips];
+  const int n = distinct(found, dips(found, kMaxDips));
+  WallDirectionEstimate e;
+  e.dips = static_cast<uint8_t>(n);
+  int best = -1;
+  for (int i = 0; i < n; ++i) {
+    if (found[i].clean && found[i].widthMrad >= kLoneDipMrad && (best < 0 || found[i].widthMrad > found[best].widthMrad))
+      best = i;
+  }
+  if (best < 0) return e;
+  e.found = true;
+  e.mrad = wrapQuarter(found[best].centreMrad);
+  e.agreeing = 1;
+  return e;
+}
+
 }  // namespace nxtmap

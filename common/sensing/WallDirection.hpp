@@ -56,6 +56,11 @@ class WallDirection {
   int steps() const { return steps_; }
 
   WallDirectionEstimate estimate() const;
+  // The last resort when estimate() found nothing and nothing better will be tried (StartSquaring: no approach
+  // left): the widest dip that alone looks like nothing but a wall (clean, at least kLoneDipMrad wide), whatever
+  // other dips say. Two walls' dips disagree beyond kAgreeMrad in about one sweep in five (each is off by about
+  // 2.4 degrees, 1 sigma); either is nearer the walls than a start heading up to 10 degrees off square.
+  WallDirectionEstimate widestWall() const;
 
   // A dip's centre and width (mrad, sweep headings) by sensor, for tables: fills at most `max`, returns
   // how many were found.

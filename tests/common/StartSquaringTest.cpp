@@ -1,0 +1,137 @@
+// StartSquaring and WallDirection's last resort, events in and actions out: a sweep whose two wall dips disagree
+// (two walls 6 degrees apart, or two dips each off by a few degrees) names no walls while an approach may still
+// find better; on the last sweep it takes the widest wall dip rather than leave the robot as it was set down.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+
+#include "common/motion/StartSquaring.hpp"
+#include "common/sensing/WallDirection.hpp"
+
+namespace nxtmap {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kConeDeg = 12.0;
+
+// One straight wall seen by one sensor: its normal `normalDeg` off the sweep's zero (+ clockwise, in the sensor's
+// own frame), `cm` from the sensor along it.
+struct Wall {
+  double normalDeg;
+  double cm;
+};
+
+// A sensor facing `facingDeg` reads the wall's distance while the wall's normal lies in its cone, d / cos(off -
+// cone) beyond it, whole cm; nothing 60 degrees or more off the normal (the echo glances off) or past 160 cm.
+int16_t wallReading(const Wall& w, double facingDeg) {
+  double off = std::fabs(std::remainder(facingDeg - w.normalDeg, 360.0));
+  if (off >= 60.0) return 0;
+  off = off > kConeDeg ? off - kConeDeg : 0.0;
+  const double cm = w.cm / std::cos(off * kPi / 180.0);
+  return cm > 160.0 ? 0 : static_cast<int16_t>(std::lround(cm));
+}
+
+// Front sees a wall 25 cm off with its normal at +3 degrees of the sweep; the right sensor one 80 cm off (`rightCm`)
+// facing its normal at +9 degrees (the two walls are 6 degrees off square to each other); back and left see nothing.
+struct TwoWalls {
+  double rightCm = 80.0;
+  int16_t read(Sensor s, int32_t headingMrad) const {
+    const double deg = headingMrad * 180.0 / (1000.0 * kPi);
+    if (s == Sensor::Front) return wallReading(Wall{3.0, 25.0}, deg);
+    if (s == Sensor::Right) return wallReading(Wall{9.0, rightCm}, deg);
+    return 0;
+  }
+};
+
+WallDirection sweep(const TwoWalls& room) {
+  WallDirection w;
+  for (int k = 0; k <= 36; ++k) {
+    const int32_t mrad = -1571 + 87 * k;
+    w.addHeading(mrad);
+    for (int s = 0; s < kSensorCount; ++s) w.addReading(static_cast<Sensor>(s), room.read(static_cast<Sensor>(s), mrad));
+  }
+  return w;
+}
+
+TEST(WallDirectionWidest, TwoDisagreeingWallDipsNameNoWallsButTheWidestIsTheLastResort) {
+  const WallDirection w = sweep(TwoWalls{});
+  WallDirection::Dip d[4];
+  ASSERT_EQ(w.dips(d, 4), 2);
+  EXPECT_TRUE(d[0].clean && d[1].clean);
+  EXPECT_GT(d[0].widthMrad, d[1].widthMrad) << "the near wall's dip is the wider (3 cm of 25 is more than 10 %)";
+  const WallDirectionEstimate strict = w.estimate();
+  EXPECT_FALSE(strict.found) << "6 degrees apart: more than kAgreeMrad";
+  EXPECT_EQ(strict.dips, 2);
+  const WallDirectionEstimate widest = w.widestWall();
+  ASSERT_TRUE(widest.found);
+  EXPECT_EQ(widest.agreeing, 1);
+  EXPECT_NEAR(widest.mrad * 0.18 / kPi, 3.0, 1.0) << "the front's wall";
+}
+
+TEST(WallDirectionWidest, NoDipWideAndCleanEnoughIsNoWall) {
+  // A post: a narrow dip only (under kLoneDipMrad), and nothing else.
+  WallDirection w;
+  for (int k = 0; k <= 36; ++k) {
+    const int32_t mrad = -1571 + 87 * k;
+    w.addHeading(mrad);
+    const double deg = mrad * 0.18 / kPi;
+    w.addReading(Sensor::Front, std::fabs(deg - 20.0) <= 17.5 ? 100 : (std::fabs(deg - 20.0) <= 22.5 ? 104 : 0));
+  }
+  EXPECT_FALSE(w.estimate().found);
+  EXPECT_FALSE(w.widestWall().found);
+}
+
+// Runs one sweep of StartSquaring in `room`, the wheels turning as told; returns its result.
+WallDirectionEstimate runSweep(const TwoWalls& room, int approachesLeft, int32_t& endHeadingMrad) {
+  StartSquaring squaring;
+  int32_t heading = 0;
+  DriveAction a = squaring.begin(approachesLeft);
+  for (int i = 0; i < 1000 && !squaring.finished(); ++i) {
+    if (a.kind == DriveAction::Kind::Rotate) {
+      heading += a.value;
+      a = squaring.step(DriveEvent::rotatedBy(a.value));
+    } else {
+      EXPECT_EQ(a.kind, DriveAction::Kind::Read);
+      RangeReading r;
+      r.cm = room.read(a.sensor, heading);
+      r.status = r.cm > 0 ? RangeStatus::Good : RangeStatus::NoEcho;
+      r.samples = 1;
+      a = squaring.step(DriveEvent::range(a.sensor, r));
+    }
+  }
+  EXPECT_TRUE(squaring.finished());
+  endHeadingMrad = heading;
+  return squaring.result();
+}
+
+TEST(StartSquaring, TheLastSweepTakesTheWidestWallDipAnEarlierOneLeavesItToTheApproach) {
+  struct Row {
+    double rightCm;      // the far wall: beyond 70 cm an approach can drive towards it
+    int approachesLeft;  // the pilot's (-1: a calibration's sweep, never)
+    bool found;
+  };
+  const Row rows[] = {
+      {80, 1, false},  // an approach follows: it may find two walls that agree
+      {80, 0, true},   // none left: the widest dip
+      {40, 2, true},   // nothing 70 cm away to approach: this is the last sweep
+      {80, -1, false},
+      {40, -1, false},
+  };
+  for (const Row& row : rows) {
+    TwoWalls room;
+    room.rightCm = row.rightCm;
+    int32_t heading = 0;
+    const WallDirectionEstimate e = runSweep(room, row.approachesLeft, heading);
+    EXPECT_EQ(e.found, row.found) << row.rightCm << " cm, approaches left " << row.approachesLeft;
+    EXPECT_EQ(e.dips, 2);
+    if (row.found) {
+      EXPECT_NEAR(heading * 0.18 / kPi, 3.0, 1.0) << "turned onto the front's wall";
+    } else {
+      EXPECT_EQ(heading, 0) << "back where it was set down";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace nxtmap
