@@ -38,7 +38,10 @@ class WallDirection {
   static constexpr int32_t kQuarterMrad = 1571;     // a quarter turn
   static constexpr int32_t kAgreeMrad = 70;         // dips this close (4 deg) name the same walls
   static constexpr int32_t kMaxDipMrad = 1745;      // 100 deg: a wider plateau is no straight wall
-  static constexpr int32_t kMinDipMrad = 524;       // 30 deg: a narrower dip is a small object's (or its corner's)
+  // 40 deg: a narrower dip is a small object's (or its corner's): an object stays in the cone (the NXT's: up to
+  // 15 deg either side) and is gone; a wall's flanks rise slowly past it. (Swept in the brick rooms under nxt,
+  // dips 30-40 deg wide were 5 deg or more off the walls three times in four, 50-70 deg wide once in twenty.)
+  static constexpr int32_t kMinDipMrad = 700;
   static constexpr int32_t kLoneDipMrad = 785;      // 45 deg: a dip alone must be this wide and clean
   static constexpr int16_t kNearCm = 20;            // a nearer floor: 1 cm is too much of the range to locate it
   static constexpr int32_t kMaxHeadingMrad = 8000;  // a sweep's headings lie within +-8 rad

@@ -132,10 +132,12 @@ TEST(WallDirection, HandComputedDipCentreAndObjectEdge) {
     int16_t pastCm;
     int dips;
   };
+  // (The floor one step wider than above: the right flank's crossing comes early, and the dip stays wider than
+  // kMinDipMrad.)
   for (const Edge edge : {Edge{130, 0}, Edge{63, 0}, Edge{62, 1}, Edge{58, 1}}) {
-    const int16_t object[] = {60, 54, 51, 50, 50, 50, 50, 50, 51, edge.pastCm, edge.pastCm};
+    const int16_t object[] = {60, 54, 51, 50, 50, 50, 50, 50, 50, 51, edge.pastCm, edge.pastCm};
     WallDirection o;
-    for (int k = 0; k < 11; ++k) {
+    for (int k = 0; k < 12; ++k) {
       o.addHeading(-435 + 87 * k);
       o.addReading(Sensor::Front, object[k]);
     }
