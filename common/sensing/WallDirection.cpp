@@ -187,7 +187,8 @@ WallDirectionEstimate WallDirection::widestWall() const {
   e.dips = static_cast<uint8_t>(n);
   int best = -1;
   for (int i = 0; i < n; ++i) {
-    if (found[i].clean && found[i].widthMrad >= kLoneDipMrad && (best < 0 || found[i].widthMrad > found[best].widthMrad))
+    if (found[i].clean && found[i].widthMrad >= kLastResortDipMrad &&
+        (best < 0 || found[i].widthMrad > found[best].widthMrad))
       best = i;
   }
   if (best < 0) return e;

@@ -42,7 +42,8 @@ class WallDirection {
   // 15 deg either side) and is gone; a wall's flanks rise slowly past it. (Swept in the brick rooms under nxt,
   // dips 30-40 deg wide were 5 deg or more off the walls three times in four, 50-70 deg wide once in twenty.)
   static constexpr int32_t kMinDipMrad = 700;
-  static constexpr int32_t kLoneDipMrad = 785;      // 45 deg: a dip alone must be this wide and clean
+  static constexpr int32_t kLoneDipMrad = 900;      // 52 deg: a dip alone must be this wide and clean
+  static constexpr int32_t kLastResortDipMrad = 785;  // 45 deg: as wide for widestWall()
   static constexpr int16_t kNearCm = 20;            // a nearer floor: 1 cm is too much of the range to locate it
   static constexpr int32_t kMaxHeadingMrad = 8000;  // a sweep's headings lie within +-8 rad
   static constexpr int16_t kFarCm = 160;            // farther readings are too coarse for a dip
@@ -60,7 +61,7 @@ class WallDirection {
 
   WallDirectionEstimate estimate() const;
   // The last resort when estimate() found nothing and nothing better will be tried (StartSquaring: no approach
-  // left): the widest dip that alone looks like nothing but a wall (clean, at least kLoneDipMrad wide), whatever
+  // left): the widest dip that alone looks like nothing but a wall (clean, at least kLastResortDipMrad wide), whatever
   // other dips say. Two walls' dips disagree beyond kAgreeMrad in about one sweep in five (each is off by about
   // 2.4 degrees, 1 sigma); either is nearer the walls than a start heading up to 10 degrees off square.
   WallDirectionEstimate widestWall() const;

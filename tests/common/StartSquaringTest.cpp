@@ -70,7 +70,7 @@ TEST(WallDirectionWidest, TwoDisagreeingWallDipsNameNoWallsButTheWidestIsTheLast
 }
 
 TEST(WallDirectionWidest, NoDipWideAndCleanEnoughIsNoWall) {
-  // A post: a narrow dip only (under kLoneDipMrad), and nothing else.
+  // A post: a narrow dip only (under kLastResortDipMrad), and nothing else.
   WallDirection w;
   for (int k = 0; k <= 36; ++k) {
     const int32_t mrad = -1571 + 87 * k;
@@ -80,6 +80,26 @@ TEST(WallDirectionWidest, NoDipWideAndCleanEnoughIsNoWall) {
   }
   EXPECT_FALSE(w.estimate().found);
   EXPECT_FALSE(w.widestWall().found);
+}
+
+TEST(WallDirectionWidest, ADipAloneMustBeWiderThanTheLastResortAsks) {
+  // One clean dip, floor 50 cm (level 55), 50 degrees wide: alone it names no walls (kLoneDipMrad: dips that
+  // narrow were 5 degrees or more off the walls one time in five), as the last resort it does.
+  const int16_t cm[] = {60, 55, 54, 52, 50, 50, 50, 50, 50, 52, 54, 55, 60};
+  WallDirection w;
+  for (int k = 0; k < 13; ++k) {
+    w.addHeading(-522 + 87 * k);
+    w.addReading(Sensor::Left, cm[k]);
+  }
+  WallDirection::Dip d[2];
+  ASSERT_EQ(w.dips(d, 2), 1);
+  ASSERT_TRUE(d[0].clean);
+  ASSERT_GT(d[0].widthMrad, WallDirection::kLastResortDipMrad);
+  ASSERT_LT(d[0].widthMrad, WallDirection::kLoneDipMrad);
+  EXPECT_FALSE(w.estimate().found);
+  const WallDirectionEstimate last = w.widestWall();
+  ASSERT_TRUE(last.found);
+  EXPECT_EQ(last.mrad, 0);
 }
 
 // Runs one sweep of StartSquaring in `room`, the wheels turning as told; returns its result.
