@@ -35,7 +35,7 @@ Pilot::Pilot(Explorer& explorer, const PilotConfig& config)
                             config.gateCellTenths),
                trackerWheels(config.wheels)),
 #ifndef NXTMAP_NO_START_SQUARING
-      squaring_(config.squareSweepMrad, config.squareStepMrad),
+      squaring_(config.squareSweepMrad, config.squareStepMrad, 70, config.sonarConeMrad),
       calibration_(squaring_, config.calibrateTurns),
       turnErrorPpm_(config.wheels.turnPpm),
 #endif

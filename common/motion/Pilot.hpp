@@ -48,6 +48,7 @@ struct PilotConfig {
   // stands (the published set-up, and every room after the first, entered square through its doorway).
   int16_t squareSweepMrad = 0;
   int16_t squareStepMrad = 87;  // between the sweep's headings
+  int16_t sonarConeMrad = 262;  // the sonar's widest beam half-angle (the NXT's 15 deg): how wide a wall's dip is
   // How well the squared heading is known (1 sigma, mrad): the estimate's spread plus the final turn's.
   int16_t squaredHeadingMrad = 20;
   // After the sweep (square to the walls, or as set down when it saw no straight wall), the nearest wall no

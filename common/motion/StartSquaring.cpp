@@ -22,8 +22,8 @@ int16_t sweepCm(const RangeReading& r) {
 
 }  // namespace
 
-StartSquaring::StartSquaring(int32_t sweepMrad, int32_t stepMrad, int16_t approachFromCm)
-    : sweepMrad_(sweepMrad), stepMrad_(stepMrad), approachFromCm_(approachFromCm) {
+StartSquaring::StartSquaring(int32_t sweepMrad, int32_t stepMrad, int16_t approachFromCm, int32_t coneHalfMrad)
+    : sweepMrad_(sweepMrad), stepMrad_(stepMrad), approachFromCm_(approachFromCm), walls_(coneHalfMrad) {
   NXTMAP_CHECK(stepMrad > 0 && sweepMrad >= 0 && 2 * sweepMrad / stepMrad < WallDirection::kMaxSteps);
 }
 

@@ -17,7 +17,9 @@ class StartSquaring {
  public:
   // sweepMrad: the sweep's half-width (the default +-90 deg sees a wall at any angle whole);
   // stepMrad: between headings (5 deg: a dip is 60-75 deg wide). At most WallDirection::kMaxSteps headings.
-  explicit StartSquaring(int32_t sweepMrad = 1571, int32_t stepMrad = 87, int16_t approachFromCm = 70);
+  // coneHalfMrad: the sonar's widest beam half-angle (WallDirection's dip widths).
+  explicit StartSquaring(int32_t sweepMrad = 1571, int32_t stepMrad = 87, int16_t approachFromCm = 70,
+                         int32_t coneHalfMrad = WallDirection::kNxtConeMrad);
 
   // approachesLeft: how many more times the pilot would drive towards an echo (approachEcho()) if this sweep saw
   // no straight wall; with none left, or no such echo, the sweep takes the widest wall dip alone

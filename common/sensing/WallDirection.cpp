@@ -32,6 +32,18 @@ constexpr int32_t bearing(const WallDirection::Dip& d) {
 
 }  // namespace
 
+namespace {
+// v, but at least floor, within an int16_t (a cone up to 600 mrad: at most 1576).
+constexpr int16_t atLeast(int32_t v, int32_t floor) {
+  return static_cast<int16_t>(v > 30000 ? 30000 : (v > floor ? v : floor));
+}
+}  // namespace
+
+WallDirection::WallDirection(int32_t coneHalfMrad)
+    : minDipMrad_(atLeast(2 * coneHalfMrad + 176, kMinDipMrad)),
+      loneDipMrad_(atLeast(2 * coneHalfMrad + 376, kLoneDipMrad)),
+      lastResortDipMrad_(atLeast(2 * coneHalfMrad + 261, kLoneDipMrad)) {}
+
 bool WallDirection::addHeading(int32_t mrad) {
   if (steps_ >= kMaxSteps || mrad < -kMaxHeadingMrad || mrad > kMaxHeadingMrad) return false;
   if (steps_ > 0 && mrad <= heading_[steps_ - 1]) return false;
@@ -131,7 +143,7 @@ int WallDirection::dips(Dip* out, int max) const {
       const int32_t right = crossing(s, k, +1, level, rightIndex);
       covered = rightIndex;
       const int32_t width = right - left;
-      if (floor < kNearCm || level - floor < kMinRiseCm || width > kMaxDipMrad || width < kMinDipMrad) continue;
+      if (floor < kNearCm || level - floor < kMinRiseCm || width > kMaxDipMrad || width < minDipMrad_) continue;
       out[n++] = Dip{static_cast<Sensor>(s), (left + right) / 2, width, floor, !l.corner && !r.corner};
     }
   }
@@ -165,7 +177,7 @@ WallDirectionEstimate WallDirection::estimate() const {
       bestCount = count;
     }
   }
-  const bool loneWall = n == 1 && found[0].clean && found[0].widthMrad >= kLoneDipMrad;
+  const bool loneWall = n == 1 && found[0].clean && found[0].widthMrad >= loneDipMrad_;
   if (best < 0 || (bestCount < 2 && !loneWall)) return e;
   const int32_t ref = wrapQuarter(found[best].centreMrad);
   int32_t sum = 0;
@@ -187,7 +199,7 @@ WallDirectionEstimate WallDirection::widestWall() const {
   e.dips = static_cast<uint8_t>(n);
   int best = -1;
   for (int i = 0; i < n; ++i) {
-    if (found[i].clean && found[i].widthMrad >= kLastResortDipMrad &&
+    if (found[i].clean && found[i].widthMrad >= lastResortDipMrad_ &&
         (best < 0 || found[i].widthMrad > found[best].widthMrad))
       best = i;
   }

@@ -7,7 +7,7 @@ namespace nxtmap {
 
 // What a sweep says about the room's walls.
 struct WallDirectionEstimate {
-  bool found = false;    // a wall was seen (two dips that agree, or one clean dip of kLoneDipMrad alone)
+  bool found = false;    // a wall was seen (two dips that agree, or one clean dip of loneDipMrad() alone)
   int32_t mrad = 0;      // the walls' normals modulo a quarter turn, mrad from the sweep's zero heading,
                          // + clockwise, in [-kQuarterMrad / 2, kQuarterMrad / 2); 0 when not found
   uint8_t dips = 0;      // wall dips found over the four sensors
@@ -23,10 +23,10 @@ struct WallDirectionEstimate {
 // its flanks rise through a level just above its floor) is a wall normal as that sensor saw it. The four
 // sensors face a quarter turn apart, so modulo a quarter turn every dip names the same direction in a
 // rectangular room; the estimate is the mean of the largest group that agrees, at least two dips, or one
-// dip alone that looks like nothing but a wall (both flanks rising whole, at least kLoneDipMrad wide).
+// dip alone that looks like nothing but a wall (both flanks rising whole, at least loneDipMrad() wide).
 //
 // Not a wall: a dip cut off by the sweep's ends, a plateau wider than kMaxDipMrad (a round or open
-// space) or narrower than kMinDipMrad (a small object, whose nearest point is often its corner), a floor
+// space) or narrower than minDipMrad() (a small object, whose nearest point is often its corner), a floor
 // nearer than kNearCm (whole-cm readings cannot place it), and a plateau whose flank jumps far above its floor (the edge of an object before a wall);
 // readings without an echo end a flank but say nothing else. A flank that turns down again before it has
 // risen (a nearer wall past a corner) is cut at three quarters of its rise; under kMinRiseCm it locates nothing. Headings are the sweep's own (odometry),
@@ -38,12 +38,18 @@ class WallDirection {
   static constexpr int32_t kQuarterMrad = 1571;     // a quarter turn
   static constexpr int32_t kAgreeMrad = 70;         // dips this close (4 deg) name the same walls
   static constexpr int32_t kMaxDipMrad = 1745;      // 100 deg: a wider plateau is no straight wall
-  // 40 deg: a narrower dip is a small object's (or its corner's): an object stays in the cone (the NXT's: up to
-  // 15 deg either side) and is gone; a wall's flanks rise slowly past it. (Swept in the brick rooms under nxt,
-  // dips 30-40 deg wide were 5 deg or more off the walls three times in four, 50-70 deg wide once in twenty.)
-  static constexpr int32_t kMinDipMrad = 700;
-  static constexpr int32_t kLoneDipMrad = 900;      // 52 deg: a dip alone must be this wide and clean
-  static constexpr int32_t kLastResortDipMrad = 785;  // 45 deg: as wide for widestWall()
+  // How wide a dip must be, from the sonar's widest beam half-angle b: an object's nearest point stays in the
+  // beam for about 2b and is gone, a wall's flanks rise slowly past it (10 % at 25 deg more). In the brick rooms
+  // under nxt (b = 15 deg), dips 30-40 deg wide were 5 deg or more off the walls three times in four, 46-52 deg
+  // once in five, 52-69 deg once in twenty: a dip is one from 2b + 10 deg (never under 30), names the walls alone
+  // from 2b + 21.5 deg (never under 45), and as the last resort (widestWall) from 2b + 15 deg (never under 45).
+  static constexpr int32_t kMinDipMrad = 524;         // 30 deg: the floor of minDipMrad()
+  static constexpr int32_t kLoneDipMrad = 785;        // 45 deg: the floor of loneDipMrad() and lastResortDipMrad()
+  static constexpr int32_t kNxtConeMrad = 262;        // 15 deg: the NXT sensor's widest beam (the default)
+  explicit WallDirection(int32_t coneHalfMrad = kNxtConeMrad);
+  int32_t minDipMrad() const { return minDipMrad_; }
+  int32_t loneDipMrad() const { return loneDipMrad_; }
+  int32_t lastResortDipMrad() const { return lastResortDipMrad_; }
   static constexpr int16_t kNearCm = 20;            // a nearer floor: 1 cm is too much of the range to locate it
   static constexpr int32_t kMaxHeadingMrad = 8000;  // a sweep's headings lie within +-8 rad
   static constexpr int16_t kFarCm = 160;            // farther readings are too coarse for a dip
@@ -61,7 +67,7 @@ class WallDirection {
 
   WallDirectionEstimate estimate() const;
   // The last resort when estimate() found nothing and nothing better will be tried (StartSquaring: no approach
-  // left): the widest dip that alone looks like nothing but a wall (clean, at least kLastResortDipMrad wide), whatever
+  // left): the widest dip that alone looks like nothing but a wall (clean, at least lastResortDipMrad() wide), whatever
   // other dips say. Two walls' dips disagree beyond kAgreeMrad in about one sweep in five (each is off by about
   // 2.4 degrees, 1 sigma); either is nearer the walls than a start heading up to 10 degrees off square.
   WallDirectionEstimate widestWall() const;
@@ -95,6 +101,7 @@ class WallDirection {
   // Where that flank passes `level` (mrad), and the last index at or below it.
   int32_t crossing(int s, int k, int dir, int16_t level, int& lastInside) const;
 
+  int16_t minDipMrad_, loneDipMrad_, lastResortDipMrad_;  // mrad (WallDirection(coneHalfMrad))
   int16_t heading_[kMaxSteps] = {};           // mrad, |.| <= kMaxHeadingMrad
   uint8_t cm_[kMaxSteps][kSensorCount] = {};  // whole cm, 0: no usable echo
   int steps_ = 0;

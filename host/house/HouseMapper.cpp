@@ -29,6 +29,7 @@ PilotConfig pilotFor(const HouseConfig& c) {
   PilotConfig p;
   p.correct = c.poseCorrection;
   p.wheels = mapping::storedCalibration(c.noise.wheels);
+  p.sonarConeMrad = mapping::sonarConeMrad(c.noise.sonar);
   if (c.squareAtStart) p.squareSweepMrad = 1571;  // RoomSession: the first room's run only
   return p;
 }

@@ -72,6 +72,7 @@ MappingRun::MappingRun(Setup setup, const RunConfig&)
   PilotConfig pilot;
   pilot.correct = config_.poseCorrection;
   pilot.wheels = storedCalibration(config_.noise.wheels);
+  pilot.sonarConeMrad = sonarConeMrad(config_.noise.sonar);
   if (config_.calibrateTurns > 0) config_.squareAtStart = true;
   if (config_.squareAtStart) pilot.squareSweepMrad = 1571;
   pilot.calibrateTurns = static_cast<uint8_t>(config_.calibrateTurns);

@@ -29,6 +29,11 @@ int16_t sonarBlindCm(const sim::SonarNoise& sonar) {
   return static_cast<int16_t>(std::ceil(blind));
 }
 
+int16_t sonarConeMrad(const sim::SonarNoise& sonar) {
+  const double deg = std::max(sonar.coneHalfAngleDeg, sonar.coneWideDeg);
+  return static_cast<int16_t>(std::lround(std::clamp(deg, 0.0, 60.0) * 3.141592653589793 / 0.18));
+}
+
 WheelCalibration storedCalibration(const sim::WheelNoise& wheels) {
   // The floors: 0.1 deg/m of drift, 0.1 % of turn error (1 sigma).
   constexpr double kFloorUradPerM = 1745.0, kFloorPpm = 1000.0;

@@ -27,6 +27,8 @@ RangeGeometry sonarGeometryFor(const sim::World& world, double minRangeM, double
 // where the modelled sensor returns no echo at all (0: none, as the published model).
 int16_t sonarBlindCm(const sim::SonarNoise& sonar);
 
+// The sonar's widest beam half-angle as the robot knows its sensor (PilotConfig::sonarConeMrad), mrad.
+int16_t sonarConeMrad(const sim::SonarNoise& sonar);
 // What a robot with these wheels holds in its store (PilotConfig::wheels): its systematic errors' sizes, not
 // their values or signs (a real robot knows them from its last calibration, to about that accuracy), as the
 // variances; the values 0. Wheels without systematic errors are stored as known to 0.1 deg/m and 0.1 %.

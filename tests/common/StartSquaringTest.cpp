@@ -70,7 +70,7 @@ TEST(WallDirectionWidest, TwoDisagreeingWallDipsNameNoWallsButTheWidestIsTheLast
 }
 
 TEST(WallDirectionWidest, NoDipWideAndCleanEnoughIsNoWall) {
-  // A post: a narrow dip only (under kLastResortDipMrad), and nothing else.
+  // A post: a narrow dip only (under lastResortDipMrad()), and nothing else.
   WallDirection w;
   for (int k = 0; k <= 36; ++k) {
     const int32_t mrad = -1571 + 87 * k;
@@ -83,7 +83,7 @@ TEST(WallDirectionWidest, NoDipWideAndCleanEnoughIsNoWall) {
 }
 
 TEST(WallDirectionWidest, ADipAloneMustBeWiderThanTheLastResortAsks) {
-  // One clean dip, floor 50 cm (level 55), 50 degrees wide: alone it names no walls (kLoneDipMrad: dips that
+  // One clean dip, floor 50 cm (level 55), 50 degrees wide: alone it names no walls (loneDipMrad(): dips that
   // narrow were 5 degrees or more off the walls one time in five), as the last resort it does.
   const int16_t cm[] = {60, 55, 54, 52, 50, 50, 50, 50, 50, 52, 54, 55, 60};
   WallDirection w;
@@ -94,12 +94,38 @@ TEST(WallDirectionWidest, ADipAloneMustBeWiderThanTheLastResortAsks) {
   WallDirection::Dip d[2];
   ASSERT_EQ(w.dips(d, 2), 1);
   ASSERT_TRUE(d[0].clean);
-  ASSERT_GT(d[0].widthMrad, WallDirection::kLastResortDipMrad);
-  ASSERT_LT(d[0].widthMrad, WallDirection::kLoneDipMrad);
+  ASSERT_GT(d[0].widthMrad, w.lastResortDipMrad());
+  ASSERT_LT(d[0].widthMrad, w.loneDipMrad());
   EXPECT_FALSE(w.estimate().found);
   const WallDirectionEstimate last = w.widestWall();
   ASSERT_TRUE(last.found);
   EXPECT_EQ(last.mrad, 0);
+}
+
+TEST(WallDirectionWidest, HowWideADipMustBeFollowsTheSonarsBeam) {
+  struct Row {
+    int32_t coneMrad;  // the sonar's widest beam half-angle
+    int32_t minDip, lone, lastResort;
+    bool fiftyDegreesAlone;  // a clean 50 degree dip alone names the walls
+  };
+  const Row rows[] = {
+      {0, 524, 785, 785, true},    // one ray: the floors (30 and 45 deg)
+      {87, 524, 785, 785, true},   // 5 deg (`typical`)
+      {262, 700, 900, 785, false}, // the NXT's 15 deg
+      {349, 874, 1074, 959, false},
+  };
+  const int16_t cm[] = {60, 55, 54, 52, 50, 50, 50, 50, 50, 52, 54, 55, 60};  // 870 mrad wide
+  for (const Row& row : rows) {
+    WallDirection w(row.coneMrad);
+    EXPECT_EQ(w.minDipMrad(), row.minDip) << row.coneMrad;
+    EXPECT_EQ(w.loneDipMrad(), row.lone) << row.coneMrad;
+    EXPECT_EQ(w.lastResortDipMrad(), row.lastResort) << row.coneMrad;
+    for (int k = 0; k < 13; ++k) {
+      w.addHeading(-522 + 87 * k);
+      w.addReading(Sensor::Front, cm[k]);
+    }
+    EXPECT_EQ(w.estimate().found, row.fiftyDegreesAlone) << row.coneMrad;
+  }
 }
 
 // Runs one sweep of StartSquaring in `room`, the wheels turning as told; returns its result.

@@ -133,7 +133,7 @@ TEST(WallDirection, HandComputedDipCentreAndObjectEdge) {
     int dips;
   };
   // (The floor one step wider than above: the right flank's crossing comes early, and the dip stays wider than
-  // kMinDipMrad.)
+  // minDipMrad().)
   for (const Edge edge : {Edge{130, 0}, Edge{63, 0}, Edge{62, 1}, Edge{58, 1}}) {
     const int16_t object[] = {60, 54, 51, 50, 50, 50, 50, 50, 50, 51, edge.pastCm, edge.pastCm};
     WallDirection o;
