@@ -35,7 +35,8 @@ Pilot::Pilot(Explorer& explorer, const PilotConfig& config)
                             config.gateCellTenths),
                trackerWheels(config.wheels)),
 #ifndef NXTMAP_NO_START_SQUARING
-      squaring_(config.squareSweepMrad, config.squareStepMrad, 70, config.sonarConeMrad),
+      squaring_(config.squareSweepMrad, config.squareStepMrad, static_cast<int16_t>(config.approachCm + 20),
+                config.sonarConeMrad),
       calibration_(squaring_, config.calibrateTurns),
       turnErrorPpm_(config.wheels.turnPpm),
 #endif

@@ -30,13 +30,11 @@ constexpr int32_t bearing(const WallDirection::Dip& d) {
   return wrapHalfTurn(d.centreMrad + static_cast<int32_t>(d.sensor) * WallDirection::kQuarterMrad);
 }
 
-}  // namespace
-
-namespace {
 // v, but at least floor, within an int16_t (a cone up to 600 mrad: at most 1576).
 constexpr int16_t atLeast(int32_t v, int32_t floor) {
   return static_cast<int16_t>(v > 30000 ? 30000 : (v > floor ? v : floor));
 }
+
 }  // namespace
 
 WallDirection::WallDirection(int32_t coneHalfMrad)

@@ -82,15 +82,20 @@ TEST(WallDirectionWidest, NoDipWideAndCleanEnoughIsNoWall) {
   EXPECT_FALSE(w.widestWall().found);
 }
 
-TEST(WallDirectionWidest, ADipAloneMustBeWiderThanTheLastResortAsks) {
-  // One clean dip, floor 50 cm (level 55), 50 degrees wide: alone it names no walls (loneDipMrad(): dips that
-  // narrow were 5 degrees or more off the walls one time in five), as the last resort it does.
+// One clean dip seen by `s`: floor 50 cm (level 55), 870 mrad (50 degrees) wide, centred on the sweep's zero.
+void addFiftyDegreeDip(WallDirection& w, Sensor s) {
   const int16_t cm[] = {60, 55, 54, 52, 50, 50, 50, 50, 50, 52, 54, 55, 60};
-  WallDirection w;
   for (int k = 0; k < 13; ++k) {
     w.addHeading(-522 + 87 * k);
-    w.addReading(Sensor::Left, cm[k]);
+    w.addReading(s, cm[k]);
   }
+}
+
+TEST(WallDirectionWidest, ADipAloneMustBeWiderThanTheLastResortAsks) {
+  // A 50 degree dip alone names no walls (loneDipMrad(): dips that narrow were 5 degrees or more off the walls one
+  // time in five); as the last resort it does.
+  WallDirection w;
+  addFiftyDegreeDip(w, Sensor::Left);
   WallDirection::Dip d[2];
   ASSERT_EQ(w.dips(d, 2), 1);
   ASSERT_TRUE(d[0].clean);
@@ -114,16 +119,12 @@ TEST(WallDirectionWidest, HowWideADipMustBeFollowsTheSonarsBeam) {
       {262, 700, 900, 785, false}, // the NXT's 15 deg
       {349, 874, 1074, 959, false},
   };
-  const int16_t cm[] = {60, 55, 54, 52, 50, 50, 50, 50, 50, 52, 54, 55, 60};  // 870 mrad wide
   for (const Row& row : rows) {
     WallDirection w(row.coneMrad);
     EXPECT_EQ(w.minDipMrad(), row.minDip) << row.coneMrad;
     EXPECT_EQ(w.loneDipMrad(), row.lone) << row.coneMrad;
     EXPECT_EQ(w.lastResortDipMrad(), row.lastResort) << row.coneMrad;
-    for (int k = 0; k < 13; ++k) {
-      w.addHeading(-522 + 87 * k);
-      w.addReading(Sensor::Front, cm[k]);
-    }
+    addFiftyDegreeDip(w, Sensor::Front);
     EXPECT_EQ(w.estimate().found, row.fiftyDegreesAlone) << row.coneMrad;
   }
 }
