@@ -30,7 +30,8 @@ void TravelPlanner::begin() {
 void TravelPlanner::start(Pose from) {
   begin();
   const uint8_t startAxis = isVertical(from.heading) ? 0 : 1;
-  tryPush(stateId(from.cell, startAxis), 0);
+  startId_ = stateId(from.cell, startAxis);
+  tryPush(startId_, 0);
   layerEnd_ = count_;
   dist_ = 0;
 }
@@ -63,11 +64,21 @@ bool TravelPlanner::tryPush(uint16_t id, uint8_t lab) {
 }
 
 bool TravelPlanner::routeTo(const RoomGrid& grid, Cell target, uint16_t cost, Route& out) const {
+  // Where the robot may not turn (turnAllowed) a cell's two axis states are not linked: both may carry the
+  // label of `cost` (3 apart), and only one walks back to the start.
+  for (uint8_t axis = 0; axis < 2; ++axis) {
+    const uint16_t id = stateId(target, axis);
+    if (label(id) == cost % 3 && walkBack(grid, id, cost, out)) return true;
+  }
   out.clear();
-  uint16_t id = stateId(target, 0);
-  if (label(id) != cost % 3) id = stateId(target, 1);
-  if (label(id) != cost % 3) return false;
-  // Walk back to the start, keeping the last kCapacity moves seen (the route's beginning).
+  return false;
+}
+
+bool TravelPlanner::walkBack(const RoomGrid& grid, uint16_t id, uint16_t cost, Route& out) const {
+  out.clear();
+  // Each step back goes to a state one cheaper along an edge the search could take (a move between free
+  // cells, a turn where turns are allowed): its neighbours' costs differ by at most 1, so the label, the cost
+  // modulo 3, tells the cheaper one. Keeps the last kCapacity moves seen (the route's beginning).
   Dir ring[Route::kCapacity];
   uint16_t moves = 0;
   for (uint16_t d = cost; d > 0; --d) {
@@ -89,10 +100,11 @@ bool TravelPlanner::routeTo(const RoomGrid& grid, Cell target, uint16_t cost, Ro
     }
     if (!found) {
       const uint16_t pid = static_cast<uint16_t>(id ^ 1u);
-      if (label(pid) != want) return false;
+      if (!turnAllowed(grid, c) || label(pid) != want) return false;
       id = pid;
     }
   }
+  if (id != startId_) return false;
   const uint16_t kept = moves < Route::kCapacity ? moves : Route::kCapacity;
   for (uint16_t i = 0; i < kept; ++i) {
     out.push(ring[(moves - 1 - i) % Route::kCapacity]);

@@ -63,6 +63,8 @@ class TravelPlanner {
   Cell cellOf(const RoomGrid& grid, uint16_t id) const;
   uint8_t label(uint16_t id) const { return labels_.atIndex(id); }
   bool tryPush(uint16_t id, uint8_t lab);
+  // routeTo from one of the target's axis states: false unless it walks back to the start.
+  bool walkBack(const RoomGrid& grid, uint16_t id, uint16_t cost, Route& out) const;
   void begin();
 
   PackedCells<2> labels_;
@@ -70,6 +72,7 @@ class TravelPlanner {
   uint16_t* queue_;
   uint16_t capacity_;
   uint16_t head_ = 0, count_ = 0;
+  uint16_t startId_ = 0;   // the search's first state
   uint16_t layerEnd_ = 0;  // states left in the current distance layer
   uint16_t dist_ = 0;      // cost of the current layer
   bool overflow_ = false;

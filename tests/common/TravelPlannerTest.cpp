@@ -148,5 +148,38 @@ TEST(TravelPlanner, SlicedSearchVisitsTheSameCellsAtTheSameCosts) {
   }
 }
 
+// Where no turn is allowed (a turn stalled there before: setNoTurn) a cell's two axis states are not linked, and
+// their costs may be 3 apart, the same modulo 3. The route must come from the one the search reached first.
+TEST(TravelPlanner, ARouteToACellWithoutTurnsWalksBackToTheStart) {
+  struct Cells final : CellSet {
+    bool contains(Cell c) const override { return c == Cell{2, 0} || c == Cell{2, 1}; }
+  } noTurn;
+  test::GridFixture f;
+  f.draw({"....", "....", "...."});
+  TravelStorage<32, 32, 512> storage;
+  TravelPlanner planner(storage.view(), 32, 32);
+  planner.setNoTurn(&noTurn);
+  const Pose from{{2, 0}, Dir::East};
+  const Cell to{2, 1};  // east-west from a turn beside it: 5; north-south only from above: 8
+  int found = -1;
+  ASSERT_TRUE(planner.search(f.grid(), from, [&](Cell cell, uint16_t cost) {
+    if (cell == to && found < 0) found = cost;
+    return false;  // label every state
+  }));
+  ASSERT_EQ(found, 5);
+  Route route;
+  ASSERT_TRUE(planner.routeTo(f.grid(), to, 5, route));
+  Cell at = from.cell;
+  int moves = 0;
+  while (!route.empty()) {
+    at = advance(at, route.front());
+    EXPECT_TRUE(f.grid().isFree(at));
+    route.pop();
+    ++moves;
+  }
+  EXPECT_EQ(at, to);
+  EXPECT_EQ(moves, 3);  // and two turns, neither where turns are not allowed
+}
+
 }  // namespace
 }  // namespace nxtmap
