@@ -134,26 +134,20 @@ int16_t Pilot::wallLine(Dir d, int32_t rangeMm) const {
 }
 
 void Pilot::observeSide(Dir d, int32_t rangeMm) {
-  SideMark& m = side_[static_cast<int>(d)];
-  const int16_t line = wallLine(d, rangeMm);
-  const int32_t base = runMm_ - m.runMm;
-  if (m.valid && m.line == line && abs32(base) >= config_.sideBaseMm) {
-    // Moved towards the right by (r1 - r2) for a wall on the right, (r2 - r1) on the left.
-    const bool right = d == rotate(explorer_.pose().heading, 1);
-    const int32_t moved = right ? m.rangeMm - rangeMm : rangeMm - m.rangeMm;
-    const int32_t error = static_cast<int32_t>(static_cast<int64_t>(moved - (rightMm_ - m.rightMm)) * 1000 / base);
-    // A heading known this badly may show a larger slope than a straight wall's (3 sigma).
-    const int32_t uncertain = 3 * static_cast<int32_t>(isqrt(static_cast<uint64_t>(tracker_.thetaVariance())));
-    const int32_t slopeLimit = uncertain > config_.maxSideSlopeMrad ? uncertain : config_.maxSideSlopeMrad;
-    if (abs32(error) <= slopeLimit) {
-      const int64_t r = tracker_.readingVariance();
-      const int64_t var = 2 * r * 1000000 / (static_cast<int64_t>(base) * base);
-      (void)tracker_.measureHeading(tracker_.thetaMrad() + error, static_cast<int32_t>(var > 1 ? var : 1));
-    }
-  } else if (m.valid && m.line == line) {
-    return;  // the same wall, too close to the last reading: keep the longer baseline
-  }
-  m = SideMark{true, true, rangeMm, runMm_, rightMm_, runMm_, line};
+  SideSlope slope;
+  if (!sides_.pair(d, wallLine(d, rangeMm), rangeMm, config_.sideBaseMm, slope)) return;
+  // The turns between the two readings each added their own error: the slope is an average over them.
+  const int64_t q = config_.noise.turnMradPerQuarter;
+  const int64_t turnVar = static_cast<int64_t>(slope.turns) * q * q;
+  // A heading known this badly may show a larger slope than a straight wall's (3 sigma).
+  const int32_t uncertain = 3 * static_cast<int32_t>(isqrt(static_cast<uint64_t>(tracker_.thetaVariance() + turnVar)));
+  const int32_t slopeLimit = uncertain > config_.maxSideSlopeMrad ? uncertain : config_.maxSideSlopeMrad;
+  if (abs32(slope.errorMrad) > slopeLimit) return;
+  // Two readings, and the slip of what was driven towards or away from the wall in between (its 1 sigma).
+  const int64_t slipMm = static_cast<int64_t>(slope.acrossPathMm) * config_.noise.slipPerMille / 1000;
+  const int64_t spreadMm2 = 2 * tracker_.readingVariance() + slipMm * slipMm;
+  const int64_t var = spreadMm2 * 1000000 / (static_cast<int64_t>(slope.baseMm) * slope.baseMm) + turnVar;
+  (void)tracker_.measureHeading(tracker_.thetaMrad() + slope.errorMrad, static_cast<int32_t>(var > 1 ? var : 1));
 }
 
 bool Pilot::sideReadWanted(Sensor& s) const {
@@ -163,11 +157,11 @@ bool Pilot::sideReadWanted(Sensor& s) const {
     const Dir d = sensorDir(explorer_.pose().heading, cand);
     if (isVertical(d) == isVertical(explorer_.pose().heading)) continue;  // ahead or behind
     if (readHere_ & bitOf(d)) continue;
-    const SideMark& m = side_[static_cast<int>(d)];
-    // Again once far enough from the last reading of the wall; or a first one of a wall the map
-    // shows beside the run (not more often than that either).
-    const bool due = abs32(runMm_ - (m.valid ? m.runMm : m.triedMm)) >= config_.sideReadEveryMm;
-    if ((m.valid || !m.tried || due) && (m.valid ? due : wallBeside(d))) {
+    // Again once far enough along from the last reading of the wall in this run; or a first one of a wall the
+    // map shows beside the run (not more often than that either).
+    const bool held = sides_.held(d);
+    const bool due = sides_.sinceMm(d) >= config_.sideReadEveryMm;
+    if ((held || !sides_.triedInRun(d) || due) && (held ? due : wallBeside(d))) {
       s = cand;
       return true;
     }
@@ -181,16 +175,12 @@ bool Pilot::wallBeside(Dir d) const {
   return firstWall(d, c, k);
 }
 
-void Pilot::startRun() {
-  for (SideMark& m : side_) m = SideMark{};
-  runMm_ = rightMm_ = 0;
-}
+void Pilot::startRun() { sides_.turned(); }
 
 void Pilot::observe(Sensor s, const RangeReading& r) {
   const Dir d = sensorDir(explorer_.pose().heading, s);
   readHere_ |= bitOf(d);
-  side_[static_cast<int>(d)].tried = true;
-  side_[static_cast<int>(d)].triedMm = runMm_;
+  sides_.tried(d);
   // A good reading, or an echo beyond the mapping range that only a known wall can explain.
   const bool far = r.status == RangeStatus::TooFar && r.cm > 0 && r.cm <= config_.poseRangeCm;
   if (!config_.correct || (r.status != RangeStatus::Good && !far)) return;
@@ -424,8 +414,7 @@ DriveAction Pilot::stepCorrected(const DriveEvent& e) {
       {
         const Dir heading = explorer_.pose().heading;
         const int32_t mm = e.measured ? e.achieved : driveMm_;
-        runMm_ += mm;
-        rightMm_ += static_cast<int32_t>(static_cast<int64_t>(mm) * tracker_.thetaMrad() / 1000);
+        sides_.drove(heading, mm, tracker_.thetaMrad());
         tracker_.drove(mm, heading);
         tracker_.rebase(heading, pending_.amount, cellMm_);
         readHere_ = 0;

@@ -8,6 +8,7 @@
 #include "common/motion/DriveEvent.hpp"
 #include "common/motion/FaceLines.hpp"
 #include "common/motion/PoseTracker.hpp"
+#include "common/motion/SideWalls.hpp"
 #include "common/motion/StartSquaring.hpp"
 #include "common/motion/TurnCalibration.hpp"
 
@@ -197,7 +198,7 @@ class Pilot {
   int16_t wallLine(Dir d, int32_t rangeMm) const;
   bool sideReadWanted(Sensor& s) const;
   bool wallBeside(Dir d) const;  // the map's first non-free cell along d within range is a wall
-  void startRun();               // forget the side marks: a straight run starts
+  void startRun();               // a straight run starts (a quarter turn)
 
   Explorer& explorer_;
   PilotConfig config_;
@@ -239,17 +240,7 @@ class Pilot {
   int32_t driveMm_ = 0;               // drive in progress
   uint8_t readHere_ = 0;              // bit per Dir: read since the robot last moved
   const CellSet* virtual_ = nullptr;  // see setVirtualWalls
-  // The current straight run (since the last quarter turn): mm driven along it and the dead-reckoned
-  // sideways drift to the right of it (mm), and per side the last good reading of the wall there.
-  struct SideMark {
-    bool valid = false;  // a good reading of the wall is held
-    bool tried = false;  // the side was read in this run
-    int32_t rangeMm = 0, runMm = 0, rightMm = 0;
-    int32_t triedMm = 0;  // run position of the last reading of the side
-    int16_t line = 0;     // the wall's row or column of cells (along the side's axis)
-  };
-  int32_t runMm_ = 0, rightMm_ = 0;
-  SideMark side_[4];  // by Dir
+  SideWalls sides_;  // the walls read beside the path, for the heading (and the side-reading policy)
   uint32_t poseReads_ = 0, poseSamples_ = 0, correctionMrad_ = 0;
   int64_t turnedUrad_ = 0;     // quarter turns asked by the explorer, microradians
   int64_t commandedUrad_ = 0;  // of them, commanded to the wheels (whole mrad)

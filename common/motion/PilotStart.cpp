@@ -14,6 +14,7 @@ DriveAction Pilot::startExplorer(int64_t headingVarianceMrad2) {
   tracker_.place(snapMm_[0], snapMm_[1]);
 #endif
   readHere_ = 0;
+  sides_.clear();  // a new start: the walls read before are in another frame
   startRun();
   return begin(explorer_.step(Event::startAt(startPose_)));
 }
