@@ -1,6 +1,7 @@
 #include "common/motion/GridLocaliser.hpp"
 
 #include "common/check/Check.hpp"
+#include "common/math/IntAbs.hpp"
 #include "common/math/IntSqrt.hpp"
 
 namespace nxtmap {
@@ -10,7 +11,6 @@ constexpr int32_t floorDiv(int32_t a, int32_t b) { return a >= 0 ? a / b : -((-a
 // Nearest integer to a / b (b > 0), halves away from zero.
 constexpr int32_t roundDiv(int32_t a, int32_t b) { return a >= 0 ? (a + b / 2) / b : -((-a + b / 2) / b); }
 constexpr uint8_t saturate(int32_t v) { return static_cast<uint8_t>(v > 255 ? 255 : (v < 0 ? 0 : v)); }
-constexpr int32_t abs32(int32_t v) { return v < 0 ? -v : v; }
 
 // Min-convolution of n costs `stride` apart with the kernel (c2, c1, 0, c1, c2): the log-domain blur.
 void minConvolve(uint8_t* first, int stride, int n, uint8_t c1, uint8_t c2) {

@@ -1,11 +1,11 @@
 #include "common/motion/Pilot.hpp"
 
 #include "common/check/Check.hpp"
+#include "common/math/IntAbs.hpp"
 #include "common/math/IntSqrt.hpp"
 
 namespace nxtmap {
 namespace {
-constexpr int32_t abs32(int32_t v) { return v < 0 ? -v : v; }
 constexpr int32_t clamp32(int32_t v, int32_t lim) { return v < -lim ? -lim : (v > lim ? lim : v); }
 constexpr uint8_t bitOf(Dir d) { return static_cast<uint8_t>(1u << static_cast<int>(d)); }
 // Cells out to which a wall is read for the pose: the mapping range's, or farther (PilotConfig::poseRangeCm).

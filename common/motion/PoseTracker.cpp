@@ -1,10 +1,11 @@
 #include "common/motion/PoseTracker.hpp"
 
+#include "common/math/IntAbs.hpp"
+
 namespace nxtmap {
 namespace {
 constexpr int64_t kQuarterMrad = 1571;     // pi/2 in mrad, rounded (variance scaling only)
 constexpr int64_t kQuarterUrad = 1570796;  // pi/2 in microradians
-constexpr int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
 // Rounded division (ties away from zero); d > 0.
 constexpr int64_t divRound(int64_t n, int64_t d) { return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d); }
 }  // namespace

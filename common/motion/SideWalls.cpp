@@ -1,11 +1,12 @@
 #include "common/motion/SideWalls.hpp"
 
+#include "common/math/IntAbs.hpp"
+
 namespace nxtmap {
 namespace {
 
 // Positions are kept modulo 2^16 mm: sums and differences wrap the same way (two's complement).
 int16_t wrap(int32_t v) { return static_cast<int16_t>(static_cast<uint16_t>(static_cast<uint32_t>(v) & 0xFFFFu)); }
-int32_t abs32(int32_t v) { return v < 0 ? -v : v; }
 
 }  // namespace
 

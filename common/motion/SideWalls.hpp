@@ -15,8 +15,9 @@ struct SideSlope {
 
 // SideWalls: the walls the robot read beside its path, remembered so that a wall read again further along it
 // measures the heading. A wall straight and square to the map (rectilinear rooms, a squared start) lies at a
-// fixed distance across; moving along it with a heading error e (+ clockwise) takes the robot base * e nearer it
-// than the wheels tell, so the range falls by that much more than the wheels say it should.
+// fixed distance across; moving base mm along it (counted positive in the direction that has the wall on the
+// right) with a heading error e (+ clockwise) takes the robot base * e nearer it than the wheels tell, so the
+// range falls by that much more than the wheels say it should.
 //
 // Positions are dead-reckoned: where the robot is by its wheels and the heading it believed (drove), never moved
 // by readings, in mm east and north of an arbitrary origin in the explorer's frame, kept modulo 2^16 (a pair

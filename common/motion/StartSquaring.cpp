@@ -1,11 +1,11 @@
 #include "common/motion/StartSquaring.hpp"
 
 #include "common/check/Check.hpp"
+#include "common/math/IntAbs.hpp"
 
 namespace nxtmap {
 namespace {
 
-constexpr int32_t abs32(int32_t v) { return v < 0 ? -v : v; }
 // An angle (mrad) brought into (-pi, pi].
 int32_t withinHalfTurn(int32_t mrad) {
   while (mrad > 2 * WallDirection::kQuarterMrad) mrad -= 4 * WallDirection::kQuarterMrad;

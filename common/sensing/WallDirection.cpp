@@ -1,5 +1,7 @@
 #include "common/sensing/WallDirection.hpp"
 
+#include "common/math/IntAbs.hpp"
+
 namespace nxtmap {
 namespace {
 
@@ -7,8 +9,6 @@ constexpr int32_t kWindowMrad = 436;  // a dip's floor is the lowest reading wit
 
 // How far above its floor a dip's flanks are cut (cm): 10 % of the range, at least 3 cm.
 constexpr int16_t tolerance(int16_t floorCm) { return static_cast<int16_t>(floorCm / 10 > 3 ? floorCm / 10 : 3); }
-
-constexpr int32_t abs32(int32_t v) { return v < 0 ? -v : v; }
 
 // v modulo a quarter turn, in [-785, 785].
 constexpr int32_t wrapQuarter(int32_t v) {
