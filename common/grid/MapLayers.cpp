@@ -41,6 +41,13 @@ bool MapLayers::observeOccupied(Cell c) {
   return setEvidence(c, e + kHitWeight);
 }
 
+void MapLayers::forget(Cell c) {
+  grid_.forget(c);
+  evidence_.set(c, 8);
+  reads_.set(c, 0);
+  diagonals_.set(c, 0);
+}
+
 bool MapLayers::markVisited(Cell c) { return setEvidence(c, kSureFree); }
 bool MapLayers::markBlocked(Cell c) { return setEvidence(c, kSureOccupied); }
 

@@ -44,6 +44,8 @@ class MapLayers {
   bool wasRead(Cell c, Dir d) const { return (readDirs(c) >> static_cast<int>(d)) & 1u; }
   uint8_t readDirs(Cell c) const { return reads_.at(c); }  // bit d set: Dir d was read from c
   void setRead(Cell c, Dir d) { reads_.set(c, static_cast<uint8_t>(reads_.at(c) | (1u << static_cast<int>(d)))); }
+  // Forgets a cell in every layer: unknown, no evidence, never read from, no diagonal used from it.
+  void forget(Cell c);
   // Forgets the directions in `dirs` (bit d set: Dir d) as read from c, so they are read again.
   void forgetReads(Cell c, uint8_t dirs) { reads_.set(c, static_cast<uint8_t>(reads_.at(c) & ~dirs & 0xFu)); }
 

@@ -44,6 +44,23 @@ bool RoomGrid::set(Cell c, CellState s) {
   return true;
 }
 
+void RoomGrid::shrink() {
+  Bounds known{};
+  for (int16_t y = window_.minY; y <= window_.maxY; ++y) {
+    for (int16_t x = window_.minX; x <= window_.maxX; ++x) {
+      if (at(Cell{x, y}) == CellState::Unknown) continue;
+      if (known.empty()) {
+        known = Bounds{x, y, x, y};
+        continue;
+      }
+      if (x < known.minX) known.minX = x;
+      if (x > known.maxX) known.maxX = x;
+      if (y > known.maxY) known.maxY = y;  // rows run upwards: minY is the first row found
+    }
+  }
+  window_ = known;  // every cell outside it holds Unknown: the invariant of set() holds
+}
+
 int32_t RoomGrid::count(CellState s) const {
   int32_t n = 0;
   for (int16_t y = window_.minY; y <= window_.maxY; ++y) {

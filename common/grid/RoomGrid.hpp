@@ -31,6 +31,14 @@ class RoomGrid {
   [[nodiscard]] bool set(Cell c, CellState s);
   // Whether set(c, ...) would succeed.
   bool fits(Cell c) const;
+  // Whether the window spans the whole capacity along x or y (a set() beyond it fails that way).
+  bool full() const { return window_.width() >= cells_.width() || window_.height() >= cells_.height(); }
+  // Forgets a cell (Unknown again). The window keeps its extent until shrink().
+  void forget(Cell c) {
+    if (window_.contains(c)) cells_.set(c, static_cast<uint8_t>(CellState::Unknown));
+  }
+  // Shrinks the window to the bounding box of the cells still known (after forget()).
+  void shrink();
 
   Bounds window() const { return window_; }
   int16_t capacityWidth() const { return cells_.width(); }

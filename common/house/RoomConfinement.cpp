@@ -158,7 +158,8 @@ void RoomConfinement::look(MapLayers& map, Cell robot) {
     here_ = robot;
   }
   lookWhereStanding(map, robot, changed);
-  if (changed || (++sinceCheck_ >= kRecheckSteps && candidateCount_ > 0)) evaluate(map, robot);
+  const bool crowded = exitCount_ > 0 && map.grid().full();  // what lies beyond the exits may be taking room
+  if (changed || (++sinceCheck_ >= kRecheckSteps && (candidateCount_ > 0 || crowded))) evaluate(map, robot);
 }
 
 // Seen from inside a gap, a doorway in a wall has the room's free space in front of the wall beside
@@ -222,6 +223,31 @@ void RoomConfinement::evaluate(MapLayers& map, Cell robot) {
   }
   candidateCount_ = still;
   hold(map);
+  if (exitCount_ > 0 && map.grid().full()) forgetBeyondExits(map);
+}
+
+void RoomConfinement::forgetBeyondExits(MapLayers& map) {
+  // Kept: what the start reaches through anything but the closed doors (a candidate is still open: what lies
+  // beyond it may be this room's), the cells next to that (its walls) and what is shut.
+  flood(map.grid(), [&](Cell c) { return contains(c) || closed(c); });
+  const auto nearReached = [&](Cell c) {
+    for (int16_t dy = -1; dy <= 1; ++dy) {
+      for (int16_t dx = -1; dx <= 1; ++dx) {
+        if (reached(Cell{static_cast<int16_t>(c.x + dx), static_cast<int16_t>(c.y + dy)})) return true;
+      }
+    }
+    return false;
+  };
+  bool forgot = false;
+  for (int16_t y = reachBox_.minY; y <= reachBox_.maxY; ++y) {
+    for (int16_t x = reachBox_.minX; x <= reachBox_.maxX; ++x) {
+      const Cell c{x, y};
+      if (map.grid().isUnknown(c) || contains(c) || closed(c) || nearReached(c)) continue;
+      map.forget(c);
+      forgot = true;
+    }
+  }
+  if (forgot) map.grid().shrink();
 }
 
 void RoomConfinement::finish(MapLayers& map) {

@@ -7,7 +7,9 @@
 // only recognised from inside it (the side sensors see its jambs there): the robot's side is then
 // the last cell it stood on outside every doorway, and the exit is held shut one line further out,
 // beyond the robot. When the explorer is done, finish() opens the doors again (free) and keeps the
-// exits whose inside cell the start reaches.
+// exits whose inside cell the start reaches. The sonar sees through doorways, and on a grid of fixed
+// capacity what it saw beyond them can take the room its own far side needs: while the grid is full
+// along an axis and the room has exits, the cells beyond them are forgotten and the window shrinks.
 //
 // Runs on the brick: fixed capacities, no heap; the reach flood works in caller-owned bits.
 #pragma once
@@ -69,6 +71,9 @@ class RoomConfinement final : public CellSet {
   void lookWhereStanding(MapLayers& map, Cell robot, bool& changed);
   bool openBeforeJambs(const MapLayers& map, const Doorway& d) const;
   void evaluate(MapLayers& map, Cell robot);
+  // The grid is full along an axis and the room has exits: what was seen through them (not this room's) is
+  // forgotten and the window shrunk, so that the room's own far side still fits.
+  void forgetBeyondExits(MapLayers& map);
   // Floods from the start over free cells of the map's window, skipping cells for which
   // `blocked` is true; the result is in reach_ (reached()).
   template <class Blocked>

@@ -12,6 +12,7 @@
 #include "host/link/LinkRunner.hpp"
 #include "host/link/LinkSpec.hpp"
 #include "host/link/Transport.hpp"
+#include "host/network/HouseFiles.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -19,6 +20,8 @@
 #include <filesystem>
 #include <sstream>
 #include <thread>
+
+#include <unistd.h>
 
 namespace nxtmap::emu::test {
 namespace {
@@ -98,6 +101,25 @@ int countLinesStartingWith(const std::string& text, const std::string& prefix) {
   return n;
 }
 
+// A failed run is not reproducible (the brick draws its noise on the link's timing), so the house it mapped
+// is saved (as `nxtmap sim-house --save` writes one) with the console's answers, and the place printed.
+void keepForInspection(const HouseRun& r, const sim::World& world) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
+                                    ("nxtmap-house-e2e-seed" + std::to_string(HouseExpoHouse::seed()) + "-" +
+                                     std::to_string(::getpid()));
+  std::string error;
+  if (!network::saveHouse(r.house, world.resolutionM(), dir.string(), error)) {
+    std::printf("the mapped house was not kept: %s\n", error.c_str());
+    return;
+  }
+  std::FILE* f = std::fopen((dir / "console.txt").c_str(), "w");
+  if (f) {
+    std::fprintf(f, "%s\n%s", r.waitAnswer.c_str(), r.roomsText.c_str());
+    std::fclose(f);
+  }
+  std::printf("the mapped house and the console's answers are kept in %s\n", dir.c_str());
+}
+
 TEST(HouseEndToEnd, ConsoleMapsAHouseExpoHouseThroughTheFirmwareWithoutAButton) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "a whole house at emulation speed: make test runs this from the Release build";
@@ -117,6 +139,7 @@ TEST(HouseEndToEnd, ConsoleMapsAHouseExpoHouseThroughTheFirmwareWithoutAButton) 
   EXPECT_EQ(countLinesStartingWith(r.roomsText, "room "), rooms) << r.roomsText;
   EXPECT_EQ(r.brickRoom, rooms) << "no room started twice (the brick's room counter)";
   h->expectAHouse(r.house, "console over TCP");
+  if (::testing::Test::HasFailure()) keepForInspection(r, h->truth);
 }
 
 #endif

@@ -94,5 +94,40 @@ TEST(RoomConfinement, JambsOfOneCellCountOnlyWhereTheRobotStandsInTheGap) {
   EXPECT_EQ(r.c.exitCount(), 0);
 }
 
+// The first test's room and doorway, with what the sonar saw beyond it drawn `beyondRows` rows deep.
+std::vector<std::string> roomWithSeenBeyond(int beyondRows) {
+  std::vector<std::string> rows(static_cast<size_t>(beyondRows), "    ......    ");
+  const std::vector<std::string> room = {"   #......#   ", "#............#", "#............#",
+                                         "#............#", "#............#", "##############"};
+  rows.insert(rows.end(), room.begin(), room.end());
+  return rows;
+}
+
+// The grid (32 x 32 here) is full along y once the rows seen beyond the doorway reach 26: then what lies
+// beyond the exit is forgotten and the room's own far side fits again; with room to spare nothing is.
+TEST(RoomConfinement, WhatWasSeenBeyondAnExitIsForgottenOnlyWhenTheGridIsFull) {
+  const struct {
+    int beyondRows;
+    bool full;
+  } cases[] = {{26, true}, {20, false}};
+  for (const auto& k : cases) {
+    Confined r(roomWithSeenBeyond(k.beyondRows), 6, 1, north(0, 0, 4));
+    const std::string what = std::to_string(k.beyondRows) + " rows beyond";
+    ASSERT_EQ(r.c.exitCount(), 1) << what;
+    EXPECT_EQ(r.f.grid().at(Cell{0, 6}), k.full ? CellState::Unknown : CellState::Free) << what;
+    EXPECT_EQ(r.f.grid().at(Cell{2, 20}), k.full ? CellState::Unknown : CellState::Free) << what;
+    EXPECT_EQ(r.f.grid().window().maxY, k.full ? 5 : 4 + k.beyondRows) << what << ": the shut line stays";
+    EXPECT_EQ(r.f.grid().window().minY, -1) << what;
+    EXPECT_EQ(r.f.grid().fits(Cell{0, -8}), k.full) << what << ": the room's far side fits again";
+    // The room itself, its walls, its doorway and the line held shut beyond it are kept.
+    EXPECT_EQ(r.f.grid().at(Cell{0, 3}), CellState::Free) << what;
+    EXPECT_EQ(r.f.grid().at(Cell{-6, 0}), CellState::Occupied) << what;
+    EXPECT_EQ(r.f.grid().at(Cell{0, -1}), CellState::Occupied) << what;
+    EXPECT_EQ(r.f.grid().at(Cell{0, 4}), CellState::Free) << what;
+    EXPECT_EQ(r.f.grid().at(Cell{0, 5}), CellState::Occupied) << what << ": held shut";
+    EXPECT_FALSE(r.f.map.wasRead(Cell{0, 6}, Dir::North)) << what;
+  }
+}
+
 }  // namespace
 }  // namespace nxtmap
