@@ -199,7 +199,7 @@ void RoomConfinement::evaluate(MapLayers& map, Cell robot) {
   sinceCheck_ = 0;
   // Close every candidate at once (several doorways may lead into the same room), then keep as
   // exits those whose far side is cut off from the start while the robot is on the start's side.
-  flood(map.grid(), [&](Cell c) { return contains(c) || closed(c) || inCandidate(c); });
+  flood(map.grid(), kShut | kCandidates);
   if (!reached(robotSide(robot))) return;  // the robot is beyond some doorway: decide later
   uint8_t still = 0;
   for (uint8_t i = 0; i < candidateCount_; ++i) {
@@ -229,7 +229,7 @@ void RoomConfinement::evaluate(MapLayers& map, Cell robot) {
 void RoomConfinement::forgetBeyondExits(MapLayers& map) {
   // Kept: what the start reaches through anything but the closed doors (a candidate is still open: what lies
   // beyond it may be this room's), the cells next to that (its walls) and what is shut.
-  flood(map.grid(), [&](Cell c) { return contains(c) || closed(c); });
+  flood(map.grid(), kShut);
   const auto nearReached = [&](Cell c) {
     for (int16_t dy = -1; dy <= 1; ++dy) {
       for (int16_t dx = -1; dx <= 1; ++dx) {
@@ -262,7 +262,7 @@ void RoomConfinement::finish(MapLayers& map) {
   };
   if (hasEntrance_) open(entrance_);
   for (uint8_t i = 0; i < exitCount_; ++i) open(shut_[i]);
-  flood(map.grid(), [&](Cell c) { return closed(c); });
+  flood(map.grid(), kDoors);
   // An exit found while the robot was beyond another doorway may join two other rooms: only the
   // exits of this room (their inside cell reached) are kept; the others are found again there.
   uint8_t kept = 0;
@@ -287,8 +287,10 @@ void RoomConfinement::see(Cell c) {
 
 bool RoomConfinement::reached(Cell c) const { return seen(c); }
 
-template <class Blocked>
-void RoomConfinement::flood(const RoomGrid& grid, Blocked&& blocked) {
+void RoomConfinement::flood(const RoomGrid& grid, uint8_t stop) {
+  const auto blocked = [&](Cell c) {
+    return closed(c) || ((stop & kShut) != 0 && contains(c)) || ((stop & kCandidates) != 0 && inCandidate(c));
+  };
   reachBox_ = grid.window();
   if (reachBox_.width() * reachBox_.height() > width_ * height_) reachBox_ = Bounds{};  // never: the window fits
   const int cells = reachBox_.width() * reachBox_.height();

@@ -74,10 +74,11 @@ class RoomConfinement final : public CellSet {
   // The grid is full along an axis and the room has exits: what was seen through them (not this room's) is
   // forgotten and the window shrunk, so that the room's own far side still fits.
   void forgetBeyondExits(MapLayers& map);
-  // Floods from the start over free cells of the map's window, skipping cells for which
-  // `blocked` is true; the result is in reach_ (reached()).
-  template <class Blocked>
-  void flood(const RoomGrid& grid, Blocked&& blocked);
+  // Floods from the start over free cells of the map's window, never into a closed door (entrance or exit
+  // cells, an exit's shut line) nor, as `stop` says, into any shut cell (the entrance's guards too:
+  // kShut) or a candidate's cells (kCandidates); the result is in the reach bits (reached()).
+  enum FloodStop : uint8_t { kDoors = 0, kShut = 1, kCandidates = 2 };
+  void flood(const RoomGrid& grid, uint8_t stop);
   bool seen(Cell c) const;
   void see(Cell c);
 
