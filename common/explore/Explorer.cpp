@@ -191,6 +191,15 @@ bool Explorer::searchVisit(uint8_t, Cell, uint16_t) { return true; }
 Action Explorer::searchDone(uint8_t) { return Action::done(); }
 
 Action Explorer::step(const Event& e) {
+  const Action a = next(e);
+  if (a.kind != Action::Kind::Think) {
+    thinks_ = 0;
+    return a;
+  }
+  return ++thinks_ > kMaxThinks ? finish(ExplorerEnd::ActionLimit) : a;
+}
+
+Action Explorer::next(const Event& e) {
   if (end_ != ExplorerEnd::Running) return Action::done();
   if (searching_) {
     NXTMAP_CHECK(e.kind == Event::Kind::Thought);  // nothing else can happen while thinking

@@ -14,6 +14,7 @@
 namespace nxtmap {
 
 // Why a run ended.
+// ActionLimit: a safety stop (ExplorerConfig::maxActions actions, or Explorer::kMaxThinks think slices in a row).
 enum class ExplorerEnd : uint8_t { Running, Complete, GridFull, ActionLimit };
 
 // The explorer interface: a state machine that consumes events and returns the next action.
@@ -23,6 +24,11 @@ enum class ExplorerEnd : uint8_t { Running, Complete, GridFull, ActionLimit };
 // when the robot stands still with nothing left to read (decide()).
 class Explorer {
  public:
+  // The safety stop for thinking: think slices answered in a row, with no other action between. A search
+  // of the whole 64 x 64 grid is 1,024 slices of ExplorerConfig::searchSliceStates = 8 states; a decision
+  // takes a few. More than kMaxThinks in a row is a decision that never ends: the run ends ActionLimit.
+  static constexpr uint16_t kMaxThinks = 30000;
+
   // The map and the planner are owned by the caller and must outlive the explorer.
   Explorer(MapLayers& map, TravelPlanner& planner, const ExplorerConfig& config);
   Explorer(const Explorer&) = delete;
@@ -80,6 +86,7 @@ class Explorer {
   Counters counters_;
 
  private:
+  Action next(const Event& e);  // step() but for the safety stop for thinking
   void apply(const Event& e);
   bool nextRead(Sensor& s) const;
   Action finish(ExplorerEnd why);
@@ -88,6 +95,7 @@ class Explorer {
 
   Route route_;
   Dir pendingMove_ = Dir::North;  // direction of the last Move issued
+  uint16_t thinks_ = 0;  // think slices answered in a row (kMaxThinks)
   uint32_t actions_ = 0;
   ExplorerEnd end_ = ExplorerEnd::Running;
   bool started_ = false;
