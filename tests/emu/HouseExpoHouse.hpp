@@ -80,9 +80,13 @@ struct HouseExpoHouse {
     return s;
   }
   // The emulated robot draws its noise on its own timing (the firmware's readings and wheel steps,
-  // not sim-house's), so the same seed is another draw of the same noise. sim-house's own figure on
-  // this house at the brick's grid spreads over 3.9 points from draw to draw (90.2-94.1 % over seeds
-  // 1-24, typical noise): the emulated house must be within that of sim-house's on the same seed.
+  // not sim-house's; the console's timing moves it too), so the same seed is another draw of the same
+  // noise. sim-house's own figure on this house at the brick's grid spread over 3.9 points from draw to
+  // draw (90.2-94.1 % over seeds 1-24, typical noise) when this bound was set; since the rooms forget
+  // what they saw beyond their exits on a full grid it spreads over 2.8 (91.4-94.2). The emulated
+  // brick's draws spread wider and lower (89.3-93.8 % over seeds 1-10 and repeated seed-1 runs, the
+  // room frames a cell or two apart): at this bound a draw fails now and then. The bound is left as
+  // set, a known gap between the two, not loosened to fit it.
   static constexpr double kDrawSpreadPct = 3.9;
 };
 
