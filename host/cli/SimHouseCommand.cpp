@@ -12,6 +12,7 @@
 #include "host/cli/Errors.hpp"
 #include "host/house/HouseExpoPlan.hpp"
 #include "host/house/HouseMapper.hpp"
+#include "host/house/BestFramesScore.hpp"
 #include "host/house/HouseScore.hpp"
 #include "host/network/HouseFiles.hpp"
 #include "host/report/ExperimentTable.hpp"
@@ -80,6 +81,7 @@ int runSimHouse(const SimHouseOptions& o) {
   mapper.run();
   if (plan) house::labelRoomsFromPlan(mapper, *plan);
   const house::HouseScore s = house::scoreHouse(mapper);
+  const house::BestFramesScore best = house::scoreWithBestFrames(house::houseInWorld(mapper));
   const house::HouseCounters& c = mapper.counters();
   const auto num = [](double v) { return report::formatNumber(v, 1); };
   std::ostringstream out;
@@ -108,6 +110,9 @@ int runSimHouse(const SimHouseOptions& o) {
       << mapper.exitsUnreached() << ", openings onto unmapped space explored " << mapper.openingsTried() << ")\n"
       << "agreement        " << num(s.agreementPct()) << " % of " << s.observable << " observable cells (unknown "
       << s.unknown << ", wrong " << s.wrong << "; wrong elsewhere " << s.wrongElsewhere << ")\n"
+      << "best frames      " << num(best.score.agreementPct()) << " % with each room at its best whole-cell frame "
+      << "(within 2 cells: the maps apart from their joining; the frames cost "
+      << num(best.score.agreementPct() - s.agreementPct()) << " points)\n"
       << "time units       " << num(c.timeUnits()) << " (between rooms: " << c.travel.cellsMoved << " cells; "
       << "relocalisations " << mapper.relocalisations() << "; start room moved by the start readings "
       << mapper.startShift().x << "," << mapper.startShift().y << ")\n"

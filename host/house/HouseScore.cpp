@@ -12,17 +12,17 @@ namespace {
 CellState beliefAt(const mapping::FrameTransform& f, const network::RoomMap& merged, int col, int row) {
   return merged.at(f.toExplorer(col, row));
 }
+}  // namespace
 
-HouseInWorld inWorld(const HouseMapper& m) {
+HouseInWorld houseInWorld(const HouseMapper& m) {
   return HouseInWorld{&m.network(),        &m.world(),          m.houseFrame(),
                       m.config().startCol, m.config().startRow, m.explorerConfig().geometry};
 }
-}  // namespace
 
-HouseScore scoreHouse(const HouseMapper& m) { return scoreHouse(inWorld(m)); }
+HouseScore scoreHouse(const HouseMapper& m) { return scoreHouse(houseInWorld(m)); }
 
 PlanCoverage planCoverage(const HouseMapper& m, const HousePlan& plan, double minPct) {
-  return planCoverage(inWorld(m), plan, minPct);
+  return planCoverage(houseInWorld(m), plan, minPct);
 }
 
 HouseScore scoreHouse(const HouseInWorld& h) {

@@ -29,6 +29,9 @@ struct HouseInWorld {
   RangeGeometry geometry;
 };
 
+// The house `mapper` mapped, in its world.
+HouseInWorld houseInWorld(const HouseMapper& mapper);
+
 HouseScore scoreHouse(const HouseMapper& mapper);
 HouseScore scoreHouse(const HouseInWorld& house);
 

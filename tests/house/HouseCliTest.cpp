@@ -24,6 +24,8 @@ TEST(HouseCli, SimHouseSavesAHouseThatExportsAndRoutes) {
   EXPECT_NE(run.out.find("rooms            3"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("gateways         3"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("agreement        100 %"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("best frames      100 %"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("the frames cost 0 points"), std::string::npos) << run.out;
   for (const char* f : {"house.yaml", "room0.yaml", "room0.pgm", "room1.yaml", "room2.pgm"}) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
   }
