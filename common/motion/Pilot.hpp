@@ -62,7 +62,8 @@ struct PilotConfig {
   // approachMaxCm), turns back to the heading it was set down on and sweeps again, up to approaches times (a
   // sweep beside one wall alone may not place it; a second approach finds a corner). The first approach goes to
   // the nearest echo, later ones to the farthest (StartSquaring::approachEcho: in a cluttered room the nearest
-  // echoes are small things; about 40 s a sweep). 0: it maps as set down.
+  // echoes are small things; about 40 s a sweep). A sweep with no echo at all drives approachMaxCm blind: ahead
+  // of the heading it was set down on, then to its right, by turns. 0: it maps as set down.
 #ifndef NXTMAP_NO_START_SQUARING  // (not in the RAM-run image, which has no sweep)
   int16_t approachCm = 50;
   int16_t approachMaxCm = 150;

@@ -57,17 +57,21 @@ int Pilot::approachesLeft() const {
 void Pilot::approachIfFar() {
   // No straight wall within the sweep's reach: towards an echo (StartSquaring::approachEcho; the sweep ended at its
   // zero, off by the residual), PilotConfig::approachCm.
+  // With no echo at all (the middle of a hall): blind, approachMaxCm ahead, then a quarter turn clockwise of the
+  // start heading, by turns (a staircase away from the start, towards some wall).
   const StartSquaring::Echo& n = squaring_.approachEcho();
-  const int32_t driveCm = n.cm - config_.approachCm;
-  if (squaring_.result().found || approached_ >= config_.approaches || config_.approachCm <= 0 || !n.seen ||
-      driveCm < 20)
+  const bool blind = !n.seen && squaring_.heardNothing();
+  const int32_t driveCm = blind ? config_.approachMaxCm : n.cm - config_.approachCm;
+  if (squaring_.result().found || approached_ >= config_.approaches || config_.approachCm <= 0 ||
+      (!n.seen && !blind) || driveCm < 20)
     return;
   ++approached_;
   phase_ = Phase::Approach;
   approachStep_ = 0;
   approachMm_ = 10 * (driveCm < config_.approachMaxCm ? driveCm : config_.approachMaxCm);
-  commandMrad_ = n.mrad - squaring_.residualMrad();
-  squaring_.avoid(n.mrad);
+  const int32_t towardsMrad = blind ? (approached_ % 2 == 0 ? WallDirection::kQuarterMrad : 0) : n.mrad;
+  commandMrad_ = towardsMrad - squaring_.residualMrad();
+  if (!blind) squaring_.avoid(n.mrad);
   correctionMrad_ += static_cast<uint32_t>(commandMrad_ < 0 ? -commandMrad_ : commandMrad_);
 }
 

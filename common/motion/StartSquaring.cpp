@@ -35,6 +35,7 @@ DriveAction StartSquaring::begin(int approachesLeft) {
   readings_ = samples_ = turnedMrad_ = 0;
   stalled_ = false;
   target_ = Echo{};
+  heard_ = false;
   return turn(Phase::ToStart, -sweepMrad_);
 }
 
@@ -100,6 +101,7 @@ DriveAction StartSquaring::step(const DriveEvent& e) {
       if (e.kind != DriveEvent::Kind::Range || static_cast<uint8_t>(e.sensor) != sensor_) break;
       walls_.addReading(e.sensor, sweepCm(e.reading));
       noteEcho(e.sensor, sweepCm(e.reading));
+      heard_ = heard_ || sweepCm(e.reading) > 0 || e.reading.status == RangeStatus::TooNear;
       ++readings_;
       samples_ += e.reading.samples;
       ++sensor_;

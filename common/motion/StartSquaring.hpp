@@ -44,6 +44,10 @@ class StartSquaring {
     int16_t cm = 0;
   };
   const Echo& approachEcho() const { return target_; }
+  // The whole sweep was read and no reading had an echo at all (nor one too near): nothing stands within the
+  // sensors' reach in any direction, the middle of a hall (an approach may drive blind). A stalled sweep (the
+  // body met something) heard something.
+  bool heardNothing() const { return !heard_ && !stalled_; }
   // Echoes within a sixth of a turn of `mrad` (from the sweep's zero) are not taken from now on: the way an
   // approach went (kept across begin()), and from now on the farthest echo is taken.
   void avoid(int32_t mrad) {
@@ -65,6 +69,7 @@ class StartSquaring {
   int16_t approachFromCm_;
   Echo target_;
   bool avoiding_ = false;  // an approach was made (avoid())
+  bool heard_ = false;     // some reading of this sweep had an echo (or one too near)
   int8_t approachesLeft_ = -1;  // begin()'s
   int32_t avoidMrad_ = 0;
   Phase phase_ = Phase::Idle;

@@ -1,6 +1,7 @@
 // StartSquaring and WallDirection's last resort, events in and actions out: a sweep whose two wall dips disagree
 // (two walls 6 degrees apart, or two dips each off by a few degrees) names no walls while an approach may still
 // find better; on the last sweep it takes the widest wall dip rather than leave the robot as it was set down.
+// And whether a sweep heard anything at all.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -49,7 +50,8 @@ WallDirection sweep(const TwoWalls& room) {
   for (int k = 0; k <= 36; ++k) {
     const int32_t mrad = -1571 + 87 * k;
     w.addHeading(mrad);
-    for (int s = 0; s < kSensorCount; ++s) w.addReading(static_cast<Sensor>(s), room.read(static_cast<Sensor>(s), mrad));
+    for (int s = 0; s < kSensorCount; ++s)
+      w.addReading(static_cast<Sensor>(s), room.read(static_cast<Sensor>(s), mrad));
   }
   return w;
 }
@@ -114,9 +116,9 @@ TEST(WallDirectionWidest, HowWideADipMustBeFollowsTheSonarsBeam) {
     bool fiftyDegreesAlone;  // a clean 50 degree dip alone names the walls
   };
   const Row rows[] = {
-      {0, 524, 785, 785, true},    // one ray: the floors (30 and 45 deg)
-      {87, 524, 785, 785, true},   // 5 deg (`typical`)
-      {262, 700, 900, 785, false}, // the NXT's 15 deg
+      {0, 524, 785, 785, true},     // one ray: the floors (30 and 45 deg)
+      {87, 524, 785, 785, true},    // 5 deg (`typical`)
+      {262, 700, 900, 785, false},  // the NXT's 15 deg
       {349, 874, 1074, 959, false},
   };
   for (const Row& row : rows) {
@@ -162,8 +164,7 @@ TEST(StartSquaring, TheLastSweepTakesTheWidestWallDipAnEarlierOneLeavesItToTheAp
       {80, 1, false},  // an approach follows: it may find two walls that agree
       {80, 0, true},   // none left: the widest dip
       {40, 2, true},   // nothing 70 cm away to approach: this is the last sweep
-      {80, -1, false},
-      {40, -1, false},
+      {80, -1, false}, {40, -1, false},
   };
   for (const Row& row : rows) {
     TwoWalls room;
@@ -177,6 +178,49 @@ TEST(StartSquaring, TheLastSweepTakesTheWidestWallDipAnEarlierOneLeavesItToTheAp
     } else {
       EXPECT_EQ(heading, 0) << "back where it was set down";
     }
+  }
+}
+
+// One sweep in which the back sensor alone, facing the sweep's zero, reads `status` (at `cm`); every other
+// reading has no echo. Whether the sweep heard nothing (StartSquaring::heardNothing: the pilot may drive blind).
+bool heardNothingWhenTheBackReads(RangeStatus status, int16_t cm) {
+  StartSquaring squaring;
+  int32_t heading = 0;
+  DriveAction a = squaring.begin(2);
+  for (int i = 0; i < 1000 && !squaring.finished(); ++i) {
+    if (a.kind == DriveAction::Kind::Rotate) {
+      heading += a.value;
+      a = squaring.step(DriveEvent::rotatedBy(a.value));
+      continue;
+    }
+    RangeReading r;
+    const bool back = a.sensor == Sensor::Back && heading > -50 && heading < 50;
+    r.status = back ? status : RangeStatus::NoEcho;
+    r.cm = back ? cm : 255;
+    r.samples = 1;
+    a = squaring.step(DriveEvent::range(a.sensor, r));
+  }
+  EXPECT_TRUE(squaring.finished());
+  EXPECT_FALSE(squaring.result().found);
+  return squaring.heardNothing();
+}
+
+TEST(StartSquaring, ASweepHearsNothingOnlyWhenNoReadingHadAnEcho) {
+  struct Row {
+    RangeStatus status;
+    int16_t cm;
+    bool heardNothing;
+  };
+  const Row rows[] = {
+      {RangeStatus::NoEcho, 255, true},       // nothing anywhere: the middle of a hall
+      {RangeStatus::Inconsistent, 90, true},  // samples that disagree say nothing
+      {RangeStatus::Good, 90, false},         // one echo in range
+      {RangeStatus::TooFar, 200, false},      // one beyond the trusted range the samples agree on
+      {RangeStatus::TooNear, 3, false},       // something at the robot's side: no blind drive
+  };
+  for (const Row& row : rows) {
+    EXPECT_EQ(heardNothingWhenTheBackReads(row.status, row.cm), row.heardNothing)
+        << static_cast<int>(row.status) << " at " << row.cm << " cm";
   }
 }
 

@@ -1,6 +1,6 @@
 // The start's sweep through the simulator (sonar cone, range error, wheel noise): a robot set down off
 // square in a room turned any way ends square to its walls before the explorer starts; with nothing in
-// range it ends where it was set down; two sweeps with whole turns between them measure the turns' error.
+// range it drives ahead and right until a wall is (or maps as set down); two sweeps with whole turns between them measure the turns' error.
 // And the scene's own wall direction the squared run is scored in.
 #include <gtest/gtest.h>
 
@@ -126,12 +126,60 @@ TEST(StartSquaringRun, TheTurnCalibrationRecoversAKnownTrackWidthError) {
   EXPECT_LT(positive, 10);
 }
 
-TEST(StartSquaringRun, NothingInRangeLeavesTheRobotAsItWasSetDown) {
-  const sim::Site site = room(7, 9.0, 9.0, 0.0, 0.0);  // every wall 4.5 m away: no echo within the sensor's reach
+// The brick under `noise` set down 10 degrees off square (seed) at the start of `site`, until the explorer starts.
+struct HallStart {
+  bool found = false;
+  double offBeforeDeg = 0.0, offAfterDeg = 0.0;
+  double northCm = 0.0, movedCm = 0.0;  // where it went: towards the start heading (north), and how far in all
+};
+HallStart startInHall(const sim::Site& site, const char* noise, uint64_t seed) {
+  RunConfig c;
+  c.startPose = site.start;
+  c.startJitterDeg = 10;
+  c.noise = *sim::noiseProfileByName(noise);
+  c.seed = seed;
+  c.squareAtStart = true;
+  c.robot = *sim::robotByName("brick");
+  MappingRun run(site, c);
+  HallStart h;
+  h.offBeforeDeg = offSquareDeg(run.robot().headingDeg(), run.robot().scene());
+  const double x0 = run.robot().xCm(), y0 = run.robot().yCm();
+  for (int i = 0; i < 5000 && !run.pilot().explorerStarted(); ++i) run.step();
+  EXPECT_TRUE(run.pilot().explorerStarted()) << noise << " seed " << seed;
+  h.found = run.pilot().squaring().result().found;
+  h.offAfterDeg = offSquareDeg(run.robot().headingDeg(), run.robot().scene());
+  h.northCm = y0 - run.robot().yCm();
+  h.movedCm = std::hypot(run.robot().xCm() - x0, run.robot().yCm() - y0);
+  return h;
+}
+
+TEST(StartSquaringRun, InAHallWithNothingInReachTheRobotDrivesAheadThenRightUntilAWallIs) {
+  // A 9 m square hall (turned 4 degrees), the robot in its middle: every wall 4.5 m away, no echo in any
+  // direction. It drives 1.5 m ahead blind (PilotConfig::approachMaxCm) and sweeps again; then (blind to the
+  // right of its start heading, or towards an echo once one is heard) until a sweep finds the walls, and squares.
+  // Measured: 3.2 m north of its start, 1 m east, 0-2 degrees off the walls (5 before).
+  const sim::Site site = room(4, 9.0, 9.0, 0.0, 0.0);
+  for (const char* noise : {"typical", "nxt"}) {
+    for (uint64_t seed = 1; seed <= 3; ++seed) {
+      const HallStart h = startInHall(site, noise, seed);
+      EXPECT_TRUE(h.found) << noise << " seed " << seed;
+      EXPECT_LE(h.offAfterDeg, 4.0) << noise << " seed " << seed;
+      EXPECT_GE(h.northCm, 150.0) << noise << " seed " << seed;
+    }
+  }
+}
+
+TEST(StartSquaringRun, AHallTooLargeForEveryApproachIsMappedAsSetDown) {
+  // A 20 m square hall: after its four blind approaches (1.5 m ahead, right, ahead, right: 4.2 m from its start)
+  // the robot is still 7 m from every wall. No wall found, it maps as set down (its heading as the turns left it,
+  // where the approaches took it).
+  const sim::Site site = room(7, 20.0, 20.0, 0.0, 0.0);
   for (uint64_t seed = 1; seed <= 3; ++seed) {
-    const Squared s = squareIn(site, "ideal", seed, true);
-    EXPECT_FALSE(s.found);
-    EXPECT_NEAR(s.offAfterDeg, s.offBeforeDeg, 1e-6);
+    const HallStart h = startInHall(site, "nxt", seed);
+    EXPECT_FALSE(h.found) << seed;
+    EXPECT_NEAR(h.offAfterDeg, h.offBeforeDeg, 1.5) << seed;
+    EXPECT_NEAR(h.northCm, 300.0, 60.0) << seed;
+    EXPECT_NEAR(h.movedCm, 424.0, 40.0) << seed;
   }
 }
 
