@@ -4,6 +4,7 @@
 //   nxtmap-bench plan             the path-search section alone (host/bench/PlanBench.cpp)
 //   nxtmap-bench house            the house section alone (host/bench/HouseBench.cpp)
 //   nxtmap-bench realism          the realism section alone (host/bench/RealismBench.cpp)
+//   nxtmap-bench acceptance       the real-room acceptance section alone (host/bench/AcceptanceBench.cpp)
 //   nxtmap-bench lego             the LEGO round trip alone (host/bench/LegoRoundTripBench.cpp)
 #include <algorithm>
 #include <chrono>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "host/bench/LinkBench.hpp"
+#include "host/bench/AcceptanceBench.hpp"
 #include "host/bench/EmuBench.hpp"
 #include "host/bench/EmuRoomBench.hpp"
 #include "host/bench/LegoRoundTripBench.hpp"
@@ -214,7 +216,9 @@ int run(int argc, char** argv) {
   const int rc = nxtmap::bench::runPlanBench();
   if (rc != 0) return rc;
   const int house = nxtmap::bench::runHouseBench();
-  return house != 0 ? house : nxtmap::bench::runRealismBench();
+  if (house != 0) return house;
+  const int acceptance = nxtmap::bench::runAcceptanceBench();
+  return acceptance != 0 ? acceptance : nxtmap::bench::runRealismBench();
 }
 }  // namespace
 
@@ -223,6 +227,7 @@ int main(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "plan") return nxtmap::bench::runPlanBench();        // that section alone
     if (argc > 1 && std::string(argv[1]) == "house") return nxtmap::bench::runHouseBench();      // that section alone
     if (argc > 1 && std::string(argv[1]) == "realism") return nxtmap::bench::runRealismBench();  // that section alone
+    if (argc > 1 && std::string(argv[1]) == "acceptance") return nxtmap::bench::runAcceptanceBench();
     if (argc > 1 && std::string(argv[1]) == "emu") return nxtmap::bench::runEmuBench(scenarioDir(1, argv));
     if (argc > 1 && std::string(argv[1]) == "emu-room") return nxtmap::bench::runEmuRoomBench(scenarioDir(1, argv));
     if (argc > 1 && std::string(argv[1]) == "lego") return nxtmap::bench::runLegoRoundTripBench(scenarioDir(1, argv));
