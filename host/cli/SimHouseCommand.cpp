@@ -10,9 +10,9 @@
 
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
+#include "host/house/BestFramesScore.hpp"
 #include "host/house/HouseExpoPlan.hpp"
 #include "host/house/HouseMapper.hpp"
-#include "host/house/BestFramesScore.hpp"
 #include "host/house/HouseScore.hpp"
 #include "host/network/HouseFiles.hpp"
 #include "host/report/ExperimentTable.hpp"

@@ -25,10 +25,14 @@ PlanCoverage planCoverage(const HouseMapper& m, const HousePlan& plan, double mi
   return planCoverage(houseInWorld(m), plan, minPct);
 }
 
-HouseScore scoreHouse(const HouseInWorld& h) {
+sim::Observability observabilityOf(const HouseInWorld& h) {
+  return sim::computeObservability(*h.world, h.startCol, h.startRow, h.geometry.freeCells(), h.geometry.hitCells());
+}
+
+HouseScore scoreHouse(const HouseInWorld& h) { return scoreHouse(h, observabilityOf(h)); }
+
+HouseScore scoreHouse(const HouseInWorld& h, const sim::Observability& obs) {
   const sim::World& world = *h.world;
-  const RangeGeometry& g = h.geometry;
-  const sim::Observability obs = sim::computeObservability(world, h.startCol, h.startRow, g.freeCells(), g.hitCells());
   const network::RoomMap merged = h.network->merged();
   HouseScore s;
   s.rooms = static_cast<int>(h.network->rooms().size());

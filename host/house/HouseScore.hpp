@@ -5,6 +5,7 @@
 
 #include "host/house/HouseExpoPlan.hpp"
 #include "host/house/HouseMapper.hpp"
+#include "host/sim/WorldTruth.hpp"
 
 namespace nxtmap::house {
 
@@ -34,6 +35,10 @@ HouseInWorld houseInWorld(const HouseMapper& mapper);
 
 HouseScore scoreHouse(const HouseMapper& mapper);
 HouseScore scoreHouse(const HouseInWorld& house);
+// What a reachable cell of the house's world can observe (its start, its sonar geometry), and the score
+// against it: for scoring one world many times (it does not depend on the map).
+sim::Observability observabilityOf(const HouseInWorld& house);
+HouseScore scoreHouse(const HouseInWorld& house, const sim::Observability& observable);
 
 // Plan rooms (room boxes) whose reachable free cells the merged map holds as free to at least
 // `minPct` percent; rooms with no reachable cell are not counted in `reachable`.
