@@ -106,11 +106,14 @@ void printColumns(const std::vector<std::string>& head, const std::vector<std::v
   }
 }
 
-ProgressLine::ProgressLine(std::string part, size_t total) : part_(std::move(part)), total_(total) { tick(0); }
+ProgressLine::ProgressLine(std::string part, size_t total, std::string section)
+    : part_(std::move(part)), section_(std::move(section)), total_(total) {
+  tick(0);
+}
 
 void ProgressLine::tick(size_t add) {
   done_ += add;
-  std::cerr << "\r[realism] " << part_ << ": run " << done_ << " of " << total_ << std::flush;
+  std::cerr << "\r[" << section_ << "] " << part_ << ": run " << done_ << " of " << total_ << std::flush;
 }
 
 ProgressLine::~ProgressLine() { std::cerr << "\n"; }

@@ -31,17 +31,17 @@ std::string formatDelta(double v, int decimals);
 // Left-aligned columns, a rule under the head; an empty row prints an empty line.
 void printColumns(const std::vector<std::string>& head, const std::vector<std::vector<std::string>>& rows);
 
-// "[realism] PART: run k of N" on stderr, rewritten in place; a newline when done.
+// "[SECTION] PART: run k of N" on stderr, rewritten in place; a newline when done.
 class ProgressLine {
  public:
-  ProgressLine(std::string part, size_t total);
+  ProgressLine(std::string part, size_t total, std::string section = "realism");
   ~ProgressLine();
   ProgressLine(const ProgressLine&) = delete;
   ProgressLine& operator=(const ProgressLine&) = delete;
   void tick(size_t add = 1);
 
  private:
-  std::string part_;
+  std::string part_, section_;
   size_t total_ = 0, done_ = 0;
 };
 
