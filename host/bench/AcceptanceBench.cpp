@@ -24,12 +24,6 @@ constexpr int kRoomSeeds = 10;   // brick rooms: seeds 1-10 per layout and strat
 constexpr int kHouseSeeds = 20;  // houses: seeds 1-20 per plan
 constexpr double kJitterDeg = 10.0;
 
-fs::path worldsRoot() {
-  std::error_code ec;
-  if (fs::is_directory(fs::path("worlds") / "seed-appendix-a", ec)) return "worlds";
-  return fs::path(__FILE__).parent_path().parent_path().parent_path() / "worlds";
-}
-
 // Brick rooms under one preset and strategy, summed over every layout and seed.
 struct RoomFigures {
   double detected = 0, worst = 100, wrongPct = 0, unsafePct = 0;

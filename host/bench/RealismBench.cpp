@@ -28,12 +28,6 @@ constexpr int kFurnishedSeeds = 5;  // preset table, furnished rooms
 constexpr int kHouseSeeds = 3;      // preset table, houses
 constexpr int kHouses = 3;          // the first HouseExpo plans by name (the small ones: affordable)
 
-fs::path worldsRoot() {
-  std::error_code ec;
-  if (fs::is_directory(fs::path("worlds") / "seed-appendix-a", ec)) return "worlds";
-  return fs::path(__FILE__).parent_path().parent_path().parent_path() / "worlds";
-}
-
 std::vector<fs::path> filesIn(const fs::path& dir, const std::string& ext) {
   std::vector<fs::path> out;
   std::error_code ec;
@@ -47,6 +41,12 @@ std::vector<fs::path> filesIn(const fs::path& dir, const std::string& ext) {
 std::string pad(const std::string& s, size_t w) { return s.size() >= w ? s : s + std::string(w - s.size(), ' '); }
 
 }  // namespace
+
+fs::path worldsRoot() {
+  std::error_code ec;
+  if (fs::is_directory(fs::path("worlds") / "seed-appendix-a", ec)) return "worlds";
+  return fs::path(__FILE__).parent_path().parent_path().parent_path() / "worlds";
+}
 
 void RealismWorlds::load() {
   const fs::path root = worldsRoot();

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,9 @@
 #include "host/sim/Site.hpp"
 
 namespace nxtmap::bench {
+
+// The worlds/ directory: ./worlds when run from the source tree's root, else the source tree's own.
+std::filesystem::path worldsRoot();
 
 // Every world the section runs, loaded once (the sets point into the suites and `sites`).
 struct RealismWorlds {
