@@ -302,6 +302,9 @@ DriveAction Pilot::beginMove() {
     driveMm_ = pending_.amount * cellMm_;
     return DriveAction::drive(driveMm_);
   }
+#ifndef NXTMAP_NO_START_SQUARING
+  steeredMrad_ = 0;
+#endif
   Sensor s;
   if (poseReadWanted(s) || sideReadWanted(s)) {
     phase_ = Phase::PoseRead;
@@ -382,7 +385,10 @@ DriveAction Pilot::stepCorrected(const DriveEvent& e) {
         phase_ = Phase::ExplorerRead;
         return DriveAction::read(pending_.sensor);
       }
-      if (phase_ == Phase::Steer) {
+      if (phase_ == Phase::Steer || phase_ == Phase::Unsteer) {
+#ifndef NXTMAP_NO_START_SQUARING
+        steeredMrad_ = phase_ == Phase::Steer ? (e.measured ? e.achieved : commandMrad_) : 0;
+#endif
         tracker_.rotated(e.measured ? e.achieved : commandMrad_, 0);
         return driveToCentre();
       }
@@ -410,6 +416,13 @@ DriveAction Pilot::stepCorrected(const DriveEvent& e) {
       if (phase_ == Phase::Approach) return approach(e);
 #endif
       if (phase_ != Phase::Drive) break;
+#ifndef NXTMAP_NO_START_SQUARING
+      if (e.blocked && steeredMrad_ != 0) {  // back where it started (DriveEvent::blocked): try it unsteered
+        phase_ = Phase::Unsteer;
+        commandMrad_ = -steeredMrad_;
+        return DriveAction::rotate(commandMrad_);
+      }
+#endif
       if (e.blocked) return begin(explorer_.step(Event::blocked()));
       {
         const Dir heading = explorer_.pose().heading;

@@ -158,6 +158,7 @@ class Pilot {
     Turn,
     TurnBack,
     Steer,
+    Unsteer,  // a steered drive was blocked: back to the heading before the steering, then drive again
     Drive,
     Think,
     Done
@@ -248,6 +249,10 @@ class Pilot {
 #ifndef NXTMAP_NO_START_SQUARING
   int32_t quarterMrad_ = 0;  // the quarter-turn part of the turn in progress (commandMrad_ less the levelling)
   int32_t stalledMrad_ = 0;  // Phase::TurnBack: how far the stalled turn got (mrad, encoders)
+  // The steering rotation of the move in progress (mrad, encoders; 0: none, or already taken back). A body that
+  // fits a narrow passage square to it may not when turned: a steered drive that is blocked is driven again
+  // unsteered before the explorer hears that the way is blocked.
+  int32_t steeredMrad_ = 0;
   // A levelling rotation stalled (the body touches something): no more levelling until the robot moves.
   bool levelHeld_ = false;
 #endif

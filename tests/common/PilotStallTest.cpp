@@ -1,7 +1,8 @@
 // The pilot when the body meets something on a rotation (the wheels stall and the encoders count only what
 // was turned, as the brick's drive layer reports it): a stalled quarter turn is turned back and heard by the
 // explorer as its way blocked; a stalled levelling is not tried again until the robot has moved; a stalled
-// step of the start's sweep ends the sweep.
+// step of the start's sweep ends the sweep. And on a drive: a steered drive that stalls is driven again
+// square to its line before the explorer hears that its way is blocked.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -125,6 +126,67 @@ TEST(PilotStall, AStalledLevellingIsNotTriedAgainUntilTheRobotHasMoved) {
   EXPECT_GE(levels, 1);  // it did try
   EXPECT_GE(unlevelledReads, 3);
   EXPECT_GE(drives, 5);
+}
+
+// Open space, exact rotations, every drive 30 mm short (after a quarter turn the robot stands 30 mm off its new
+// line, so its next move is steered): until the pilot asks for a drive right after a steering rotation.
+// `steer` gets that rotation (mrad); false when none came within `limit` steps.
+bool untilSteeredDrive(Rig& rig, DriveAction& a, int32_t& steer, int limit = 3000) {
+  bool steering = false;
+  for (int i = 0; i < limit && !rig.pilot.finished(); ++i) {
+    if (a.kind == DriveAction::Kind::Drive && steering) return true;
+    steering = a.kind == DriveAction::Kind::Rotate && !isQuarter(a);
+    DriveEvent e = DriveEvent::thought();
+    if (a.kind == DriveAction::Kind::Read) {
+      RangeReading far;
+      far.status = RangeStatus::TooFar;
+      far.samples = 1;
+      e = DriveEvent::range(a.sensor, far);
+    } else if (a.kind == DriveAction::Kind::Rotate) {
+      e = DriveEvent::rotatedBy(a.value);
+      steer = a.value;
+    } else if (a.kind == DriveAction::Kind::Drive) {
+      e = DriveEvent::drivenBy(a.value > 0 ? a.value - 30 : a.value + 30);
+    }
+    a = rig.pilot.step(e);
+  }
+  return false;
+}
+
+TEST(PilotStall, ASteeredDriveThatStallsIsDrivenAgainSquareToItsLine) {
+  // A body that fits a narrow passage square to it may not fit turned by the steering: the pilot turns back
+  // by what it steered and drives again; the explorer hears nothing of the first try.
+  Rig rig;
+  DriveAction a = rig.pilot.step(DriveEvent::start());
+  int32_t steer = 0;
+  ASSERT_TRUE(untilSteeredDrive(rig, a, steer));
+  ASSERT_NE(steer, 0);
+  const Pose before = rig.explorer.pose();
+  const int32_t theta = rig.pilot.tracker().thetaMrad();
+  DriveAction back = rig.pilot.step(DriveEvent::driven(true));
+  ASSERT_EQ(back.kind, DriveAction::Kind::Rotate);
+  EXPECT_EQ(back.value, -steer);
+  const DriveAction again = rig.pilot.step(DriveEvent::rotatedBy(-steer));
+  ASSERT_EQ(again.kind, DriveAction::Kind::Drive);
+  EXPECT_EQ(rig.pilot.tracker().thetaMrad(), theta - steer);  // back on the heading it had before the steering
+  EXPECT_EQ(rig.explorer.counters().blockedMoves, 0u);
+  rig.pilot.step(DriveEvent::drivenBy(again.value));
+  EXPECT_EQ(rig.explorer.counters().blockedMoves, 0u);
+  EXPECT_NE(rig.explorer.pose().cell, before.cell);  // it moved on
+}
+
+TEST(PilotStall, AnUnsteeredDriveThatStallsTooBlocksTheExplorersWay) {
+  Rig rig;
+  DriveAction a = rig.pilot.step(DriveEvent::start());
+  int32_t steer = 0;
+  ASSERT_TRUE(untilSteeredDrive(rig, a, steer));
+  const Pose before = rig.explorer.pose();
+  const DriveAction back = rig.pilot.step(DriveEvent::driven(true));
+  ASSERT_EQ(back.kind, DriveAction::Kind::Rotate);
+  ASSERT_EQ(rig.pilot.step(DriveEvent::rotatedBy(back.value)).kind, DriveAction::Kind::Drive);
+  rig.pilot.step(DriveEvent::driven(true));  // stalls again: the way is blocked
+  EXPECT_EQ(rig.explorer.counters().blockedMoves, 1u);
+  EXPECT_EQ(rig.explorer.pose().cell, before.cell);
 }
 
 TEST(PilotStall, AStalledStepOfTheStartsSweepEndsTheSweep) {
