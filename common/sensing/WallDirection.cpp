@@ -77,7 +77,8 @@ WallDirection::Flank WallDirection::flankTop(int s, int k, int dir) const {
   for (int j = k + dir; j >= 0 && j < steps_; j += dir) {
     if (!valid(s, j)) {
       const int n = j + dir;  // one missing echo is passed over; more end the flank (specular loss)
-      if (!skipped && n >= 0 && n < steps_ && valid(s, n)) {
+      if (n < 0 || n >= steps_) return cut;  // the sweep ends on it: the floor may go on past the end
+      if (!skipped && valid(s, n)) {
         skipped = true;
         continue;
       }
