@@ -20,22 +20,23 @@ using pilotrig::Rig;
 
 bool isQuarter(const DriveAction& a) { return a.kind == DriveAction::Kind::Rotate && std::abs(a.value) > 700; }
 
+// Open space's answer to `a`: nothing in range, exact rotations, each drive `shortMm` short of what was asked.
+DriveEvent openSpace(const DriveAction& a, int32_t shortMm = 0) {
+  if (a.kind == DriveAction::Kind::Read) {
+    RangeReading far;
+    far.status = RangeStatus::TooFar;
+    far.samples = 1;
+    return DriveEvent::range(a.sensor, far);
+  }
+  if (a.kind == DriveAction::Kind::Rotate) return DriveEvent::rotatedBy(a.value);
+  if (a.kind == DriveAction::Kind::Drive)
+    return DriveEvent::drivenBy(a.value > 0 ? a.value - shortMm : a.value + shortMm);
+  return DriveEvent::thought();
+}
+
 // Open space (nothing in range), exact wheels, until the pilot asks for a quarter turn or `limit` steps.
 DriveAction untilQuarterTurn(Rig& rig, DriveAction a, int limit = 2000) {
-  for (int i = 0; i < limit && !rig.pilot.finished() && !isQuarter(a); ++i) {
-    DriveEvent e = DriveEvent::thought();
-    if (a.kind == DriveAction::Kind::Read) {
-      RangeReading far;
-      far.status = RangeStatus::TooFar;
-      far.samples = 1;
-      e = DriveEvent::range(a.sensor, far);
-    } else if (a.kind == DriveAction::Kind::Rotate) {
-      e = DriveEvent::rotatedBy(a.value);
-    } else if (a.kind == DriveAction::Kind::Drive) {
-      e = DriveEvent::drivenBy(a.value);
-    }
-    a = rig.pilot.step(e);
-  }
+  for (int i = 0; i < limit && !rig.pilot.finished() && !isQuarter(a); ++i) a = rig.pilot.step(openSpace(a));
   return a;
 }
 
@@ -136,19 +137,8 @@ bool untilSteeredDrive(Rig& rig, DriveAction& a, int32_t& steer, int limit = 300
   for (int i = 0; i < limit && !rig.pilot.finished(); ++i) {
     if (a.kind == DriveAction::Kind::Drive && steering) return true;
     steering = a.kind == DriveAction::Kind::Rotate && !isQuarter(a);
-    DriveEvent e = DriveEvent::thought();
-    if (a.kind == DriveAction::Kind::Read) {
-      RangeReading far;
-      far.status = RangeStatus::TooFar;
-      far.samples = 1;
-      e = DriveEvent::range(a.sensor, far);
-    } else if (a.kind == DriveAction::Kind::Rotate) {
-      e = DriveEvent::rotatedBy(a.value);
-      steer = a.value;
-    } else if (a.kind == DriveAction::Kind::Drive) {
-      e = DriveEvent::drivenBy(a.value > 0 ? a.value - 30 : a.value + 30);
-    }
-    a = rig.pilot.step(e);
+    if (a.kind == DriveAction::Kind::Rotate) steer = a.value;
+    a = rig.pilot.step(openSpace(a, 30));
   }
   return false;
 }
