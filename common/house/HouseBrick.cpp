@@ -1,4 +1,5 @@
 #include "common/house/HouseBrick.hpp"
+#include "common/check/CodeSize.hpp"
 
 namespace nxtmap {
 namespace {
@@ -9,7 +10,7 @@ Strategy strategyOf(protocol::ExploreStrategy s) {
 
 }  // namespace
 
-HouseBrick::HouseBrick(ExplorerStack& stack, RoomConfinement& confinement, const PilotConfig& pilot)
+NXTMAP_RUN_ONCE HouseBrick::HouseBrick(ExplorerStack& stack, RoomConfinement& confinement, const PilotConfig& pilot)
     : stack_(stack), confinement_(confinement), session_(stack, confinement, pilot) {}
 
 DriveAction HouseBrick::explore(const protocol::ExploreMsg& how, const Pose& here, uint16_t roomId) {

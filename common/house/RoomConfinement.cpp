@@ -1,4 +1,5 @@
 #include "common/house/RoomConfinement.hpp"
+#include "common/check/CodeSize.hpp"
 
 namespace nxtmap {
 namespace {
@@ -25,8 +26,8 @@ int16_t clampTo(int v, int lo, int hi) { return static_cast<int16_t>(v < lo ? lo
 
 }  // namespace
 
-RoomConfinement::RoomConfinement(uint8_t* reachBits, int16_t width, int16_t height, const DoorwayLimits& limits,
-                                 int16_t lookCells)
+NXTMAP_RUN_ONCE RoomConfinement::RoomConfinement(uint8_t* reachBits, int16_t width, int16_t height,
+                                                 const DoorwayLimits& limits, int16_t lookCells)
     : reachBits_(reachBits), width_(width), height_(height), limits_(limits), lookCells_(lookCells) {}
 
 void RoomConfinement::begin(const Doorway* entrance) {

@@ -3,6 +3,7 @@
 #include <new>
 
 #include "common/protocol/Packet.hpp"
+#include "common/check/CodeSize.hpp"
 
 namespace nxtmap::protocol {
 namespace {
@@ -19,7 +20,7 @@ int16_t tenths(int32_t v) {
 #endif
 }  // namespace
 
-BrickLink::BrickLink(const RoomGrid& grid, uint8_t* shadow, const BrickLinkConfig& config)
+NXTMAP_RUN_ONCE BrickLink::BrickLink(const RoomGrid& grid, uint8_t* shadow, const BrickLinkConfig& config)
     : config_(config), sync_(grid, shadow, config.retransmitMs) {}
 
 void BrickLink::receive(uint8_t byte) {

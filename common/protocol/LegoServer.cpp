@@ -1,6 +1,7 @@
 #include "common/protocol/LegoServer.hpp"
 
 #include "common/protocol/ByteWriter.hpp"
+#include "common/check/CodeSize.hpp"
 
 namespace nxtmap::protocol {
 namespace {
@@ -40,7 +41,7 @@ void writeInput(ByteWriter& w, uint8_t port, const LegoInputValues& v) {
 
 }  // namespace
 
-LegoServer::LegoServer() {
+NXTMAP_RUN_ONCE LegoServer::LegoServer() {
   for (size_t i = 0; i + 1 < sizeof(kDefaultName); ++i) name_[i] = kDefaultName[i];
 }
 

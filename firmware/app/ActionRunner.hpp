@@ -7,6 +7,7 @@
 #include "firmware/drivers/MotionController.hpp"
 #include "firmware/drivers/MotionGeometry.hpp"
 #include "firmware/drivers/SonarSequencer.hpp"
+#include "common/check/CodeSize.hpp"
 
 namespace nxtmap::fw {
 
@@ -25,8 +26,8 @@ class ActionRunner {
     int32_t right;
   };
 
-  ActionRunner(MotionController& motion, SonarSequencer& sonar, const MotionGeometry& drive, const RangeGeometry& range,
-               const uint8_t (&sensorPorts)[4])
+  NXTMAP_RUN_ONCE ActionRunner(MotionController& motion, SonarSequencer& sonar, const MotionGeometry& drive,
+                               const RangeGeometry& range, const uint8_t (&sensorPorts)[4])
       : motion_(motion), sonar_(sonar), drive_(drive), filter_(range) {
     for (int i = 0; i < 4; ++i) ports_[i] = sensorPorts[i];
   }

@@ -2,6 +2,7 @@
 
 #include "common/check/Check.hpp"
 #include "firmware/app/Isr.hpp"
+#include "common/check/CodeSize.hpp"
 
 namespace nxtmap::fw {
 namespace {
@@ -54,7 +55,7 @@ PilotConfig housePilot(const BrickConfig& config) {
 #endif
 }  // namespace
 
-BrickApp::BrickApp()
+NXTMAP_RUN_ONCE BrickApp::BrickApp()
     : tacho_(kTachoPins),
       ports_{{bus_, kSensorPortPins[0]},
              {bus_, kSensorPortPins[1]},
@@ -75,7 +76,7 @@ BrickApp::BrickApp()
   link_.attach(lego_);
 }
 
-void BrickApp::init() {
+NXTMAP_RUN_ONCE void BrickApp::init() {
   aic_.init(bus_.address(reinterpret_cast<const void*>(nxtmapIsrSpurious)));
   timer_.start(reg::kMck, kTickHz);
   initTachos();

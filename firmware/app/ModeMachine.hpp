@@ -12,6 +12,7 @@
 #include "firmware/drivers/AvrFrame.hpp"
 #include "firmware/drivers/MotorSafety.hpp"
 #include "firmware/drivers/TachoDecoder.hpp"
+#include "common/check/CodeSize.hpp"
 
 namespace nxtmap::fw {
 
@@ -36,8 +37,8 @@ class ModeMachine {
  public:
   using Mode = protocol::BrickMode;
 
-  ModeMachine(ExplorerStack& stack, HouseBrick* house, ActionRunner& runner, protocol::BrickLink& link,
-              MotorSafety& safety, TachoDecoder& tacho, AvrCommand& motors, const BrickConfig& config)
+  NXTMAP_RUN_ONCE ModeMachine(ExplorerStack& stack, HouseBrick* house, ActionRunner& runner, protocol::BrickLink& link,
+                              MotorSafety& safety, TachoDecoder& tacho, AvrCommand& motors, const BrickConfig& config)
       : stack_(stack),
         house_(house),
         runner_(runner),
