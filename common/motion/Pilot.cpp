@@ -3,6 +3,7 @@
 #include "common/check/Check.hpp"
 #include "common/math/IntAbs.hpp"
 #include "common/math/IntSqrt.hpp"
+#include "common/check/CodeSize.hpp"
 
 namespace nxtmap {
 namespace {
@@ -28,7 +29,7 @@ PoseNoise trackerNoise(PoseNoise n, int32_t cellMm, int32_t tenths) {
 }
 }  // namespace
 
-Pilot::Pilot(Explorer& explorer, const PilotConfig& config)
+NXTMAP_RUN_ONCE Pilot::Pilot(Explorer& explorer, const PilotConfig& config)
     : explorer_(explorer),
       config_(config),
       tracker_(trackerNoise(config.noise, static_cast<int32_t>(explorer.config().geometry.cellCm) * 10,
@@ -265,7 +266,7 @@ DriveAction Pilot::begin(const Action& a) {
           static_cast<int32_t>((turnedUrad_ - commandedUrad_ + (turnedUrad_ >= commandedUrad_ ? 500 : -500)) / 1000);
       commandedUrad_ += static_cast<int64_t>(commandMrad_) * 1000;
 #ifndef NXTMAP_NO_START_SQUARING
-      quarterMrad_ = commandMrad_;
+      quarterMrad_ = static_cast<int16_t>(commandMrad_);
 #endif
       // Take out the estimated heading error as well (not part of the quarter-turn bookkeeping).
       if (config_.correct) commandMrad_ -= tracker_.thetaMrad();
@@ -279,22 +280,14 @@ DriveAction Pilot::begin(const Action& a) {
   return DriveAction::done();
 }
 
-#ifndef NXTMAP_NO_START_SQUARING  // the RAM-run image has no room for the recovery: it carries on
-DriveAction Pilot::turnStalled(const DriveEvent& e) {
-  // Undo the quarter's bookkeeping and turn back to the heading the explorer holds.
-  turnedUrad_ -= static_cast<int64_t>(pending_.amount / 2) * 1570796;
-  commandedUrad_ -= static_cast<int64_t>(quarterMrad_) * 1000;
-  stalledMrad_ = e.achieved;
-  phase_ = Phase::TurnBack;
-  return DriveAction::rotate(-e.achieved);
-}
-
-DriveAction Pilot::turnedBack(const DriveEvent& e) {
-  // Net of the two rotations (small unless the way back stalled too) on the heading the explorer holds.
-  tracker_.rotated(stalledMrad_ + (e.measured ? e.achieved : -stalledMrad_), 0);
-  return begin(explorer_.step(Event::turnBlocked()));
-}
+DriveAction Pilot::turnMade(int32_t mrad) {
+#ifndef NXTMAP_NO_START_SQUARING
+  levelHeld_ = false;
 #endif
+  tracker_.rotated(mrad, pending_.amount / 2);
+  if (pending_.amount != 0) startRun();  // the heading changed: the side walls are others
+  return begin(explorer_.step(Event::turned(pending_.amount)));
+}
 
 DriveAction Pilot::beginMove() {
   if (!config_.correct) {
@@ -387,7 +380,7 @@ DriveAction Pilot::stepCorrected(const DriveEvent& e) {
       }
       if (phase_ == Phase::Steer || phase_ == Phase::Unsteer) {
 #ifndef NXTMAP_NO_START_SQUARING
-        steeredMrad_ = phase_ == Phase::Steer ? (e.measured ? e.achieved : commandMrad_) : 0;
+        steeredMrad_ = static_cast<int16_t>(phase_ == Phase::Steer ? (e.measured ? e.achieved : commandMrad_) : 0);
 #endif
         tracker_.rotated(e.measured ? e.achieved : commandMrad_, 0);
         return driveToCentre();
@@ -395,14 +388,12 @@ DriveAction Pilot::stepCorrected(const DriveEvent& e) {
       if (phase_ == Phase::Turn) {
 #ifndef NXTMAP_NO_START_SQUARING
         if (e.measured && abs32(commandMrad_ - e.achieved) > config_.turnStallMrad) return turnStalled(e);
-        levelHeld_ = false;
 #endif
-        tracker_.rotated(e.measured ? e.achieved : commandMrad_, pending_.amount / 2);
-        if (pending_.amount != 0) startRun();  // the heading changed: the side walls are others
-        return begin(explorer_.step(Event::turned(pending_.amount)));
+        return turnMade(e.measured ? e.achieved : commandMrad_);
       }
 #ifndef NXTMAP_NO_START_SQUARING
       if (phase_ == Phase::TurnBack) return turnedBack(e);
+      if (phase_ == Phase::ThreePoint) return threePoint(e);
 #endif
       break;
     case DriveEvent::Kind::Thought:
@@ -414,6 +405,7 @@ DriveAction Pilot::stepCorrected(const DriveEvent& e) {
     case DriveEvent::Kind::Driven:
 #ifndef NXTMAP_NO_START_SQUARING
       if (phase_ == Phase::Approach) return approach(e);
+      if (phase_ == Phase::ThreePoint) return threePoint(e);
 #endif
       if (phase_ != Phase::Drive) break;
 #ifndef NXTMAP_NO_START_SQUARING

@@ -10,6 +10,7 @@
 #include "common/motion/PoseTracker.hpp"
 #include "common/motion/SideWalls.hpp"
 #include "common/motion/StartSquaring.hpp"
+#include "common/motion/ThreePointTurn.hpp"
 #include "common/motion/TurnCalibration.hpp"
 
 namespace nxtmap {
@@ -158,7 +159,8 @@ class Pilot {
     Turn,
     TurnBack,
     Steer,
-    Unsteer,  // a steered drive was blocked: back to the heading before the steering, then drive again
+    Unsteer,     // a steered drive was blocked: back to the heading before the steering, then drive again
+    ThreePoint,  // a stalled quarter turn finished by driving out at the angle it got to (ThreePointTurn)
     Drive,
     Think,
     Done
@@ -175,12 +177,16 @@ class Pilot {
   int approachesLeft() const;  // approaches approachIfFar may still make (PilotConfig::approaches)
   DriveAction begin(const Action& a);
 #ifndef NXTMAP_NO_START_SQUARING
-  DriveAction turnStalled(const DriveEvent& e);  // Phase::Turn's rotation stalled: turn back
+  DriveAction turnStalled(const DriveEvent& e);  // Phase::Turn's rotation stalled: a three-point turn, or turn back
+  DriveAction threePoint(const DriveEvent& e);   // Phase::ThreePoint's drive or rotation is over
+  DriveAction giveUpTurn();  // the quarter turn is given up: turn back by what it turned (ThreePointTurn::partialMrad)
   DriveAction turnedBack(const DriveEvent& e);   // Phase::TurnBack's rotation is over
+  void droveTurned(int32_t mm, int32_t offMrad);  // the tracker: a drive at offMrad off the axis heading
   bool levelHeld() const { return levelHeld_; }
 #else
   bool levelHeld() const { return false; }
 #endif
+  DriveAction turnMade(int32_t mrad);  // Phase::Turn's quarter turn is made: turned mrad (encoders)
   DriveAction beginMove();
   DriveAction driveToCentre();
   // The first cell along d that is not free, within the pose range (k cells out): true when it is occupied.
@@ -247,12 +253,14 @@ class Pilot {
   int64_t turnedUrad_ = 0;     // quarter turns asked by the explorer, microradians
   int64_t commandedUrad_ = 0;  // of them, commanded to the wheels (whole mrad)
 #ifndef NXTMAP_NO_START_SQUARING
-  int32_t quarterMrad_ = 0;  // the quarter-turn part of the turn in progress (commandMrad_ less the levelling)
-  int32_t stalledMrad_ = 0;  // Phase::TurnBack: how far the stalled turn got (mrad, encoders)
+  int16_t quarterMrad_ = 0;  // the quarter-turn part of the turn in progress (commandMrad_ less the levelling)
   // The steering rotation of the move in progress (mrad, encoders; 0: none, or already taken back). A body that
   // fits a narrow passage square to it may not when turned: a steered drive that is blocked is driven again
   // unsteered before the explorer hears that the way is blocked.
-  int32_t steeredMrad_ = 0;
+  int16_t steeredMrad_ = 0;
+  // A quarter turn that stalled: being finished (Phase::ThreePoint), or given up (Phase::TurnBack, turning back
+  // from its partialMrad()).
+  ThreePointTurn threePoint_;
   // A levelling rotation stalled (the body touches something): no more levelling until the robot moves.
   bool levelHeld_ = false;
 #endif

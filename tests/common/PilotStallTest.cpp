@@ -1,6 +1,6 @@
 // The pilot when the body meets something on a rotation (the wheels stall and the encoders count only what
-// was turned, as the brick's drive layer reports it): a stalled quarter turn is turned back and heard by the
-// explorer as its way blocked; a stalled levelling is not tried again until the robot has moved; a stalled
+// was turned, as the brick's drive layer reports it): a quarter turn stalled part way is finished by a three-point
+// turn, or turned back and heard by the explorer as its way blocked; a stalled levelling is not tried again until the robot has moved; a stalled
 // step of the start's sweep ends the sweep. And on a drive: a steered drive that stalls is driven again
 // square to its line before the explorer hears that its way is blocked.
 #include <gtest/gtest.h>
@@ -41,25 +41,26 @@ DriveAction untilQuarterTurn(Rig& rig, DriveAction a, int limit = 2000) {
 }
 
 TEST(PilotStall, AStalledQuarterTurnIsTurnedBackAndTheExplorersWayIsBlocked) {
-  // Stalled after 0, a third and nine tenths of the turn: each is turned back by what it turned.
-  for (const int tenths : {0, 3, 9}) {
+  // Stalled at once, after a twentieth and after nine tenths of the turn (too little or too much of it for a
+  // three-point turn, ThreePointTurn): each is turned back by what it turned.
+  for (const int twentieths : {0, 1, 18}) {
     Rig rig;
     const DriveAction turn = untilQuarterTurn(rig, rig.pilot.step(DriveEvent::start()));
-    ASSERT_TRUE(isQuarter(turn)) << tenths;
+    ASSERT_TRUE(isQuarter(turn)) << twentieths;
     const Pose before = rig.explorer.pose();
     const Dir wanted = rotate(before.heading, turn.value > 0 ? 1 : -1);
     const int8_t evidence = rig.map.evidence(advance(before.cell, wanted));
-    const int32_t got = turn.value * tenths / 10;
+    const int32_t got = turn.value * twentieths / 20;
     const DriveAction back = rig.pilot.step(DriveEvent::rotatedBy(got));
-    ASSERT_EQ(back.kind, DriveAction::Kind::Rotate) << tenths;
-    EXPECT_EQ(back.value, -got) << tenths;
+    ASSERT_EQ(back.kind, DriveAction::Kind::Rotate) << twentieths;
+    EXPECT_EQ(back.value, -got) << twentieths;
     rig.pilot.step(DriveEvent::rotatedBy(-got));
-    EXPECT_EQ(rig.explorer.counters().blockedMoves, 1u) << tenths;
-    EXPECT_EQ(rig.explorer.pose().heading, before.heading) << tenths;  // it never faced the new way
+    EXPECT_EQ(rig.explorer.counters().blockedMoves, 1u) << twentieths;
+    EXPECT_EQ(rig.explorer.pose().heading, before.heading) << twentieths;  // it never faced the new way
     // The map is not changed (the cell it was to move to may well be free); the cell it stands in is one
     // where no turn is planned again.
-    EXPECT_EQ(rig.map.evidence(advance(before.cell, wanted)), evidence) << tenths;
-    EXPECT_EQ(rig.pilot.tracker().thetaMrad(), 0) << tenths;
+    EXPECT_EQ(rig.map.evidence(advance(before.cell, wanted)), evidence) << twentieths;
+    EXPECT_EQ(rig.pilot.tracker().thetaMrad(), 0) << twentieths;
   }
 }
 
@@ -88,11 +89,69 @@ TEST(PilotStall, AfterAStalledTurnTheNextQuarterTurnIsAWholeQuarter) {
   const DriveAction turn = untilQuarterTurn(rig, rig.pilot.step(DriveEvent::start()));
   ASSERT_TRUE(isQuarter(turn));
   const Cell stalledAt = rig.explorer.pose().cell;
-  rig.pilot.step(DriveEvent::rotatedBy(turn.value / 2));
-  const DriveAction next = untilQuarterTurn(rig, rig.pilot.step(DriveEvent::rotatedBy(-turn.value / 2)));
+  rig.pilot.step(DriveEvent::rotatedBy(turn.value / 20));  // too little for a three-point turn: given up
+  const DriveAction next = untilQuarterTurn(rig, rig.pilot.step(DriveEvent::rotatedBy(-turn.value / 20)));
   ASSERT_TRUE(isQuarter(next));
   EXPECT_NEAR(std::abs(next.value), 1571, 1);      // the stalled quarter is not owed any more
   EXPECT_NE(rig.explorer.pose().cell, stalledAt);  // and it is not tried where it stalled
+}
+
+// Open space until a quarter turn, which stalls at `stalledMrad`: the pilot's answer (a three-point turn's drive out).
+struct StalledTurn {
+  Pose before;
+  DriveAction turn, out;
+};
+StalledTurn stallTheFirstQuarterTurn(Rig& rig, int32_t stalledMrad) {
+  StalledTurn s;
+  s.turn = untilQuarterTurn(rig, rig.pilot.step(DriveEvent::start()));
+  s.before = rig.explorer.pose();
+  s.out = rig.pilot.step(DriveEvent::rotatedBy(s.turn.value > 0 ? stalledMrad : -stalledMrad));
+  return s;
+}
+
+TEST(PilotStall, AQuarterTurnStalledPartWayIsFinishedByAThreePointTurn) {
+  // Stalled at 500 mrad: out 25 mm along the partial heading (forward: neither side is known free and not the
+  // other), the rest of the turn, and the explorer faces its new way with the tracker knowing where the drive put
+  // the robot: 25 cos 0.5 = 22 mm along the old heading, 25 sin 0.5 = 12 mm towards the new one.
+  Rig rig;
+  const StalledTurn s = stallTheFirstQuarterTurn(rig, 500);
+  ASSERT_TRUE(isQuarter(s.turn));
+  ASSERT_EQ(s.out.kind, DriveAction::Kind::Drive);
+  EXPECT_EQ(s.out.value, ThreePointTurn::outMm(500));
+  const DriveAction rest = rig.pilot.step(DriveEvent::drivenBy(s.out.value));
+  ASSERT_EQ(rest.kind, DriveAction::Kind::Rotate);
+  const int32_t sign = s.turn.value > 0 ? 1 : -1;
+  EXPECT_EQ(rest.value, s.turn.value - sign * 500);
+  rig.pilot.step(DriveEvent::rotatedBy(rest.value));
+  const Dir wanted = rotate(s.before.heading, sign);
+  EXPECT_EQ(rig.explorer.pose().heading, wanted);
+  EXPECT_EQ(rig.explorer.pose().cell, s.before.cell);
+  EXPECT_EQ(rig.explorer.counters().blockedMoves, 0u);
+  EXPECT_NEAR(rig.pilot.tracker().along(s.before.heading), 22, 1);
+  EXPECT_NEAR(rig.pilot.tracker().along(wanted), 12, 1);
+}
+
+TEST(PilotStall, AThreePointTurnWhoseRestStallsIsGivenUpBackWhereItStarted) {
+  Rig rig;
+  const StalledTurn s = stallTheFirstQuarterTurn(rig, 500);
+  ASSERT_EQ(s.out.kind, DriveAction::Kind::Drive);
+  const int32_t sign = s.turn.value > 0 ? 1 : -1;
+  rig.pilot.step(DriveEvent::drivenBy(s.out.value));
+  const DriveAction back = rig.pilot.step(DriveEvent::rotatedBy(sign * 200));  // stalls again
+  ASSERT_EQ(back.kind, DriveAction::Kind::Rotate);
+  EXPECT_EQ(back.value, -sign * 200);
+  const DriveAction in = rig.pilot.step(DriveEvent::rotatedBy(back.value));
+  ASSERT_EQ(in.kind, DriveAction::Kind::Drive);
+  EXPECT_EQ(in.value, -s.out.value);
+  const DriveAction turnBack = rig.pilot.step(DriveEvent::drivenBy(in.value));
+  ASSERT_EQ(turnBack.kind, DriveAction::Kind::Rotate);
+  EXPECT_EQ(turnBack.value, -sign * 500);
+  rig.pilot.step(DriveEvent::rotatedBy(turnBack.value));
+  EXPECT_EQ(rig.explorer.counters().blockedMoves, 1u);  // the explorer hears its way blocked, as for any stall
+  EXPECT_EQ(rig.explorer.pose().heading, s.before.heading);
+  EXPECT_NEAR(rig.pilot.tracker().along(s.before.heading), 0, 1);  // out and back in
+  EXPECT_NEAR(rig.pilot.tracker().along(rotate(s.before.heading, 1)), 0, 1);
+  EXPECT_EQ(rig.pilot.tracker().thetaMrad(), 0);
 }
 
 TEST(PilotStall, AStalledLevellingIsNotTriedAgainUntilTheRobotHasMoved) {
