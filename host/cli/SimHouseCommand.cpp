@@ -3,17 +3,20 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
-
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <sstream>
 
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
+#include "host/fileio/AtomicFile.hpp"
+#include "host/fileio/OutputTarget.hpp"
 #include "host/house/BestFramesScore.hpp"
 #include "host/house/HouseExpoPlan.hpp"
 #include "host/house/HouseMapper.hpp"
 #include "host/house/HouseScore.hpp"
+#include "host/house/HouseTrace.hpp"
 #include "host/network/HouseFiles.hpp"
 #include "host/report/ExperimentTable.hpp"
 
@@ -21,6 +24,18 @@ namespace nxtmap::cli {
 namespace {
 bool endsWith(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// Where the trace went and what it shows of the belief leaving the robot's cell.
+std::string traceLine(const house::HouseTrace& t, const std::string& file) {
+  std::ostringstream out;
+  out << "wrote " << file << ": " << t.steps() << " actions; ";
+  if (t.firstLostStep() == 0)
+    out << "the believed cell was the robot's after every action";
+  else
+    out << "the believed cell first left the robot's after action " << t.firstLostStep() << " (" << t.lostSteps()
+        << " actions lost in all)";
+  return out.str();
 }
 }  // namespace
 
@@ -41,6 +56,10 @@ CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& o) {
                 "exploration strategy per room: propagation, frontier (default frontier: fewer turns, so the pose "
                 "holds better across rooms)");
   c->add_option("--save", o.save, "directory to save the house in (ROS map per room + house.yaml)");
+  c->add_option("--trace", o.trace,
+                "write every action's believed and true pose, on the world's raster, to this .csv (which room or "
+                "travel it belonged to, readings, the pose tracker's offset, whether the belief left the robot's "
+                "cell)");
   return c;
 }
 
@@ -68,6 +87,12 @@ int runSimHouse(const SimHouseOptions& o) {
   checkStartFits(site, robot, *config.startPose);
   std::string saveError;  // --save is checked before the run, so a bad target does not cost the mapping run
   if (!o.save.empty() && !network::checkHouseTarget(o.save, saveError)) throw CliError(saveError);
+  if (!o.trace.empty()) {
+    if (std::filesystem::path(o.trace).extension() != ".csv")
+      throw CliError("--trace must name a .csv file, not '" + o.trace + "'");
+    std::string traceError;
+    if (!fileio::resolveOutputTarget(o.trace, traceError)) throw CliError(traceError);
+  }
 
   house::HouseMapper mapper(site, config);
   const sim::World& world = mapper.world();
@@ -77,6 +102,12 @@ int runSimHouse(const SimHouseOptions& o) {
     std::cout << "(the plan's rooms are on its own " << plan->world.resolutionM() * 100.0
               << " cm grid, not the robot's: rooms are not labelled from the plan, plan coverage not scored)\n";
     plan.reset();
+  }
+  std::ostringstream traceText;
+  std::optional<house::HouseTrace> trace;
+  if (!o.trace.empty()) {
+    trace.emplace(traceText);
+    mapper.setTrace(&*trace);
   }
   mapper.run();
   if (plan) house::labelRoomsFromPlan(mapper, *plan);
@@ -124,6 +155,11 @@ int runSimHouse(const SimHouseOptions& o) {
     if (!network::saveHouse(mapper.network(), world.resolutionM(), o.save, error)) throw CliError(error);
     std::cout << "saved            " << o.save << " (" << mapper.network().rooms().size() << " room maps + "
               << network::kHouseFileName << ")\n";
+  }
+  if (trace) {
+    std::string error;
+    if (!fileio::writeFileAtomically(o.trace, traceText.str(), error)) throw CliError(error);
+    std::cout << traceLine(*trace, o.trace) << "\n";
   }
   return kExitOk;
 }

@@ -1,7 +1,7 @@
-// `nxtmap sim-house WORLD [--start C,R] [--noise P] [--seed N] [--save DIR]`: maps a house in the
+// `nxtmap sim-house WORLD [--start C,R] [--noise P] [--seed N] [--save DIR] [--trace FILE.csv]`: maps a house in the
 // simulator room by room (host/house/HouseMapper), prints the rooms, gateways, counters and the
 // merged map's agreement with the world, and optionally saves the house (one ROS map per room
-// and a house file).
+// and a house file) and the run's trace.
 #pragma once
 #include <optional>
 #include <string>
@@ -21,7 +21,8 @@ struct SimHouseOptions {
   WorldRunOptions run;  // --noise, --robot, --start-jitter, --range-m
   std::string seed = "1";
   std::string strategy = "frontier";
-  std::string save;  // directory to write the house to
+  std::string save;   // directory to write the house to
+  std::string trace;  // CSV of every action's belief and truth (house/HouseTrace)
 };
 
 CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& options);

@@ -1,5 +1,7 @@
 #include "host/house/HouseMapper.hpp"
 
+#include <cmath>
+
 #include "host/log/Log.hpp"
 #include "host/mapping/SimDrive.hpp"
 #include "host/mapping/SquaredGrid.hpp"
@@ -126,9 +128,48 @@ HouseReport HouseMapper::carryOut(const HouseOrder& o) {
 
 void HouseMapper::drive(DriveAction a) {
   while (a.kind != DriveAction::Kind::Done) {
-    a = session_.step(mapping::carryOutOnRobot(robot_, a, explorerConfig_.geometry));
+    const DriveAction done = a;
+    const RoomSession::Phase phase = session_.phase();  // the one the action belongs to
+    const DriveEvent answer = mapping::carryOutOnRobot(robot_, a, explorerConfig_.geometry);
+    a = session_.step(answer);
     if (!squared_ && stack_.pilot() != nullptr && stack_.pilot()->explorerStarted()) layTruthSquare();
+    if (trace_ != nullptr) trace_->record(traceRow(phase, done, answer));
   }
+}
+
+HouseTraceRow HouseMapper::traceRow(RoomSession::Phase phase, const DriveAction& done, const DriveEvent& answer) const {
+  static const char* const kOrders[] = {"idle", "room", "travel", "cross", "level", "scan"};
+  HouseTraceRow r;
+  r.order = kOrders[static_cast<int>(phase)];
+  r.done = done;
+  r.answer = answer;
+  const sim::GridFrame& grid = robot_.frame();
+  const sim::Vec2 g = grid.toGrid(sim::Vec2(robot_.xCm(), robot_.yCm()));
+  r.trueCol = g.x();
+  r.trueRow = g.y();
+  r.trueHeadingDeg = std::remainder(robot_.headingDeg() - grid.headingDeg, 360.0);
+  if (r.trueHeadingDeg < 0) r.trueHeadingDeg += 360.0;
+  const Explorer* explorer = stack_.explorer();
+  const Pilot* pilot = stack_.pilot();
+  if (explorer == nullptr || pilot == nullptr || !pilot->explorerStarted()) return r;
+  r.believed = true;
+  // The brick's frame in the house (of the explorer there is now): the travel's, or a room's that started where its
+  // crossing ended (the first room's at the house's origin) as the planner will place it.
+  network::RoomTransform toHouse = planner_.brickToHouse();
+  if (session_.phase() == RoomSession::Phase::Exploring || phase == RoomSession::Phase::Exploring) {
+    const Pose c = session_.crossedAt();
+    toHouse = network::RoomTransform::fromPose(toHouse.apply(c.cell), toHouse.apply(c.heading));
+  }
+  const Pose p = explorer->pose();
+  frame_.toWorld(toHouse.apply(p.cell), r.believedCol, r.believedRow);
+  r.believedHeading = "NESW"[static_cast<int>(frame_.toWorld(toHouse.apply(p.heading)))];
+  r.estXMm = pilot->tracker().xMm();
+  r.estYMm = pilot->tracker().yMm();
+  r.estThetaMrad = pilot->tracker().thetaMrad();
+  int col = 0, row = 0;
+  grid.cellOf(sim::Vec2(robot_.xCm(), robot_.yCm()), col, row);
+  r.lost = col != r.believedCol || row != r.believedRow;
+  return r;
 }
 
 void HouseMapper::layTruthSquare() {

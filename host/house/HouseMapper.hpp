@@ -16,6 +16,7 @@
 #include "common/house/RoomConfinement.hpp"
 #include "common/house/RoomSession.hpp"
 #include "host/house/HousePlanner.hpp"
+#include "host/house/HouseTrace.hpp"
 #include "host/mapping/ExplorerBuffer.hpp"
 #include "host/mapping/FrameTransform.hpp"
 #include "host/mapping/Strategy.hpp"
@@ -95,6 +96,8 @@ class HouseMapper {
   const ExplorerConfig& explorerConfig() const { return explorerConfig_; }
   // House frame (room 0: origin at the start, +y the initial heading) <-> world cells.
   const mapping::FrameTransform& houseFrame() const { return frame_; }
+  // Every action from now on is written to `trace` (nullptr: none; not owned, must outlive the run).
+  void setTrace(HouseTrace* trace) { trace_ = trace; }
 
  private:
   HouseMapper(sim::RobotPlacement placed, const HouseConfig& config);
@@ -104,6 +107,8 @@ class HouseMapper {
   void load(const network::RoomMap& map);  // the brick's map replaced (as an upload from the PC)
   HouseReport report(HouseReport::Kind kind) const;
   void logBelief(const char* when) const;  // the believed cell against the simulated robot's (log debug)
+  // For trace_: the action carried out in `phase` of the session and its answer, with the poses as they now stand.
+  HouseTraceRow traceRow(RoomSession::Phase phase, const DriveAction& done, const DriveEvent& answer) const;
   // Once the first room's sweep is over: the truth laid on the grid the robot now maps on (SquaredGrid).
   void layTruthSquare();
   bool squared_ = false;  // layTruthSquare has run (or there is no sweep)
@@ -120,6 +125,7 @@ class HouseMapper {
   RoomConfinement confinement_;
   RoomSession session_;
   HousePlanner planner_;
+  HouseTrace* trace_ = nullptr;
 };
 
 }  // namespace nxtmap::house

@@ -81,6 +81,8 @@ class HousePlanner {
   int openingsTried() const { return static_cast<int>(openingsTried_.size()); }
   int exitsLeft() const { return static_cast<int>(pending_.size()); }
   const Pose& belief() const { return belief_; }  // house frame
+  // The brick's current frame (the room being mapped, or the travel's) -> house.
+  const network::RoomTransform& brickToHouse() const { return brickToHouse_; }
 
  private:
   enum class Phase { FirstRoom, Travel, Cross, ScanNoExit, ScanBlocked, Done };

@@ -9,8 +9,9 @@ namespace nxtmap::mapping {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+}  // namespace
 
-const char* kindName(DriveAction::Kind k) {
+const char* actionName(DriveAction::Kind k) {
   switch (k) {
     case DriveAction::Kind::Read: return "read";
     case DriveAction::Kind::Rotate: return "rotate";
@@ -31,8 +32,6 @@ const char* statusName(RangeStatus s) {
   }
   return "?";
 }
-
-}  // namespace
 
 TracePose tracePose(const MappingRun& run) {
   const sim::SimRobot& robot = run.robot();
@@ -84,7 +83,7 @@ RunTrace::RunTrace(std::ostream& out) : out_(out) {
 void RunTrace::record(const MappingRun& run, uint64_t step, const DriveAction& done) {
   const TracePose t = tracePose(run);
   const auto whole = [](double v) { return std::lround(v); };
-  out_ << step << ',' << kindName(done.kind) << ',' << done.value << ',';
+  out_ << step << ',' << actionName(done.kind) << ',' << done.value << ',';
   const DriveEvent& e = run.lastEvent();
   if (done.kind == DriveAction::Kind::Read && e.kind == DriveEvent::Kind::Range)
     out_ << "FRBL"[static_cast<int>(e.sensor) & 3] << ',' << e.reading.cm << ',' << statusName(e.reading.status);

@@ -11,6 +11,7 @@
 #include <ostream>
 
 #include "common/motion/DriveAction.hpp"
+#include "common/sensing/RangeReading.hpp"
 
 namespace nxtmap::mapping {
 
@@ -23,6 +24,11 @@ struct TracePose {
   double errXMm = 0, errYMm = 0, errThetaMrad = 0;     // truth minus belief
   bool lost = false;                                   // the centre lies in another cell than the believed one
 };
+
+// The names a trace gives an action and a reading's status (read, rotate, drive, done, think; good, no-echo,
+// too-near, too-far, inconsistent).
+const char* actionName(DriveAction::Kind k);
+const char* statusName(RangeStatus s);
 
 // The belief and the truth of `run` as it stands now.
 TracePose tracePose(const MappingRun& run);

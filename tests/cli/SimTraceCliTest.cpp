@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "CliTestSupport.hpp"
+#include "TraceCliSupport.hpp"
 
 namespace nxtmap::cli::test {
 namespace {
@@ -17,13 +18,6 @@ const std::string kHeader =
     "step,action,value,sensor,reading_cm,reading,true_x_mm,true_y_mm,true_theta_mrad,cell_x,cell_y,heading,est_x_mm,"
     "est_y_mm,est_theta_mrad,"
     "err_x_mm,err_y_mm,err_theta_mrad,lost";
-
-std::vector<std::string> fields(const std::string& row) {
-  std::vector<std::string> out;
-  std::istringstream in(row);
-  for (std::string f; std::getline(in, f, ',');) out.push_back(f);
-  return out;
-}
 
 long num(const std::string& f) { return std::strtol(f.c_str(), nullptr, 10); }
 
@@ -39,7 +33,7 @@ TEST(SimTrace, AnIdealRunNeverLeavesItsCellAndTracesEveryAction) {
   // The published robot, no noise: on its cell's centre (10 cm cells; the simulated wheels' arithmetic may leave
   // it a few tenths of a mm off after each move, 2 mm at most over a run), square, after every action.
   for (size_t i = 1; i < rows.size(); ++i) {
-    const std::vector<std::string> f = fields(rows[i]);
+    const std::vector<std::string> f = csvFields(rows[i]);
     ASSERT_EQ(f.size(), 19u) << rows[i];
     EXPECT_EQ(num(f[0]), static_cast<long>(i)) << "one row per action, numbered from 1";
     EXPECT_EQ(f[1] == "read", !f[3].empty()) << "a sensor for readings only: " << rows[i];
@@ -48,7 +42,7 @@ TEST(SimTrace, AnIdealRunNeverLeavesItsCellAndTracesEveryAction) {
     EXPECT_EQ(num(f[8]), 0) << rows[i];
     EXPECT_EQ(f[18], "0") << rows[i];
   }
-  const std::vector<std::string> first = fields(rows[1]);
+  const std::vector<std::string> first = csvFields(rows[1]);
   EXPECT_EQ(first[1], "read") << "the first action reads the front sensor where it was set down";
   EXPECT_EQ(first[3], "F");
   // Occupancy-089 from 1,20 facing north: the far wall 1.95 m ahead, beyond the published robot's 1 m.
@@ -68,7 +62,7 @@ TEST(SimTrace, TheErrorIsTheTruthLessTheBeliefAndLostMeansAnotherCell) {
   ASSERT_GT(rows.size(), 100u);
   long firstLost = 0, lostRows = 0;
   for (size_t i = 1; i < rows.size(); ++i) {
-    const std::vector<std::string> f = fields(rows[i]);
+    const std::vector<std::string> f = csvFields(rows[i]);
     ASSERT_EQ(f.size(), 19u) << rows[i];
     // 20 cm cells; each column is rounded to whole mm or mrad on its own, so the sum may be 1 off.
     EXPECT_NEAR(num(f[15]), num(f[6]) - (200 * num(f[9]) + num(f[12])), 1) << rows[i];
@@ -85,25 +79,11 @@ TEST(SimTrace, TheErrorIsTheTruthLessTheBeliefAndLostMeansAnotherCell) {
       if (firstLost == 0) firstLost = num(f[0]);
     }
   }
-  std::ostringstream expect;
-  if (firstLost == 0)
-    expect << "the believed cell was the robot's after every action";
-  else
-    expect << "first left the robot's after action " << firstLost << " (" << lostRows << " actions lost in all)";
-  EXPECT_NE(r.out.find(expect.str()), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(lostSummary(firstLost, lostRows)), std::string::npos) << r.out;
 }
 
 TEST(SimTrace, ABadTraceFileIsRefusedBeforeTheRun) {
-  TempDir tmp("trace");
-  for (const std::string& bad : {tmp.path("run.txt"), tmp.path("no/such/folder/run.csv"), tmp.path("") + "/"}) {
-    SCOPED_TRACE(bad);
-    const RunOutput r = runCli("sim worlds/seed-appendix-a/occupancy-089.map --start 1,20 --show none --trace " + bad);
-    EXPECT_EQ(r.exitCode, 2);
-    EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
-    EXPECT_EQ(r.out.find("time units"), std::string::npos) << "no run: " << r.out;
-  }
-  EXPECT_FALSE(std::filesystem::exists(tmp.path("run.txt")));
-  EXPECT_FALSE(std::filesystem::exists(tmp.path("no")));
+  expectBadTracesRefused("sim worlds/seed-appendix-a/occupancy-089.map --start 1,20 --show none", "time units");
 }
 
 }  // namespace
