@@ -93,7 +93,7 @@ void Explorer::apply(const Event& e) {
         break;
       }
 #endif
-      if (e.amount == 0 ? !map_.markBlocked(advance(pose_.cell, pendingMove_))
+      if (e.amount == 0 ? !map_.observeBlocked(advance(pose_.cell, pendingMove_))
                         : !map_.observeOccupied(advance(pose_.cell, pendingMove_)))
         end_ = ExplorerEnd::GridFull;
       route_.clear();

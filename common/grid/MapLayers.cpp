@@ -6,6 +6,8 @@ constexpr int kSureFree = -7;
 constexpr int kSureOccupied = 7;
 constexpr int kHitWeight = 1;  // an echo counts as much as a miss
 constexpr int kMissWeight = 1;
+// A blocked move into a surely free cell counts as this many echoes from it (MapLayers::observeBlocked).
+constexpr int kBlockedWeight = 3;
 }  // namespace
 
 MapLayers::MapLayers(const Storage& storage, int16_t width, int16_t height)
@@ -50,6 +52,10 @@ void MapLayers::forget(Cell c) {
 
 bool MapLayers::markVisited(Cell c) { return setEvidence(c, kSureFree); }
 bool MapLayers::markBlocked(Cell c) { return setEvidence(c, kSureOccupied); }
+bool MapLayers::observeBlocked(Cell c) {
+  if (!grid_.isUnknown(c) && evidence(c) <= kSureFree) return setEvidence(c, kSureFree + kBlockedWeight);
+  return markBlocked(c);
+}
 
 void MapLayers::diagonalSlot(Cell c, int sx, int sy, Cell& base, uint8_t& bit) {
   // Stored at the lower cell of the pair: bit 0 = towards (+1,+1), bit 1 = towards (-1,+1).

@@ -39,6 +39,11 @@ class MapLayers {
   // The robot stood in the cell: certainly free. A move into the cell was blocked: certainly occupied.
   [[nodiscard]] bool markVisited(Cell c);
   [[nodiscard]] bool markBlocked(Cell c);
+  // A move into the cell was blocked: certainly occupied, unless the cell is surely free (the robot stood in it, or
+  // saw it free again and again): then as three echoes from it, still free. A body that grazes a wall beside its
+  // way is blocked too, and a cell it drove through cut off as a wall splits the map; a second blocked move there
+  // makes the cell certain.
+  [[nodiscard]] bool observeBlocked(Cell c);
   int8_t evidence(Cell c) const { return static_cast<int8_t>(evidence_.at(c)) - 8; }
 
   bool wasRead(Cell c, Dir d) const { return (readDirs(c) >> static_cast<int>(d)) & 1u; }

@@ -143,5 +143,37 @@ TEST(MapLayers, EvidenceCorrectsAnIsolatedWrongHit) {
   EXPECT_EQ(f.map.at(Cell{5, 0}), CellState::Free) << "a cell the robot stood in stays free";
 }
 
+TEST(MapLayers, ABlockedMoveIsCertainUnlessTheCellIsSurelyFree) {
+  struct Row {
+    const char* before;
+    int8_t evidence;  // after one blocked move
+    CellState state;
+  } rows[] = {
+      {"unknown", 7, CellState::Occupied},
+      {"seen free once", 7, CellState::Occupied},
+      {"seen occupied once", 7, CellState::Occupied},
+      {"stood in", -4, CellState::Free},  // as three echoes: still free
+  };
+  for (const Row& r : rows) {
+    test::GridFixture f;
+    const Cell c{3, 2};
+    const std::string before = r.before;
+    bool ok = true;
+    if (before == "seen free once") ok = f.map.observeFree(c);
+    if (before == "seen occupied once") ok = f.map.observeOccupied(c);
+    if (before == "stood in") ok = f.map.markVisited(c);
+    ASSERT_TRUE(ok) << r.before;
+    ASSERT_TRUE(f.map.observeBlocked(c));
+    EXPECT_EQ(f.map.evidence(c), r.evidence) << r.before;
+    EXPECT_EQ(f.map.at(c), r.state) << r.before;
+  }
+  // Blocked a second time, a cell stood in is certain.
+  test::GridFixture f;
+  ASSERT_TRUE(f.map.markVisited(Cell{1, 1}));
+  ASSERT_TRUE(f.map.observeBlocked(Cell{1, 1}));
+  ASSERT_TRUE(f.map.observeBlocked(Cell{1, 1}));
+  EXPECT_EQ(f.map.evidence(Cell{1, 1}), 7);
+}
+
 }  // namespace
 }  // namespace nxtmap

@@ -42,6 +42,7 @@ struct ScriptedRun {
   bool bodySweeps = false;  // a turn stalls in a cell with a blocked neighbour (the body's corners reach into it)
   int turnsWithoutRoom = 0, turns = 0;
   bool stallFirstTurn = false;  // the first turn stalls (the pilot turned it back): Event::turnBlocked()
+  int grazes = 0;  // this many moves back into a cell the robot stood in are blocked (a body grazing a wall)
   bool stalled = false;
   Cell stalledAt{};
   int turnsAtStalled = 0;
@@ -80,6 +81,10 @@ struct ScriptedRun {
     if (a.kind == Action::Kind::Move) {
       const Dir d = a.amount > 0 ? pose.heading : opposite(pose.heading);
       if (world.blocked(advance(pose.cell, d))) return Event::blocked();
+      if (grazes > 0 && map.evidence(advance(pose.cell, d)) == -7) {
+        --grazes;
+        return Event::blocked();
+      }
       pose.cell = advance(pose.cell, d);
       return Event::moved(a.amount);
     }
