@@ -24,7 +24,7 @@ class ThreePointTurn {
   static constexpr int32_t kMaxOutMm = 110;  // the drive out is at most this long (a little over half a 20 cm cell)
   // and leaves the robot no farther off its cell's centre than this along the heading it turned from: the explorer
   // holds it in that cell (half a cell, 100 mm, less room for the tracker's error). On the brick rooms (nxt, seeds
-  // 1-100) 50-85 mm mapped alike; no limit (110) lost 3 and 16 more runs of 1,800.
+  // 1-100) 50-85 mm mapped alike; with no limit (110) 3 and 14 more runs of 1,800 were lost.
   static constexpr int32_t kMaxOffsetMm = 70;
   // A turn that stalled before kMinStalledMrad is turned back at once (the drive would have to be long for the
   // little it moves sideways), and so is one that stalled after kMaxStalledMrad (it is nearly as turned as it gets).
