@@ -58,7 +58,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"a cell south and two west", -2, -1, 0, 2, 1},
                       Case{"turned a quarter, one north", 0, 1, 1, 0, -1},
                       Case{"turned a half, off diagonally", 1, 1, 2, -1, -1},
-                      Case{"beyond the search: two of three cells back still disagree, so it stays", 3, 0, 0, 0, 0}));
+                      Case{"beyond the search: the two cells back it may go, where far fewer cells disagree", 3, 0, 0,
+                           -2, 0}));
 
 TEST(RoomRegistration, NoOverlapMeansNoChange) {
   const network::RoomMap known = drawMap(kKnown, 0, 0);
@@ -77,11 +78,34 @@ TEST(RoomRegistration, AFewCellsAboutADoorwayCannotMoveARoom) {
   const network::RoomMap known = drawMap(kKnown, 0, 0);
   const network::RoomMap fresh = drawMap({"  #....#  "}, 0, 0);
   const network::RoomTransform believed = network::RoomTransform::fromParts(-1, 0, 0);
-  const RoomRegistration loose = registerRoom(fresh, believed, known, 2, 1);
-  EXPECT_EQ(loose.dx, 1);  // with almost no margin it would move
+  const RoomRegistration loose = registerRoom(fresh, believed, known, 2, 1, 0);
+  EXPECT_EQ(loose.dx, 1);  // with almost no margin (and no conflict to resolve) it would move
   const RoomRegistration r = registerRoom(fresh, believed, known, 2);
   EXPECT_FALSE(r.shifted());
   EXPECT_EQ(r.toHouse, believed);
+}
+
+TEST(RoomRegistration, AWallMappedACellApartFromItsTwoSidesDoesNotMoveARoom) {
+  // Two rooms side by side share a wall that lies on a cell boundary: the known room mapped it in its
+  // row 3, the new room from below in row 4. Laid a row up, the new room's 20 wall cells would fall on
+  // the known room's (well past the margin), but where the new room is nothing disagrees: it stays.
+  const network::RoomMap known = drawMap(
+      {"######################", "#....................#", "#....................#", "######################"}, 0, 0);
+  const network::RoomMap fresh = drawMap({"######################", "#....................#", "#....................#",
+                                          "#....................#", "######################"},
+                                         0, 4);
+  const network::RoomTransform believed = network::RoomTransform::fromParts(0, 0, 0);
+  const RoomRegistration r = registerRoom(fresh, believed, known, 2);
+  EXPECT_FALSE(r.shifted()) << r.dx << "," << r.dy;
+  EXPECT_EQ(r.toHouse, believed);
+  // A room that shares the known room's wall row (a wall inside a cell), believed a row too low, lays
+  // its free cells on that wall and its wall on the known room's free cells: shifted back up.
+  const network::RoomMap above = drawMap({"######################", "#....................#", "#....................#",
+                                          "#....................#", "######################"},
+                                         0, 3);
+  const RoomRegistration low = registerRoom(above, network::RoomTransform::fromParts(0, -1, 0), known, 2);
+  EXPECT_EQ(low.dy, 1);
+  EXPECT_EQ(low.dx, 0);
 }
 
 }  // namespace
