@@ -135,10 +135,20 @@ HouseOrder HousePlanner::nextExit() {
 }
 
 HouseOrder HousePlanner::endOfExits() {
+  // The exits a travel could not pass get one more try each, from wherever the robot is now (another way there,
+  // or the same one better placed: a travel is most often blocked where the robot was a cell off).
+  if (!failed_.empty() && static_cast<int>(network_.rooms().size()) < config_.maxRooms) {
+    pending_.swap(failed_);
+    failed_.clear();
+    relocalisedHere_ = false;
+    return nextExit();
+  }
   if (queueOpening()) {
     relocalisedHere_ = false;
     return nextExit();
   }
+  exitsUnreached_ += static_cast<int>(failed_.size());  // the house has its most rooms
+  failed_.clear();
   phase_ = Phase::Done;
   HouseOrder o;
   o.kind = HouseOrder::Kind::Finished;
@@ -251,8 +261,17 @@ HouseOrder HousePlanner::failedPass() {
   }
   log::debug("house", "exit not passed: at %d,%d", belief_.cell.x, belief_.cell.y);
   relocalisedHere_ = false;
-  ++exitsUnreached_;
+  notPassed();
   return nextExit();
+}
+
+void HousePlanner::notPassed() {
+  if (current_.retry) {
+    ++exitsUnreached_;
+    return;
+  }
+  current_.retry = true;
+  failed_.push_back(current_);
 }
 
 HouseOrder HousePlanner::scanned(const HouseReport& r) {
@@ -267,7 +286,7 @@ HouseOrder HousePlanner::scanned(const HouseReport& r) {
   if (blocked) {
     if (!moved) {
       relocalisedHere_ = false;
-      ++exitsUnreached_;
+      notPassed();
       return nextExit();
     }
     attempt_ = 1;

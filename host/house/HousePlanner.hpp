@@ -4,7 +4,8 @@
 // rooms already mapped, split when too large, joined by gateways), picks the nearest unexplored exit,
 // orders the travel there over the known house and the crossing, and, when the robot seems lost by
 // a cell (blocked on the way, or no exit reachable from where it believes it stands), orders a
-// standing scan and moves its belief to the whole-cell shift that explains it. When no exit is left,
+// standing scan and moves its belief to the whole-cell shift that explains it. An exit still not passed
+// is tried once more when the others are done, from wherever the robot is then. When no exit is left,
 // openings onto unknown space the exits missed are explored the same way; then the house is done.
 // The same planner serves `sim-house` (over the simulated drive) and the console (over the link).
 #pragma once
@@ -88,7 +89,8 @@ class HousePlanner {
   enum class Phase { FirstRoom, Travel, Cross, ScanNoExit, ScanBlocked, Done };
   struct Pending {
     int room;
-    RoomExit exit;  // in the room's frame
+    RoomExit exit;       // in the room's frame
+    bool retry = false;  // not passed once already: not tried again
   };
 
   // The flow (HousePlanner.cpp).
@@ -100,6 +102,7 @@ class HousePlanner {
   Cell legEnd(Cell inside, Bounds& box) const;
   HouseOrder crossOrder();
   HouseOrder failedPass();
+  void notPassed();  // current_ was not passed: kept for one more try (failed_), or counted unreached
   HouseOrder scanned(const HouseReport& r);
   Cell standingShift(const HouseReport& r, const Dir* blocked) const;
   network::RoomMap knownForTravel() const;
@@ -119,6 +122,7 @@ class HousePlanner {
   network::HouseNetwork network_;
   std::vector<network::RoomNode> seen_;  // each room run's uncut map and frame
   std::vector<Pending> pending_;
+  std::vector<Pending> failed_;          // exits not passed once, tried again when pending_ is done
   std::vector<Cell> openingsTried_;      // inside cells (house frame) of the openings taken as exits
   Pose belief_{};                        // house frame
   network::RoomTransform brickToHouse_;  // the brick's current frame -> house
