@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "host/bench/RealismBench.hpp"
+#include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
 #include "host/cli/ExperimentRunner.hpp"
 #include "host/house/BestFramesScore.hpp"
@@ -38,8 +39,10 @@ RoomFigures brickRooms(const cli::Suite& suite, const std::string& noise, mappin
   s.robot = *sim::robotByName("brick");
   s.startJitterDeg = kJitterDeg;
   s.squareAtStart = true;
-  ProgressLine progress(std::string("brick rooms, ") + noise + ", " + mapping::strategyName(strategy),
-                        suite.scenarios.size() * kRoomSeeds, "acceptance");
+  cli::ProgressLine progress(
+      std::cerr, cli::stderrIsTerminal(),
+      progressLabel("acceptance", "brick rooms, " + noise + ", " + mapping::strategyName(strategy)),
+      suite.scenarios.size() * kRoomSeeds);
   const report::ExperimentTable t =
       cli::runSuite(suite, s, [&](size_t, size_t, const std::string&) { progress.tick(); });
   RoomFigures f;
@@ -70,8 +73,9 @@ struct HouseFigures {
 
 HouseFigures houses(const std::vector<fs::path>& plans, mapping::Strategy strategy) {
   HouseFigures f;
-  ProgressLine progress(std::string("houses, nxt, ") + mapping::strategyName(strategy), plans.size() * kHouseSeeds,
-                        "acceptance");
+  cli::ProgressLine progress(std::cerr, cli::stderrIsTerminal(),
+                             progressLabel("acceptance", "houses, nxt, " + mapping::strategyName(strategy)),
+                             plans.size() * kHouseSeeds);
   for (const fs::path& p : plans) {
     worlds::SiteLoad l = worlds::loadSite(p.string(), sim::robotByName("brick")->cellCm);
     if (!l.site || !l.site->start) throw cli::CliError(l.error.empty() ? p.string() + ": no start" : l.error);

@@ -106,17 +106,7 @@ void printColumns(const std::vector<std::string>& head, const std::vector<std::v
   }
 }
 
-ProgressLine::ProgressLine(std::string part, size_t total, std::string section)
-    : part_(std::move(part)), section_(std::move(section)), total_(total) {
-  tick(0);
-}
-
-void ProgressLine::tick(size_t add) {
-  done_ += add;
-  std::cerr << "\r[" << section_ << "] " << part_ << ": run " << done_ << " of " << total_ << std::flush;
-}
-
-ProgressLine::~ProgressLine() { std::cerr << "\n"; }
+std::string progressLabel(const std::string& section, const std::string& part) { return section + ": " + part; }
 
 namespace {
 
@@ -139,7 +129,7 @@ void presetTable(const RealismWorlds& w) {
       << "\n(houses: the merged map scored like a room's; lost not known, HouseMapper keeps its belief to itself;\n"
       << "agreement %: the house section's own measure, free and occupied cells of the observable area alike).\n\n";
   std::vector<std::vector<std::string>> rows;
-  ProgressLine progress("presets", total);
+  cli::ProgressLine progress(std::cerr, cli::stderrIsTerminal(), progressLabel("realism", "presets"), total);
   for (const RealismSet* set : sets) {
     for (const std::string& preset : sim::noiseProfileNames()) {
       for (const std::string& name : mapping::strategyNames()) {

@@ -9,6 +9,7 @@
 
 #include "host/bench/RealismRuns.hpp"
 #include "host/cli/ExperimentRunner.hpp"
+#include "host/cli/ProgressLine.hpp"
 #include "host/sim/Site.hpp"
 
 namespace nxtmap::bench {
@@ -34,19 +35,7 @@ void factorTable(const RealismWorlds& worlds);
 std::string formatDelta(double v, int decimals);
 // Left-aligned columns, a rule under the head; an empty row prints an empty line.
 void printColumns(const std::vector<std::string>& head, const std::vector<std::vector<std::string>>& rows);
-
-// "[SECTION] PART: run k of N" on stderr, rewritten in place; a newline when done.
-class ProgressLine {
- public:
-  ProgressLine(std::string part, size_t total, std::string section = "realism");
-  ~ProgressLine();
-  ProgressLine(const ProgressLine&) = delete;
-  ProgressLine& operator=(const ProgressLine&) = delete;
-  void tick(size_t add = 1);
-
- private:
-  std::string part_, section_;
-  size_t total_ = 0, done_ = 0;
-};
+// "[SECTION: PART] k of N" on stderr (cli::ProgressLine: rewritten on a terminal, a line a tenth in a log).
+std::string progressLabel(const std::string& section, const std::string& part);
 
 }  // namespace nxtmap::bench

@@ -206,7 +206,8 @@ void factorTable(const RealismWorlds& w) {
   for (const Factor& f : list) total += 2 * f.set->starts.size() * static_cast<size_t>(f.set->seeds);
   std::vector<Measured> measured(list.size());
   {
-    ProgressLine progress("one factor at a time", total);
+    cli::ProgressLine progress(std::cerr, cli::stderrIsTerminal(), progressLabel("realism", "one factor at a time"),
+                               total);
     for (size_t i = 0; i < list.size(); ++i) {
       for (size_t k = 0; k < 2; ++k) {
         const mapping::Strategy s = cli::parseStrategy(mapping::strategyNames()[k]);

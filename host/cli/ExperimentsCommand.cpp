@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
 #include "host/cli/ExperimentRunner.hpp"
+#include "host/cli/ProgressLine.hpp"
 #include "host/fileio/AtomicFile.hpp"
 #include "host/fileio/OutputTarget.hpp"
 #include "host/report/ExperimentTable.hpp"
@@ -110,24 +112,23 @@ int runExperiments(const ExperimentsOptions& o) {
   if (!o.markdown.empty()) checkOutput(o.markdown);
 
   const size_t total = suite.scenarios.size() * static_cast<size_t>(o.seeds) * strategies.size();
-  const bool tty = stderrIsTerminal();
-  const bool lines = !tty && total > 36;
-  Progress progress;
-  if (tty || lines) {
-    progress = [&](size_t done, size_t all, const std::string& id) {
-      std::cerr << (tty ? "\r\x1b[K" : "") << "[" << done + 1 << "/" << all << "] " << id << (tty ? "" : "\n")
-                << std::flush;
-    };
-  }
   std::vector<report::ExperimentTable> tables;
   std::vector<GridFullRun> gridFull;
-  size_t done = 0;
-  for (mapping::Strategy s : strategies) {
-    settings.strategy = s;
-    tables.push_back(runSuite(suite, settings, progress, done, total, &gridFull));
-    done += suite.scenarios.size() * static_cast<size_t>(o.seeds);
+  {
+    // In a log a few runs go without progress lines.
+    const bool tty = stderrIsTerminal();
+    std::optional<ProgressLine> line;
+    if (tty || total > 36) line.emplace(std::cerr, tty, "experiments", total);
+    const Progress progress = [&](size_t, size_t, const std::string& id) {
+      if (line) line->tick(1, id);
+    };
+    size_t done = 0;
+    for (mapping::Strategy s : strategies) {
+      settings.strategy = s;
+      tables.push_back(runSuite(suite, settings, progress, done, total, &gridFull));
+      done += suite.scenarios.size() * static_cast<size_t>(o.seeds);
+    }
   }
-  if (tty) std::cerr << "\r\x1b[K" << std::flush;
 
   std::cout << "experiments " << suite.tsvPath << ": " << suite.scenarios.size() << " runs";
   if (o.seeds > 1) std::cout << " x " << o.seeds << " seeds";
