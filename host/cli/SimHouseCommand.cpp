@@ -97,11 +97,13 @@ int runSimHouse(const SimHouseOptions& o) {
   house::HouseMapper mapper(site, config);
   const sim::World& world = mapper.world();
   // The plan's room boxes are cells of its raster: they move onto the robot's grid when that grid has the
-  // raster's cells and is square to it (the robot set down square on a cell centre).
-  if (plan && !house::movePlanOntoGrid(*plan, mapper.world(), mapper.robot().frame())) {
+  // raster's cells and is square to it (the robot set down square on a cell centre). Otherwise the rooms are
+  // not labelled, and the coverage places their boxes on the grid the run ended with (planCoverageOnGrid).
+  const bool planOnGrid = plan && house::movePlanOntoGrid(*plan, mapper.world(), mapper.robot().frame());
+  if (plan && !planOnGrid) {
     std::cout << "(the plan's rooms are on its own " << plan->world.resolutionM() * 100.0
-              << " cm grid, not the robot's: rooms are not labelled from the plan, plan coverage not scored)\n";
-    plan.reset();
+              << " cm grid, not the robot's: rooms are not labelled from the plan; their coverage is scored by "
+                 "their boxes on the robot's grid)\n";
   }
   std::ostringstream traceText;
   std::optional<house::HouseTrace> trace;
@@ -110,7 +112,7 @@ int runSimHouse(const SimHouseOptions& o) {
     mapper.setTrace(&*trace);
   }
   mapper.run();
-  if (plan) house::labelRoomsFromPlan(mapper, *plan);
+  if (planOnGrid) house::labelRoomsFromPlan(mapper, *plan);
   const house::HouseScore s = house::scoreHouse(mapper);
   const house::BestFramesScore best = house::scoreWithBestFrames(house::houseInWorld(mapper));
   const house::HouseCounters& c = mapper.counters();
@@ -133,7 +135,8 @@ int runSimHouse(const SimHouseOptions& o) {
   }
   out << "rooms            " << s.rooms;
   if (plan) {
-    const house::PlanCoverage pc = house::planCoverage(mapper, *plan);
+    const house::PlanCoverage pc =
+        planOnGrid ? house::planCoverage(mapper, *plan) : house::planCoverageOnGrid(mapper, *plan);
     out << " (plan: " << plan->roomNum << " rooms; " << pc.covered << " of " << pc.reachable
         << " reachable plan rooms mapped to >= 90 %)";
   }

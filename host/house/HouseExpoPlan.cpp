@@ -164,6 +164,10 @@ std::string readRooms(const nlohmann::json& j, const Extent& outline, double x0,
       r.maxCol = std::clamp(toCol(std::max(bx1, bx2)), 0, w - 1);
       r.minRow = std::clamp(toRow(std::max(by1, by2)), 0, h - 1);
       r.maxRow = std::clamp(toRow(std::min(by1, by2)), 0, h - 1);
+      r.minXCm = (std::min(bx1, bx2) - x0) * 100.0;
+      r.maxXCm = (std::max(bx1, bx2) - x0) * 100.0;
+      r.minYCm = (y0 + h * res - std::max(by1, by2)) * 100.0;
+      r.maxYCm = (y0 + h * res - std::min(by1, by2)) * 100.0;
       rooms.push_back(r);
     }
   }

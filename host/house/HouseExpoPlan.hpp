@@ -18,11 +18,16 @@
 
 namespace nxtmap::house {
 
-// A room box of the plan, in world cells (inclusive; col right, row down).
+// A room box of the plan, in world cells (inclusive; col right, row down) and in the plan's plane (cm, y down,
+// the scene's: HousePlan::scene), where any grid laid on the plane can place it.
 struct PlanRoom {
   std::string category;  // e.g. "Kitchen"
   int minCol = 0, minRow = 0, maxCol = 0, maxRow = 0;
+  double minXCm = 0, minYCm = 0, maxXCm = 0, maxYCm = 0;
   bool contains(int col, int row) const { return col >= minCol && col <= maxCol && row >= minRow && row <= maxRow; }
+  bool containsPoint(double xCm, double yCm) const {
+    return xCm >= minXCm && xCm <= maxXCm && yCm >= minYCm && yCm <= maxYCm;
+  }
 };
 
 struct HousePlan {

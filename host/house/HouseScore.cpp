@@ -67,9 +67,14 @@ PlanCoverage planCoverage(const HouseInWorld& h, const HousePlan& plan, double m
   c.planRooms = static_cast<int>(plan.rooms.size());
   for (const PlanRoom& r : plan.rooms) {
     int reachable = 0, mapped = 0;
-    for (int row = r.minRow; row <= r.maxRow; ++row) {
-      for (int col = r.minCol; col <= r.maxCol; ++col) {
+    const bool byPlane = h.grid != nullptr;  // every cell of the world, its centre in the box; else the box's cells
+    for (int row = byPlane ? 0 : r.minRow; row <= (byPlane ? world.height() - 1 : r.maxRow); ++row) {
+      for (int col = byPlane ? 0 : r.minCol; col <= (byPlane ? world.width() - 1 : r.maxCol); ++col) {
         if (!world.inside(col, row) || obs.reachable[static_cast<size_t>(row * world.width() + col)] == 0) continue;
+        if (byPlane) {
+          const sim::Vec2 p = h.grid->toPlane(sim::Vec2(col, row));
+          if (!r.containsPoint(p.x(), p.y())) continue;
+        }
         ++reachable;
         if (beliefAt(h.houseFrame, merged, col, row) == CellState::Free) ++mapped;
       }
@@ -79,6 +84,12 @@ PlanCoverage planCoverage(const HouseInWorld& h, const HousePlan& plan, double m
     if (100.0 * mapped >= minPct * reachable) ++c.covered;
   }
   return c;
+}
+
+PlanCoverage planCoverageOnGrid(const HouseMapper& m, const HousePlan& plan, double minPct) {
+  HouseInWorld h = houseInWorld(m);
+  h.grid = &m.robot().frame();
+  return planCoverage(h, plan, minPct);
 }
 
 void labelRoomsFromPlan(HouseMapper& m, const HousePlan& plan) {

@@ -28,6 +28,9 @@ struct HouseInWorld {
   mapping::FrameTransform houseFrame{0, 0, sim::Heading::N};
   int startCol = 0, startRow = 0;
   RangeGeometry geometry;
+  // The world's grid on the plan's plane, for placing plan rooms by their plane boxes (PlanRoom::containsPoint);
+  // nullptr: the plan's room boxes are the world's cells (movePlanOntoGrid). Not owned.
+  const sim::GridFrame* grid = nullptr;
 };
 
 // The house `mapper` mapped, in its world.
@@ -49,6 +52,9 @@ struct PlanCoverage {
 };
 PlanCoverage planCoverage(const HouseMapper& mapper, const HousePlan& plan, double minPct = 90.0);
 PlanCoverage planCoverage(const HouseInWorld& house, const HousePlan& plan, double minPct = 90.0);
+// The same with the plan's rooms placed on the robot's grid by their plane boxes: any grid, at any cell size and
+// turned as the start's squaring left it (the brick's 20 cm cells on a plan rasterised at 10 cm).
+PlanCoverage planCoverageOnGrid(const HouseMapper& mapper, const HousePlan& plan, double minPct = 90.0);
 
 // Moves the plan's room boxes from its raster's cells onto the robot's grid `frame` (whose cell (0, 0) is
 // centred on frame.originCm): possible when the grid has the raster's cells, is square to it and its cell

@@ -96,6 +96,36 @@ TEST(HouseMapper, HouseExpoPlanRoomByRoom) {
   const PlanCoverage c = planCoverage(m, *l.plan);
   EXPECT_EQ(c.covered, c.reachable);
   EXPECT_EQ(c.reachable, 2);
+  // The plan's rooms placed by their boxes on the plane give the same on the plan's own grid.
+  const PlanCoverage onGrid = planCoverageOnGrid(m, *l.plan);
+  EXPECT_EQ(onGrid.reachable, c.reachable);
+  EXPECT_EQ(onGrid.covered, c.covered);
+}
+
+// The brick maps on 20 cm cells, squared to the walls, while the plan is rasterised at 10 cm: its rooms are
+// placed on the brick's grid by their boxes in the plane. Before the run nothing covers them; after it all do.
+TEST(HouseMapper, TheBricksCoverageOfAPlanCountsThePlanRoomsOnItsOwnGrid) {
+  const std::string path = kRoot + "houseexpo/1f99717550c31ae321ca2313edceedcc.json";
+  const HousePlanLoad plan = loadHouseExpo(path);
+  ASSERT_TRUE(plan.plan) << plan.error;
+  const sim::RobotDescription brick = *sim::robotByName("brick");
+  worlds::SiteLoad l = worlds::loadSite(path, brick.cellCm);
+  ASSERT_TRUE(l.site && l.site->start) << l.error;
+  for (const double jitter : {0.0, 8.0}) {
+    HouseConfig config;
+    config.robot = brick;
+    config.startPose = *l.site->start;
+    config.startJitterDeg = jitter;
+    config.squareAtStart = true;
+    HouseMapper m(*l.site, config);
+    const PlanCoverage before = planCoverageOnGrid(m, *plan.plan);
+    EXPECT_EQ(before.reachable, 2) << jitter;
+    EXPECT_EQ(before.covered, 0) << jitter;
+    m.run();
+    const PlanCoverage after = planCoverageOnGrid(m, *plan.plan);
+    EXPECT_EQ(after.reachable, 2) << jitter;
+    EXPECT_EQ(after.covered, 2) << jitter;
+  }
 }
 
 TEST(HouseMapper, SameSeedSameHouse) {
