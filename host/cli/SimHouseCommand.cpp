@@ -97,13 +97,12 @@ int runSimHouse(const SimHouseOptions& o) {
   house::HouseMapper mapper(site, config);
   const sim::World& world = mapper.world();
   // The plan's room boxes are cells of its raster: they move onto the robot's grid when that grid has the
-  // raster's cells and is square to it (the robot set down square on a cell centre). Otherwise the rooms are
-  // not labelled, and the coverage places their boxes on the grid the run ended with (planCoverageOnGrid).
+  // raster's cells and is square to it (the robot set down square on a cell centre). Otherwise labels and
+  // coverage place their boxes in metres on the grid the run ended with (planCoverageOnGrid).
   const bool planOnGrid = plan && house::movePlanOntoGrid(*plan, mapper.world(), mapper.robot().frame());
   if (plan && !planOnGrid) {
     std::cout << "(the plan's rooms are on its own " << plan->world.resolutionM() * 100.0
-              << " cm grid, not the robot's: rooms are not labelled from the plan; their coverage is scored by "
-                 "their boxes on the robot's grid)\n";
+              << " cm grid, not the robot's: they are placed on it by their boxes in metres)\n";
   }
   std::ostringstream traceText;
   std::optional<house::HouseTrace> trace;
@@ -112,7 +111,7 @@ int runSimHouse(const SimHouseOptions& o) {
     mapper.setTrace(&*trace);
   }
   mapper.run();
-  if (planOnGrid) house::labelRoomsFromPlan(mapper, *plan);
+  if (plan) house::labelRoomsFromPlan(mapper, *plan, !planOnGrid);
   const house::HouseScore s = house::scoreHouse(mapper);
   const house::BestFramesScore best = house::scoreWithBestFrames(house::houseInWorld(mapper));
   const house::HouseCounters& c = mapper.counters();

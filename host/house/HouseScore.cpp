@@ -12,6 +12,26 @@ namespace {
 CellState beliefAt(const mapping::FrameTransform& f, const network::RoomMap& merged, int col, int row) {
   return merged.at(f.toExplorer(col, row));
 }
+
+// Calls f(col, row, d) for the world cells of plan room r, d their distance from its centre (cells): the box's
+// cells; or, with a grid, every cell whose centre lies in the room's box on the plane.
+template <class F>
+void forRoomCells(const PlanRoom& r, const sim::World& world, const sim::GridFrame* grid, F f) {
+  if (grid == nullptr) {
+    const double cc = (r.minCol + r.maxCol) / 2.0, cr = (r.minRow + r.maxRow) / 2.0;
+    for (int row = r.minRow; row <= r.maxRow; ++row)
+      for (int col = r.minCol; col <= r.maxCol; ++col)
+        if (world.inside(col, row)) f(col, row, std::hypot(col - cc, row - cr));
+    return;
+  }
+  const double cx = (r.minXCm + r.maxXCm) / 2.0, cy = (r.minYCm + r.maxYCm) / 2.0;
+  for (int row = 0; row < world.height(); ++row) {
+    for (int col = 0; col < world.width(); ++col) {
+      const sim::Vec2 p = grid->toPlane(sim::Vec2(col, row));
+      if (r.containsPoint(p.x(), p.y())) f(col, row, std::hypot(p.x() - cx, p.y() - cy) / grid->cellCm);
+    }
+  }
+}
 }  // namespace
 
 HouseInWorld houseInWorld(const HouseMapper& m) {
@@ -67,18 +87,11 @@ PlanCoverage planCoverage(const HouseInWorld& h, const HousePlan& plan, double m
   c.planRooms = static_cast<int>(plan.rooms.size());
   for (const PlanRoom& r : plan.rooms) {
     int reachable = 0, mapped = 0;
-    const bool byPlane = h.grid != nullptr;  // every cell of the world, its centre in the box; else the box's cells
-    for (int row = byPlane ? 0 : r.minRow; row <= (byPlane ? world.height() - 1 : r.maxRow); ++row) {
-      for (int col = byPlane ? 0 : r.minCol; col <= (byPlane ? world.width() - 1 : r.maxCol); ++col) {
-        if (!world.inside(col, row) || obs.reachable[static_cast<size_t>(row * world.width() + col)] == 0) continue;
-        if (byPlane) {
-          const sim::Vec2 p = h.grid->toPlane(sim::Vec2(col, row));
-          if (!r.containsPoint(p.x(), p.y())) continue;
-        }
-        ++reachable;
-        if (beliefAt(h.houseFrame, merged, col, row) == CellState::Free) ++mapped;
-      }
-    }
+    forRoomCells(r, world, h.grid, [&](int col, int row, double) {
+      if (obs.reachable[static_cast<size_t>(row * world.width() + col)] == 0) return;
+      ++reachable;
+      if (beliefAt(h.houseFrame, merged, col, row) == CellState::Free) ++mapped;
+    });
     if (reachable == 0) continue;
     ++c.reachable;
     if (100.0 * mapped >= minPct * reachable) ++c.covered;
@@ -92,7 +105,7 @@ PlanCoverage planCoverageOnGrid(const HouseMapper& m, const HousePlan& plan, dou
   return planCoverage(h, plan, minPct);
 }
 
-void labelRoomsFromPlan(HouseMapper& m, const HousePlan& plan) {
+void labelRoomsFromPlan(HouseMapper& m, const HousePlan& plan, bool onRobotGrid) {
   auto& rooms = m.network().rooms();
   std::map<std::string, int> used;
   for (const PlanRoom& r : plan.rooms) {
@@ -100,25 +113,21 @@ void labelRoomsFromPlan(HouseMapper& m, const HousePlan& plan) {
     for (const char ch : r.category) base += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
     if (base.empty() || !std::isalpha(static_cast<unsigned char>(base[0]))) base = "room_" + base;
     // The free mapped cell nearest the box's centre, inside the box.
-    const double cc = (r.minCol + r.maxCol) / 2.0, cr = (r.minRow + r.maxRow) / 2.0;
     int bestRoom = -1;
     Cell bestCell{};
     double bestD = 0.0;
-    for (int row = r.minRow; row <= r.maxRow; ++row) {
-      for (int col = r.minCol; col <= r.maxCol; ++col) {
-        const Cell h = m.houseFrame().toExplorer(col, row);
-        const double d = std::hypot(col - cc, row - cr);
-        if (bestRoom >= 0 && d >= bestD) continue;
-        for (size_t k = 0; k < rooms.size(); ++k) {
-          const Cell local = rooms[k].toHouse.inverse().apply(h);
-          if (!rooms[k].map.isFree(local)) continue;
-          bestRoom = static_cast<int>(k);
-          bestCell = local;
-          bestD = d;
-          break;
-        }
+    forRoomCells(r, m.world(), onRobotGrid ? &m.robot().frame() : nullptr, [&](int col, int row, double d) {
+      if (bestRoom >= 0 && d >= bestD) return;
+      const Cell h = m.houseFrame().toExplorer(col, row);
+      for (size_t k = 0; k < rooms.size(); ++k) {
+        const Cell local = rooms[k].toHouse.inverse().apply(h);
+        if (!rooms[k].map.isFree(local)) continue;
+        bestRoom = static_cast<int>(k);
+        bestCell = local;
+        bestD = d;
+        break;
       }
-    }
+    });
     if (bestRoom < 0) continue;
     const int n = ++used[base];
     const std::string name = n == 1 ? base : base + "_" + std::to_string(n);

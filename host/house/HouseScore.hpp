@@ -63,7 +63,9 @@ bool movePlanOntoGrid(HousePlan& plan, const sim::World& truth, const sim::GridF
 
 // Names the mapped rooms after the plan: each plan room box whose centre (or nearest free cell
 // to it) is a free cell of a room map gets a label there, the category in lower case ("kitchen",
-// "kitchen_2" for a second one). The user's naming of rooms, in the simulator.
-void labelRoomsFromPlan(HouseMapper& mapper, const HousePlan& plan);
+// "kitchen_2" for a second one). The user's naming of rooms, in the simulator. onRobotGrid: the
+// rooms are placed by their plane boxes on the grid the run ended with (as planCoverageOnGrid), else
+// their boxes are the world's cells (movePlanOntoGrid).
+void labelRoomsFromPlan(HouseMapper& mapper, const HousePlan& plan, bool onRobotGrid = false);
 
 }  // namespace nxtmap::house

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "host/house/HouseExpoPlan.hpp"
@@ -125,6 +126,21 @@ TEST(HouseMapper, TheBricksCoverageOfAPlanCountsThePlanRoomsOnItsOwnGrid) {
     const PlanCoverage after = planCoverageOnGrid(m, *plan.plan);
     EXPECT_EQ(after.reachable, 2) << jitter;
     EXPECT_EQ(after.covered, 2) << jitter;
+    // The rooms are named the same way: each label on a free cell of a mapped room, inside its plan box.
+    labelRoomsFromPlan(m, *plan.plan, true);
+    std::map<std::string, Cell> labels;  // name -> house cell
+    for (const network::RoomNode& n : m.network().rooms())
+      for (const auto& [name, cell] : n.labels) labels[name] = n.toHouse.apply(cell);
+    ASSERT_EQ(labels.size(), 2u) << jitter;
+    for (const PlanRoom& r : plan.plan->rooms) {
+      std::string name = r.category;
+      for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+      ASSERT_EQ(labels.count(name), 1u) << name;
+      int col = 0, row = 0;
+      m.houseFrame().toWorld(labels[name], col, row);
+      const sim::Vec2 p = m.robot().frame().toPlane(sim::Vec2(col, row));
+      EXPECT_TRUE(r.containsPoint(p.x(), p.y())) << name << " at " << col << "," << row;
+    }
   }
 }
 
