@@ -18,21 +18,8 @@ const std::vector<std::string> kRoom = {
     "###..#####", "#........#", "#........#", "#.........", "#........#", "##########",
 };
 
-RoomExit exitNorth() {
-  RoomExit e;
-  e.door = Doorway{true, Cell{3, 5}, 2, 1};
-  e.inside = Cell{3, 4};
-  e.outward = Dir::North;
-  return e;
-}
-
-RoomExit exitEast() {
-  RoomExit e;
-  e.door = Doorway{false, Cell{9, 2}, 1, 1};
-  e.inside = Cell{8, 2};
-  e.outward = Dir::East;
-  return e;
-}
+RoomExit exitNorth() { return RoomExit{Doorway{true, Cell{3, 5}, 2, 1}, Cell{3, 4}, Dir::North}; }
+RoomExit exitEast() { return RoomExit{Doorway{false, Cell{9, 2}, 1, 1}, Cell{8, 2}, Dir::East}; }
 
 // Drives the planner with a brick that maps the room, is blocked on every travel where it stands and whose
 // standing scans say nothing; `arriveOnTry` (0: never) lets the travel of that number (1 = the first) arrive,
