@@ -71,10 +71,16 @@ DriveEvent carryOutOnRobot(sim::SimRobot& robot, const DriveAction& a, const Ran
       while (!filter.done()) filter.add(static_cast<uint8_t>(robot.ping(static_cast<int>(a.sensor), othersFiring)));
       return DriveEvent::range(a.sensor, filter.result());
     }
-    case DriveAction::Kind::Rotate:
-      // A stall is heard as the encoders' count of the part carried out (the brick's drive layer does the same).
-      if (robot.rotate(a.value * (180.0 / 3141.592653589793))) return DriveEvent::rotated();
+    case DriveAction::Kind::Rotate: {
+      // Heard as the brick's drive layer reports it: the encoders' whole counts (a turn of 87 mrad is 10 motor
+      // degrees, 87.3 mrad; the stalled part only when stalled). Wheels without encoders: as told.
+      const bool done = robot.rotate(a.value * (180.0 / 3141.592653589793));
+      if (robot.wheels().noise().encoderDeg > 0.0)
+        return DriveEvent::rotatedBy(
+            static_cast<int32_t>(std::lround(robot.lastSpinCountedDeg() * 3141.592653589793 / 180.0)));
+      if (done) return DriveEvent::rotated();
       return DriveEvent::rotatedBy(static_cast<int32_t>(std::lround(a.value * robot.lastSpinShare())));
+    }
     case DriveAction::Kind::Drive: return DriveEvent::driven(!robot.drive(a.value / 10.0));
     case DriveAction::Kind::Think: return DriveEvent::thought();
     case DriveAction::Kind::Done: break;

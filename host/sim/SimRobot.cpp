@@ -127,6 +127,7 @@ bool SimRobot::spin(const WheelStep& step) {
   const double deg = step.headingChangeDeg;
   clockMs_ += std::fabs(deg) / kSpinDegPerS * 1000.0;
   lastSpinShare_ = 1.0;
+  lastSpinCountedDeg_ = step.countedDeg;
   if (robot_.footprint(x_, y_, heading_).empty()) {  // a point turns freely
     // (the wheels' part first, then the noise: the published runs' arithmetic, bit for bit)
     setHeading(heading_ + step.headingWheelsDeg + step.headingNoiseDeg);
@@ -138,6 +139,7 @@ bool SimRobot::spin(const WheelStep& step) {
     const double h = heading_ + deg * i / checks;
     if (!fits(x_, y_, h)) {  // the body meets an obstacle: the wheels stall part way
       lastSpinShare_ = static_cast<double>(i - 1) / checks;
+      lastSpinCountedDeg_ = step.countedDeg * lastSpinShare_;
       setHeading(reached);
       return false;
     }

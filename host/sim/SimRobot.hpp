@@ -57,6 +57,9 @@ class SimRobot {
   // How much of the last rotate()/turn() the wheels carried out before a stall, 0..1 (1: all of it): the
   // share of its counts the encoders measured.
   double lastSpinShare() const { return lastSpinShare_; }
+  // The last rotate()/turn() as the encoders counted it (deg, + clockwise; WheelStep::countedDeg), the stalled
+  // part only when it stalled.
+  double lastSpinCountedDeg() const { return lastSpinCountedDeg_; }
   // Drives straight by cm (+ forward, - backward) through the wheel model. If the body would meet an
   // obstacle on the way, the wheels stall and the robot stays where it started: returns false.
   bool drive(double cm);
@@ -96,6 +99,7 @@ class SimRobot {
   double heading_;
   double clockMs_ = 0.0;        // simulated time: pings and motion advance it
   double lastSpinShare_ = 1.0;  // see lastSpinShare()
+  double lastSpinCountedDeg_ = 0.0;  // see lastSpinCountedDeg()
   uint64_t rawPings_ = 0;
 };
 

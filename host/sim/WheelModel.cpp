@@ -85,6 +85,9 @@ WheelStep WheelModel::turnBy(double deg, double noiseSigma, std::mt19937_64& rng
   s.headingWheelsDeg = deg * ((left + right) / 2.0) / trackRatio_;
   s.headingNoiseDeg = gaussian(noiseSigma, rng);
   s.headingChangeDeg = s.headingWheelsDeg + s.headingNoiseDeg;
+  const double countedMotorDeg =
+      noise_.encoderDeg > 0.0 ? std::round(motorDeg / noise_.encoderDeg) * noise_.encoderDeg : motorDeg;
+  s.countedDeg = countedMotorDeg * cmPerDeg_ / (trackCm_ / 2.0) * 180.0 / kPi;
   return s;
 }
 

@@ -25,6 +25,9 @@ struct WheelStep {
   double headingChangeDeg = 0.0;
   double headingWheelsDeg = 0.0;  // what the wheels' arcs give (commanded turn, Eb, Ed, backlash, counts)
   double headingNoiseDeg = 0.0;   // the random turn error (turnSigmaDeg)
+  // A spin's turn as the encoders count it: whole counts (WheelNoise::encoderDeg) of each motor over the nominal
+  // geometry, what a brick's drive layer reports (deg, + clockwise); the commanded turn exactly without encoders.
+  double countedDeg = 0.0;
 };
 
 class WheelModel {
