@@ -2,6 +2,7 @@
 
 #include "common/check/Check.hpp"
 #include "common/math/IntAbs.hpp"
+#include "common/math/IntRound.hpp"
 #include "common/math/IntSqrt.hpp"
 
 namespace nxtmap {
@@ -9,7 +10,6 @@ namespace {
 
 constexpr int32_t floorDiv(int32_t a, int32_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 // Nearest integer to a / b (b > 0), halves away from zero.
-constexpr int32_t roundDiv(int32_t a, int32_t b) { return a >= 0 ? (a + b / 2) / b : -((-a + b / 2) / b); }
 constexpr uint8_t saturate(int32_t v) { return static_cast<uint8_t>(v > 255 ? 255 : (v < 0 ? 0 : v)); }
 
 // Min-convolution of n costs `stride` apart with the kernel (c2, c1, 0, c1, c2): the log-domain blur.
@@ -138,11 +138,12 @@ void GridLocaliser::drove(int32_t mm, Dir heading) {
   fold();
   const Dir right = rotate(heading, 1);
   for (int h = 0; h < kHeadings; ++h) {
-    const int32_t side = roundDiv(mm * (h - kHeadingRadius) * params_.headingStepMrad, 1000);
+    const int32_t side = static_cast<int32_t>(divRound(mm * (h - kHeadingRadius) * params_.headingStepMrad, 1000));
     int32_t* carry = carryMm_[h];
     carry[0] += dx(heading) * mm + dx(right) * side;
     carry[1] += dy(heading) * mm + dy(right) * side;
-    const int32_t sx = roundDiv(carry[0], params_.binMm), sy = roundDiv(carry[1], params_.binMm);
+    const int32_t sx = static_cast<int32_t>(divRound(carry[0], params_.binMm)),
+                  sy = static_cast<int32_t>(divRound(carry[1], params_.binMm));
     carry[0] -= sx * params_.binMm;
     carry[1] -= sy * params_.binMm;
     shiftLayer(h, sx, sy);
@@ -158,7 +159,7 @@ void GridLocaliser::drove(int32_t mm, Dir heading) {
 void GridLocaliser::rotated(int32_t mrad, int quarters) {
   fold();
   carryMrad_ += mrad - quarters * kQuarterMrad;
-  const int32_t sh = roundDiv(carryMrad_, params_.headingStepMrad);
+  const int32_t sh = static_cast<int32_t>(divRound(carryMrad_, params_.headingStepMrad));
   carryMrad_ -= sh * params_.headingStepMrad;
   shiftHeadings(sh);
   int64_t sigma = int64_t{params_.turnMradPerQuarter} * abs32(mrad) / kQuarterMrad;

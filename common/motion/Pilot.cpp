@@ -347,7 +347,7 @@ DriveAction Pilot::stepCorrected(const DriveEvent& e) {
 #ifndef NXTMAP_NO_START_SQUARING
       if (config_.squareSweepMrad > 0) {
         phase_ = Phase::Square;
-        return config_.calibrateTurns > 0 ? calibration_.begin() : squaring_.begin(approachesLeft());
+        return config_.calibrateTurns > 0 ? calibration_.begin(approachesLeft()) : squaring_.begin(approachesLeft());
       }
 #endif
       return startExplorer(config_.startHeadingVarianceMrad2);

@@ -1,5 +1,6 @@
 // The pilot's start (sweep to the walls, turn calibration) and the turn correction around every step.
 #include "common/check/Check.hpp"
+#include "common/math/IntRound.hpp"
 #include "common/motion/Pilot.hpp"
 
 namespace nxtmap {
@@ -117,6 +118,8 @@ DriveAction Pilot::approach(const DriveEvent& e) {
   }
   NXTMAP_CHECK(approachStep_ == 2 && rotated);  // an event that does not answer the action in progress
   phase_ = Phase::Square;
+  // A calibration whose sweep saw no wall measures from here (its first sweep squares, with the approaches left).
+  if (config_.calibrateTurns > 0 && !calibration_.found()) return calibration_.begin(approachesLeft());
   return squaring_.begin(approachesLeft());
 }
 #endif
@@ -141,10 +144,10 @@ DriveAction Pilot::step(const DriveEvent& e) {
   const int64_t scale = 1000000 + turnErrorPpm_;
   DriveEvent heard = e;
   if (e.kind == DriveEvent::Kind::Rotated && e.measured)
-    heard.achieved = static_cast<int32_t>(static_cast<int64_t>(e.achieved) * scale / 1000000);
+    heard.achieved = static_cast<int32_t>(divRound(static_cast<int64_t>(e.achieved) * scale, 1000000));
   DriveAction a = stepCorrected(heard);
   if (a.kind == DriveAction::Kind::Rotate)
-    a.value = static_cast<int32_t>(static_cast<int64_t>(a.value) * 1000000 / scale);
+    a.value = static_cast<int32_t>(divRound(static_cast<int64_t>(a.value) * 1000000, scale));
   return a;
 #endif
 }

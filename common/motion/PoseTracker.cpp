@@ -1,16 +1,12 @@
 #include "common/motion/PoseTracker.hpp"
 
-#include "common/check/CodeSize.hpp"
 #include "common/math/IntAbs.hpp"
+#include "common/math/IntRound.hpp"
 
 namespace nxtmap {
 namespace {
 constexpr int64_t kQuarterMrad = 1571;     // pi/2 in mrad, rounded (variance scaling only)
 constexpr int64_t kQuarterUrad = 1570796;  // pi/2 in microradians
-// Rounded division (ties away from zero); d > 0.
-NXTMAP_OUT_OF_LINE constexpr int64_t divRound(int64_t n, int64_t d) {
-  return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d);
-}
 }  // namespace
 
 PoseTracker::PoseTracker(const PoseNoise& noise, const WheelCalibration& wheels) : noise_(noise) {

@@ -8,14 +8,14 @@ TurnCalibration::TurnCalibration(StartSquaring& squaring, uint8_t turns) : squar
   NXTMAP_CHECK(turns <= 8);  // 0: not used (begin() needs at least one)
 }
 
-DriveAction TurnCalibration::begin() {
+DriveAction TurnCalibration::begin(int approachesLeft) {
   NXTMAP_CHECK(turns_ >= 1);
   found_ = false;
   errorPpm_ = 0;
   readings_ = samples_ = turnedMrad_ = 0;
   phase_ = Phase::FirstSweep;
   sweeping_ = true;
-  return squaring_.begin();
+  return squaring_.begin(approachesLeft);
 }
 
 DriveAction TurnCalibration::afterFirstSweep() {
@@ -54,7 +54,7 @@ DriveAction TurnCalibration::step(const DriveEvent& e) {
       if (--quartersLeft_ > 0) return DriveAction::rotate(-kQuarterMrad);
       phase_ = Phase::SecondSweep;
       sweeping_ = true;
-      return squaring_.begin();
+      return squaring_.begin(0);  // the walls the first sweep saw are there: the widest dip alone rather than none
     case Phase::SecondSweep: {
       const DriveAction a = squaring_.step(e);
       if (!squaring_.finished()) return a;

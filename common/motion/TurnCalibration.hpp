@@ -23,7 +23,8 @@ class TurnCalibration {
 
   TurnCalibration(StartSquaring& squaring, uint8_t turns);
 
-  DriveAction begin();
+  // approachesLeft: the first sweep's (StartSquaring::begin); the second sweep's is always -1.
+  DriveAction begin(int approachesLeft = -1);
   // The answer to the previous action; returns the next. DriveAction::done() once calibrated.
   DriveAction step(const DriveEvent& e);
   bool finished() const { return phase_ == Phase::Done; }

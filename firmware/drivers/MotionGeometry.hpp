@@ -1,6 +1,8 @@
 #pragma once
 #include <cstdint>
 
+#include "common/math/IntRound.hpp"
+
 namespace nxtmap::fw {
 
 // The drive's dimensions, in millimetres, and the encoder resolution. Converts distances, cells and
@@ -38,9 +40,7 @@ struct MotionGeometry {
   }
 
  private:
-  static constexpr int32_t roundDiv(int64_t num, int64_t den) {
-    return static_cast<int32_t>(num >= 0 ? (num + den / 2) / den : (num - den / 2) / den);
-  }
+  static constexpr int32_t roundDiv(int64_t num, int64_t den) { return static_cast<int32_t>(divRound(num, den)); }
 };
 
 }  // namespace nxtmap::fw

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
@@ -86,6 +87,7 @@ struct RoomRun {
   double meanEstimateErrorMm =
       0;  // |true position - believed cell centre - tracker offset|, at the explorer's readings
   double meanHeadingErrorMrad = 0;  // |true heading - believed axis - tracker heading|, at the same readings
+  double lateEstimateErrorMm = 0;   // meanEstimateErrorMm over the run's second half of readings
   int smallRotations = 0;           // rotations other than the explorer's quarter turns
   int readings = 0;
   int wrongCells = 0;  // cells of the finished map in the other state than the room's
@@ -104,6 +106,7 @@ inline RoomRun runInRoom(PilotConfig config, double west, double east, double so
   const auto rangeMm = [&](double a) { return rangeToWalls(west, east, south, north, x, y, a); };
   RoomRun out;
   double sum = 0, headingSum = 0;
+  std::vector<double> errors;  // mm, at each reading
   int drives = 0;
   DriveAction a = rig.pilot.step(DriveEvent::start());
   for (int i = 0; i < 400000 && !rig.pilot.finished(); ++i) {
@@ -113,6 +116,7 @@ inline RoomRun runInRoom(PilotConfig config, double west, double east, double so
         const Cell c = rig.explorer.pose().cell;
         const double bx = c.x * cell + rig.pilot.tracker().xMm(), by = c.y * cell + rig.pilot.tracker().yMm();
         sum += std::hypot(x - bx, y - by);
+        errors.push_back(std::hypot(x - bx, y - by));
         const double axis = static_cast<int>(rig.explorer.pose().heading) * 1.5707963;
         headingSum += std::fabs(std::remainder(h - axis, 6.2831853) * 1000.0 - rig.pilot.tracker().thetaMrad());
         ++out.readings;
@@ -152,6 +156,9 @@ inline RoomRun runInRoom(PilotConfig config, double west, double east, double so
   EXPECT_TRUE(rig.pilot.finished());
   out.meanEstimateErrorMm = out.readings == 0 ? 0.0 : sum / out.readings;
   out.meanHeadingErrorMrad = out.readings == 0 ? 0.0 : headingSum / out.readings;
+  const size_t half = errors.size() / 2;
+  for (size_t i = half; i < errors.size(); ++i)
+    out.lateEstimateErrorMm += errors[i] / static_cast<double>(errors.size() - half);
   for (int16_t cy = static_cast<int16_t>(south / cell - 2); cy <= north / cell + 2; ++cy) {
     for (int16_t cx = static_cast<int16_t>(west / cell - 2); cx <= east / cell + 2; ++cx) {
       const CellState st = rig.map.at(Cell{cx, cy});

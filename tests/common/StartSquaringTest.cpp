@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "common/motion/StartSquaring.hpp"
+#include "common/motion/TurnCalibration.hpp"
 #include "common/sensing/WallDirection.hpp"
 
 namespace nxtmap {
@@ -222,6 +223,36 @@ TEST(StartSquaring, ASweepHearsNothingOnlyWhenNoReadingHadAnEcho) {
     EXPECT_EQ(heardNothingWhenTheBackReads(row.status, row.cm), row.heardNothing)
         << static_cast<int>(row.status) << " at " << row.cm << " cm";
   }
+}
+
+// A turn calibration where only the widest dip names the walls (the two walls 6 degrees apart, nothing 70 cm away
+// to approach): its first sweep is the pilot's last (no approach left) and takes that dip; the second sweep, after
+// the whole turns, stands where the first did and takes it too (begun as a sweep that never takes it, it found no
+// wall and the turns went unmeasured). The wheels turn 1 % too far and the encoders count what was told.
+TEST(TurnCalibration, TheSecondSweepTakesTheWidestDipWhereTheFirstDid) {
+  constexpr int32_t kErrorPpm = 10000;
+  TwoWalls room;
+  room.rightCm = 40;
+  StartSquaring squaring;
+  TurnCalibration calibration(squaring, 4);
+  int64_t toldMrad = 0;  // every turn told, summed; the robot has truly turned (1 + e) times that
+  DriveAction a = calibration.begin(0);
+  for (int i = 0; i < 2000 && !calibration.finished(); ++i) {
+    if (a.kind == DriveAction::Kind::Rotate) {
+      toldMrad += a.value;
+      a = calibration.step(DriveEvent::rotatedBy(a.value));
+      continue;
+    }
+    ASSERT_EQ(a.kind, DriveAction::Kind::Read);
+    RangeReading r;
+    r.cm = room.read(a.sensor, static_cast<int32_t>(toldMrad * (1000000 + kErrorPpm) / 1000000));
+    r.status = r.cm > 0 ? RangeStatus::Good : RangeStatus::NoEcho;
+    r.samples = 1;
+    a = calibration.step(DriveEvent::range(a.sensor, r));
+  }
+  ASSERT_TRUE(calibration.finished());
+  ASSERT_TRUE(calibration.found());
+  EXPECT_NEAR(calibration.errorPpm(), kErrorPpm, 2000);  // measured 1.11 %: the two sweeps place the dip 27 mrad apart
 }
 
 }  // namespace
