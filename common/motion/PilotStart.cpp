@@ -1,6 +1,5 @@
 // The pilot's start (sweep to the walls, turn calibration) and the turn correction around every step.
 #include "common/check/Check.hpp"
-#include "common/math/IntRound.hpp"
 #include "common/motion/Pilot.hpp"
 
 namespace nxtmap {
@@ -144,10 +143,10 @@ DriveAction Pilot::step(const DriveEvent& e) {
   const int64_t scale = 1000000 + turnErrorPpm_;
   DriveEvent heard = e;
   if (e.kind == DriveEvent::Kind::Rotated && e.measured)
-    heard.achieved = static_cast<int32_t>(divRound(static_cast<int64_t>(e.achieved) * scale, 1000000));
+    heard.achieved = static_cast<int32_t>(static_cast<int64_t>(e.achieved) * scale / 1000000);
   DriveAction a = stepCorrected(heard);
   if (a.kind == DriveAction::Kind::Rotate)
-    a.value = static_cast<int32_t>(divRound(static_cast<int64_t>(a.value) * 1000000, scale));
+    a.value = static_cast<int32_t>(static_cast<int64_t>(a.value) * 1000000 / scale);
   return a;
 #endif
 }

