@@ -49,6 +49,7 @@ std::string HouseExploration::send(link::Session& s, const house::HouseOrder& o)
     case Kind::ExploreFirstRoom:
       s.explore(protocol::ExploreMsg{protocol::ExploreStrategy::Frontier, true});
       wait_ = Wait::Room;
+      stood_.clear();
       return "the brick maps the room it stands in\n";
     case Kind::Travel: sendTravel(s, o); return "";
     case Kind::Cross: sendCross(s, o); return "";
@@ -93,6 +94,7 @@ void HouseExploration::sendCross(link::Session& s, const house::HouseOrder& o) {
   enterSeq_ = s.enterRoom(m);
   statusesAtAck_ = 0;
   wait_ = Wait::Cross;
+  stood_.clear();
   crossSinceS_ = nowS_;
 }
 
@@ -107,6 +109,7 @@ house::HouseReport HouseExploration::roomReport(link::Session& s) const {
   for (uint8_t i = 0; i < m.count; ++i)
     r.exits.push_back(RoomExit{protocol::doorwayOf(m.exits[i].door), m.exits[i].inside, m.exits[i].outward});
   if (s.room() && s.room()->roomId == room_) r.crossedAt = Pose{s.room()->origin, s.room()->heading};
+  r.stood = stood_;
   const protocol::ReadingsMsg& k = *s.readings();
   for (uint8_t i = 0; i < k.startCount; ++i) r.startReadings.push_back({k.start[i].dir, k.start[i].reading});
   return r;
@@ -214,6 +217,7 @@ std::string HouseExploration::poll(link::Session& s, double nowS) {
     stopped_ = why;
     return "house stopped: " + why + "; " + progress() + "\n";
   }
+  noteWhereItStands(s);
   const std::optional<house::HouseReport> r = arrived(s);
   if (!r) return "";
   std::string out;
@@ -224,6 +228,13 @@ std::string HouseExploration::poll(link::Session& s, double nowS) {
     out += o.str();
   }
   return out + send(s, planner_->on(*r));
+}
+
+// While the brick maps room_, the cells its statuses put it in (in that room's frame), each once in a row.
+void HouseExploration::noteWhereItStands(const link::Session& s) {
+  const auto& st = s.status();
+  if (wait_ != Wait::Room || !st || st->roomId != room_ || st->mode != protocol::BrickMode::Exploring) return;
+  if (stood_.empty() || !(stood_.back() == st->pose.cell)) stood_.push_back(st->pose.cell);
 }
 
 int HouseExploration::roomOfRobot() const {

@@ -12,6 +12,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "host/house/HousePlanner.hpp"
 #include "host/link/Session.hpp"
@@ -39,6 +40,9 @@ class HouseExploration {
   int roomOfRobot() const;
   std::string progress() const;
   int roomsMapped() const { return roomsMapped_; }
+  // The cells the brick's statuses put it in while it maps the room it is mapping now (that room's frame, each
+  // once in a row): with the room's map, they tell the planner which part of the map is the room.
+  const std::vector<Cell>& stoodInRoom() const { return stood_; }
   // How the brick's sensors read (cell size, trusted range, mount), as of the last start().
   const RangeGeometry& geometry() const { return geometry_; }
 
@@ -57,6 +61,7 @@ class HouseExploration {
   std::optional<house::HouseReport> goalDone(link::Session& s) const;
   std::optional<house::HouseReport> scanDone(link::Session& s) const;
   house::HouseReport roomReport(link::Session& s) const;
+  void noteWhereItStands(const link::Session& s);
 
   RangeGeometry geometry_;  // the brick's, from its HelloReply at start()
   std::optional<house::HousePlanner> planner_;
@@ -72,6 +77,7 @@ class HouseExploration {
   uint64_t stillFrom_ = 0;  // statuses received when the brick was first seen still (0: moving)
   double stillSinceS_ = 0;
   int roomsMapped_ = 0;
+  std::vector<Cell> stood_;  // the cells the brick's statuses put it in while it maps room_ (HouseReport::stood)
 };
 
 }  // namespace nxtmap::console

@@ -97,6 +97,7 @@ int HouseMapper::run() {
 HouseReport HouseMapper::carryOut(const HouseOrder& o) {
   switch (o.kind) {
     case HouseOrder::Kind::ExploreFirstRoom:
+      stood_.clear();
       stack_.map().clear();
       drive(session_.exploreRoom(config_.strategy, Pose{}, nullptr));
       break;
@@ -106,6 +107,7 @@ HouseReport HouseMapper::carryOut(const HouseOrder& o) {
       break;
     case HouseOrder::Kind::Cross:
       session_.setPose(o.at);
+      stood_.clear();
       drive(session_.cross(o.exit, config_.strategy));
       break;
     case HouseOrder::Kind::Scan: drive(session_.scan()); break;
@@ -132,9 +134,17 @@ void HouseMapper::drive(DriveAction a) {
     const RoomSession::Phase phase = session_.phase();  // the one the action belongs to
     const DriveEvent answer = mapping::carryOutOnRobot(robot_, a, explorerConfig_.geometry);
     a = session_.step(answer);
+    noteWhereItStands();
     if (!squared_ && stack_.pilot() != nullptr && stack_.pilot()->explorerStarted()) layTruthSquare();
     if (trace_ != nullptr) trace_->record(traceRow(phase, done, answer));
   }
+}
+
+// While the session maps a room, the cells it believes the robot stands in, each once in a row.
+void HouseMapper::noteWhereItStands() {
+  if (session_.phase() != RoomSession::Phase::Exploring || stack_.explorer() == nullptr) return;
+  const Cell c = session_.pose().cell;
+  if (stood_.empty() || !(stood_.back() == c)) stood_.push_back(c);
 }
 
 HouseTraceRow HouseMapper::traceRow(RoomSession::Phase phase, const DriveAction& done, const DriveEvent& answer) const {
@@ -210,6 +220,7 @@ HouseReport HouseMapper::report(HouseReport::Kind kind) const {
     for (uint8_t i = 0; i < confinement_.exitCount(); ++i) r.exits.push_back(confinement_.exit(i));
     r.startReadings.assign(session_.startReadings(), session_.startReadings() + session_.startReadingCount());
     r.crossedAt = session_.crossedAt();
+    r.stood = stood_;
   }
   if (kind == HouseReport::Kind::Scanned) {
     for (int i = 0; i < kSensorCount; ++i) r.scan[i] = session_.scanReading(static_cast<Sensor>(i));

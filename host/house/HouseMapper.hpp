@@ -106,7 +106,8 @@ class HouseMapper {
   void drive(DriveAction a);               // until the session's command is over
   void load(const network::RoomMap& map);  // the brick's map replaced (as an upload from the PC)
   HouseReport report(HouseReport::Kind kind) const;
-  void logBelief(const char* when) const;  // the believed cell against the simulated robot's (log debug)
+  void logBelief(const char* when) const;
+  void noteWhereItStands();  // the believed cell against the simulated robot's (log debug)
   // For trace_: the action carried out in `phase` of the session and its answer, with the poses as they now stand.
   HouseTraceRow traceRow(RoomSession::Phase phase, const DriveAction& done, const DriveEvent& answer) const;
   // Once the first room's sweep is over: the truth laid on the grid the robot now maps on (SquaredGrid).
@@ -126,6 +127,7 @@ class HouseMapper {
   RoomSession session_;
   HousePlanner planner_;
   HouseTrace* trace_ = nullptr;
+  std::vector<Cell> stood_;  // the room run's believed cells so far (HouseReport::stood)
 };
 
 }  // namespace nxtmap::house

@@ -63,6 +63,7 @@ struct HouseReport {
   std::vector<RoomSession::StartReading> startReadings;
   Pose crossedAt{};
   RangeReading scan[kSensorCount] = {};  // Scanned: Front, Right, Back, Left
+  std::vector<Cell> stood;  // RoomMapped: cells the robot believed it stood in while mapping (room frame, in order)
 };
 
 class HousePlanner {

@@ -38,7 +38,7 @@ void HousePlanner::recordRoom(const HouseReport& r, int fromRoom, const RoomExit
     const std::vector<Cell> cells = cellsOf(e.door);
     doors.insert(doors.end(), cells.begin(), cells.end());
   }
-  const network::RoomMap room = cutToRoom(r.map, doors);
+  const network::RoomMap room = cutToRoom(r.map, doors, r.stood);
   // An open area larger than the maximum becomes several rooms (parts share the room's frame).
   const RoomParts parts = splitRoom(room, interpretMap(r.map, config_.roomLimits, config_.doorways));
   const int first = static_cast<int>(network_.rooms().size());

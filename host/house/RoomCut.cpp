@@ -8,29 +8,48 @@
 
 namespace nxtmap::house {
 
-network::RoomMap cutToRoom(const network::RoomMap& full, const std::vector<Cell>& doors) {
+namespace {
+
+size_t indexIn(const network::RoomMap& m, Cell c) {
+  return static_cast<size_t>((c.y - m.minY()) * m.width() + (c.x - m.minX()));
+}
+
+// 1 for every cell of `full` reached from the seeds through free cells (four-connected) without entering a door.
+// The start cell always counts (the robot stood there), whatever noise later said about it; so does every other
+// cell the robot stood in that the map holds free: a wall mapped from a pose gone astray may cut the start off
+// from the room the robot went on to map.
+std::vector<uint8_t> reachedCells(const network::RoomMap& full, const std::vector<Cell>& doors,
+                                  const std::vector<Cell>& stood) {
   const auto isDoor = [&](Cell c) { return std::find(doors.begin(), doors.end(), c) != doors.end(); };
-  const auto idx = [&](Cell c) {
-    return static_cast<size_t>((c.y - full.minY()) * full.width() + (c.x - full.minX()));
-  };
   std::vector<uint8_t> reached(static_cast<size_t>(full.width()) * static_cast<size_t>(full.height()), 0);
-  // The start cell always counts (the robot stood there), whatever noise later said about it.
+  std::deque<Cell> queue;
+  const auto reach = [&](Cell c) {
+    reached[indexIn(full, c)] = 1;
+    queue.push_back(c);
+  };
   const Cell start{0, 0};
-  if (full.inside(start)) {
-    std::deque<Cell> queue{start};
-    reached[idx(start)] = 1;
-    while (!queue.empty()) {
-      const Cell c = queue.front();
-      queue.pop_front();
-      for (int d = 0; d < 4; ++d) {
-        const Cell n = advance(c, static_cast<Dir>(d));
-        if (!full.isFree(n) || reached[idx(n)] || isDoor(n)) continue;
-        reached[idx(n)] = 1;
-        queue.push_back(n);
-      }
+  if (full.inside(start)) reach(start);
+  for (const Cell c : stood) {
+    if (full.isFree(c) && !isDoor(c) && reached[indexIn(full, c)] == 0) reach(c);
+  }
+  while (!queue.empty()) {
+    const Cell c = queue.front();
+    queue.pop_front();
+    for (int d = 0; d < 4; ++d) {
+      const Cell n = advance(c, static_cast<Dir>(d));
+      if (full.isFree(n) && reached[indexIn(full, n)] == 0 && !isDoor(n)) reach(n);
     }
   }
-  const auto wasReached = [&](Cell c) { return full.inside(c) && reached[idx(c)] != 0; };
+  return reached;
+}
+
+}  // namespace
+
+network::RoomMap cutToRoom(const network::RoomMap& full, const std::vector<Cell>& doors,
+                           const std::vector<Cell>& stood) {
+  const auto isDoor = [&](Cell c) { return std::find(doors.begin(), doors.end(), c) != doors.end(); };
+  const std::vector<uint8_t> reached = reachedCells(full, doors, stood);
+  const auto wasReached = [&](Cell c) { return full.inside(c) && reached[indexIn(full, c)] != 0; };
   network::RoomMap cut(full.minX(), full.minY(), full.width(), full.height());
   for (int y = full.minY(); y <= full.maxY(); ++y) {
     for (int x = full.minX(); x <= full.maxX(); ++x) {

@@ -1,5 +1,6 @@
 // HousePlanner, as reports in and orders out: an exit a travel could not pass is tried once more after the
-// others, from wherever the robot is then, and only a second failure leaves it unreached.
+// others, from wherever the robot is then, and only a second failure leaves it unreached; a room is cut from its
+// run's map by where the robot started and where it stood.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -97,6 +98,27 @@ TEST(HousePlanner, AnExitPassedOnItsSecondTryIsNotCountedUnreached) {
   for (size_t i = 3; i < travels.size(); ++i) EXPECT_EQ(travels[i], exitEast().inside);
   EXPECT_EQ(p.network().rooms().size(), 2u);
   EXPECT_EQ(p.exitsUnreached(), 1);  // east only
+}
+
+TEST(HousePlanner, TheRoomKeptIsWhereTheRobotStartedAndWhereItStood) {
+  RangeGeometry g;
+  g.cellCm = 20;
+  // The start (0,0) in a strip a wall mapped astray cuts off from the room the robot went on to map.
+  const std::vector<std::string> run = {"#########", "#....#..#", "#....#..#", "#....#..#", "#########"};
+  for (const bool withStood : {false, true}) {
+    HousePlanner p(config(), g);
+    (void)p.start();
+    HouseReport mapped;
+    mapped.kind = HouseReport::Kind::RoomMapped;
+    mapped.map = drawMap(run, -7, -2);
+    mapped.pose = Pose{Cell{-5, 0}, Dir::North};
+    if (withStood) mapped.stood = {Cell{0, 0}, Cell{0, 1}, Cell{-3, 0}, Cell{-5, 0}};
+    (void)p.on(mapped);
+    ASSERT_EQ(p.network().rooms().size(), 1u);
+    const network::RoomMap& room = p.network().rooms()[0].map;
+    EXPECT_TRUE(room.isFree(Cell{-1, 0}));
+    EXPECT_EQ(room.isFree(Cell{-5, 0}), withStood) << (withStood ? "with" : "without") << " the cells stood in";
+  }
 }
 
 }  // namespace
