@@ -21,6 +21,7 @@ struct BrickConfig {
   int16_t minCm = 5, maxCm = 100, mountCm = 0;
   int16_t blindCm = 0;                                // a near obstacle reads too near (the published model)
   int16_t faceMarginCm = 0;                           // the published raster worlds: faces on cell edges
+  int16_t sureCm = 0;                                 // every echo marks the cell on the axis (published)
   int16_t sonarScalePer10k = 10000, sonarBiasMm = 0;  // readings as they come, as the published robot
   bool turnNeedsRoom = false;                         // a point
   int16_t squareSweepMrad = 0;                        // set down square on a cell's centre, as the published runs
@@ -32,6 +33,11 @@ struct BrickConfig {
   // Nearer than this the LEGO sensor returns no echo at all (about 7 cm, docs/nxt-sonar-and-odometry.md): "no
   // echo" does not vouch for a cell reaching into it (RangeGeometry::blindCm).
   int16_t blindCm = 7;
+  // An echo farther than this may come from beside the sensor's axis and marks no cell occupied (it proves the
+  // cells before it free: RangeGeometry::sureCm): where a beam of 10 degrees half-angle (the narrow end of the
+  // 10-20 judged for the LEGO sensor, docs/nxt-sonar-and-odometry.md) spreads past half a cell each side:
+  // 10 cm / tan 10 deg - 6 cm. The simulator derives it from its sonar's cone: 50 cm under `nxt` too.
+  int16_t sureCm = 50;
   // Walls stand anywhere, not on the cells' edges: an echo marks the cell holding the face brought 3 cm nearer
   // (the sensor's per-pose error and whole-cm reading) and the pilot learns where faces lie (RangeGeometry).
   int16_t faceMarginCm = 3;
@@ -54,6 +60,7 @@ struct BrickConfig {
     c.geometry.maxCm = maxCm;
     c.geometry.mountCm = mountCm;
     c.geometry.blindCm = blindCm;
+    c.geometry.sureCm = sureCm;
     c.geometry.faceMarginCm = faceMarginCm;
     c.geometry.scalePer10k = sonarScalePer10k;
     c.geometry.biasMm = sonarBiasMm;
