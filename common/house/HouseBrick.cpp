@@ -133,13 +133,6 @@ void HouseBrick::updateReadings() {
     for (int i = 0; i < kSensorCount; ++i) m.scan[i] = session_.scanReading(static_cast<Sensor>(i));
     scanId_ = 0;
   }
-  m.roomId = roomId_;
-  m.startDone = exits_.end != ExplorerEnd::Running;
-  m.startCount = session_.startReadingCount();
-  for (uint8_t i = 0; i < m.startCount; ++i) {
-    m.start[i].dir = session_.startReadings()[i].dir;
-    m.start[i].reading = session_.startReadings()[i].reading;
-  }
 }
 
 bool HouseBrick::takeMapRestart() {

@@ -2,8 +2,7 @@
 // machine and the stand-in brick: a confined Explore (map the room the robot stands in), GoTo (drive
 // to a cell of the map held), EnterRoom (cross a doorway into the next room and map it) and Scan
 // (read the four sensors standing), each run by the RoomSession, and what the brick reports of them
-// (room ids, the new room's frame, the goal's progress, the room's exits, the last scan and the
-// room's start readings). Events in, actions out; the caller carries the actions out.
+// (room ids, the new room's frame, the goal's progress, the room's exits, the last scan). Events in, actions out; the caller carries the actions out.
 #pragma once
 #include <cstdint>
 
@@ -46,7 +45,7 @@ class HouseBrick {
   void over();            // the command is over: the goal's end, or the room's exits
   void resetExits();      // a new room: no exits yet, running
   void updateExits();     // the room is mapped: its exits and how its run ended
-  void updateReadings();  // after every start and step: the scan (when over) and the start readings
+  void updateReadings();  // after every start and step: the scan, when over
 
   ExplorerStack& stack_;
   RoomConfinement& confinement_;
@@ -61,6 +60,5 @@ class HouseBrick {
   uint16_t scanId_ = 0;  // the Scan command running (0: none)
   protocol::ReadingsMsg readings_{};
 };
-static_assert(protocol::kMaxStartReadings == RoomSession::kMaxStartReadings, "every start reading goes on the wire");
 
 }  // namespace nxtmap

@@ -41,8 +41,6 @@ void RoomSession::setPose(const Pose& p) {
 DriveAction RoomSession::exploreRoom(Strategy strategy, const Pose& at, const Doorway* entrance) {
   confinement_.begin(entrance);
   confinement_.hold(stack_.map());
-  moved_ = false;
-  startReadingCount_ = 0;
   ++roomsStarted_;
   phase_ = Phase::Exploring;
   outcome_ = Outcome::None;
@@ -107,17 +105,10 @@ DriveAction RoomSession::step(const DriveEvent& e) {
   return DriveAction::done();
 }
 
-void RoomSession::recordStart(const DriveAction& done, const DriveEvent& e) {
-  moved_ = moved_ || done.kind == DriveAction::Kind::Drive || done.kind == DriveAction::Kind::Rotate;
-  if (moved_ || e.kind != DriveEvent::Kind::Range || startReadingCount_ == kMaxStartReadings) return;
-  startReadings_[startReadingCount_++] = StartReading{sensorDir(pose().heading, e.sensor), e.reading};
-}
-
 DriveAction RoomSession::stepExploring(const DriveEvent& event) {
   MapLayers& map = stack_.map();
   DriveEvent e = event;
   for (;;) {
-    recordStart(last_, e);
     last_ = stack_.step(e);
     confinement_.hold(map);
     if (stack_.finished()) break;

@@ -25,14 +25,6 @@ class RoomSession {
  public:
   enum class Phase : uint8_t { Idle, Exploring, Travelling, Crossing, Levelling, Scanning };
   enum class Outcome : uint8_t { None, RoomMapped, Arrived, NotArrived, CrossBlocked, Scanned };
-  // A reading taken where a room's run started, before the robot first drove or turned: the only
-  // ones from a pose known exactly. `dir` in the room's frame.
-  struct StartReading {
-    Dir dir = Dir::North;
-    RangeReading reading;
-  };
-  static constexpr uint8_t kMaxStartReadings = 8;
-
   // `pilot`: how every run's pilot keeps the robot on the grid (its start heading variance is the
   // session's own). The stack and the confinement are the caller's and outlive the session.
   RoomSession(ExplorerStack& stack, RoomConfinement& confinement, const PilotConfig& pilot);
@@ -65,8 +57,6 @@ class RoomSession {
   void setPose(const Pose& p);
   // After scan(): the reading of sensor s.
   const RangeReading& scanReading(Sensor s) const { return scan_[static_cast<int>(s)]; }
-  const StartReading* startReadings() const { return startReadings_; }
-  uint8_t startReadingCount() const { return startReadingCount_; }
   // The last room's and the travels' counters, summed since construction.
   const Counters& exploreCounters() const { return explore_; }
   const Counters& travelCounters() const { return travel_; }
@@ -84,7 +74,6 @@ class RoomSession {
   // The run is over: level the robot (an action) or end the command at once (Done).
   DriveAction endRun(Outcome outcome);
   DriveAction finishCommand();
-  void recordStart(const DriveAction& done, const DriveEvent& e);
 
   ExplorerStack& stack_;
   RoomConfinement& confinement_;
@@ -102,11 +91,8 @@ class RoomSession {
   int16_t crossLeft_ = 0;
   Strategy nextStrategy_ = Strategy::Frontier;
   uint16_t roomsStarted_ = 0;
-  bool moved_ = false;
   RangeReading scan_[kSensorCount] = {};
   uint8_t scanNext_ = 0;
-  StartReading startReadings_[kMaxStartReadings] = {};
-  uint8_t startReadingCount_ = 0;
   Counters explore_{}, travel_{};
   uint32_t travelsNotArrived_ = 0;
 };

@@ -33,7 +33,7 @@ struct BrickReport {
   // Mapping a house: the exits of the room being mapped (nullptr: not mapping a house). Its `end`
   // goes out as Running until the PC holds every cell of the room's map (see BrickLink::transmit).
   const RoomExitsMsg* exits = nullptr;
-  // Mapping a house: the last standing scan and the room's start readings (nullptr: none), sent
+  // Mapping a house: the last standing scan (nullptr: none), sent
   // every status period after the exits.
   const ReadingsMsg* readings = nullptr;
 };

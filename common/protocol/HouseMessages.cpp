@@ -73,24 +73,12 @@ struct Layout<RangeReading> {
   }
 };
 template <>
-struct Layout<StartReadingMsg> {
-  template <class Io, class M>
-  static bool fields(Io& io, M& m) {
-    return io.dir(m.dir) && io.part(m.reading);
-  }
-};
-template <>
 struct Layout<ReadingsMsg> {
   template <class Io, class M>
   static bool fields(Io& io, M& m) {
     if (!(io.u16(m.scanId) && io.cell(m.scanPose.cell) && io.dir(m.scanPose.heading))) return false;
     for (auto& r : m.scan) {
       if (!io.part(r)) return false;
-    }
-    if (!(io.u16(m.roomId) && io.flag(m.startDone) && io.count(m.startCount, uint8_t{0}, kMaxStartReadings)))
-      return false;
-    for (uint8_t i = 0; i < m.startCount; ++i) {
-      if (!io.part(m.start[i])) return false;
     }
     return true;
   }

@@ -136,27 +136,13 @@ bool decodeNewRoom(const uint8_t* p, size_t n, NewRoomMsg& out);
 // read) in the high nibble.
 constexpr int16_t kMaxReadingCm = 255;
 
-// One start reading (embedded, 3 bytes): the direction in the room's frame, then the reading.
-struct StartReadingMsg {
-  Dir dir = Dir::North;
-  RangeReading reading{};
-};
-constexpr uint8_t kMaxStartReadings = 8;  // as RoomSession::kMaxStartReadings
-
-// Readings (19 + 3 per start reading, at most 43 bytes): what the brick read standing still, sent
-// again and again while it maps a house (an absolute state, like RoomExits).
-//  - The last standing scan: `scanId` of the Scan command it answered (0: none yet), the pose it was
-//    taken at (the brick's current room frame) and its readings Front, Right, Back, Left.
-//  - The start readings of room `roomId` (those taken where its run started, before the robot
-//    first drove or turned), `startDone` once no more can come (the room's run is over).
+// Readings (15 bytes): the last standing scan, sent again and again while the brick maps a house (an
+// absolute state, like RoomExits): `scanId` of the Scan command it answered (0: none yet), the pose it
+// was taken at (the brick's current room frame) and its readings Front, Right, Back, Left.
 struct ReadingsMsg {
   uint16_t scanId = 0;
   Pose scanPose{};
   RangeReading scan[kSensorCount] = {};
-  uint16_t roomId = 0;
-  bool startDone = false;
-  uint8_t startCount = 0;  // 0..kMaxStartReadings
-  StartReadingMsg start[kMaxStartReadings] = {};
 };
 size_t encodeReadings(const ReadingsMsg& m, Payload& out);
 bool decodeReadings(const uint8_t* p, size_t n, ReadingsMsg& out);

@@ -147,8 +147,7 @@ int runSimHouse(const SimHouseOptions& o) {
       << "(within 2 cells: the maps apart from their joining; the frames cost "
       << num(best.score.agreementPct() - s.agreementPct()) << " points)\n"
       << "time units       " << num(c.timeUnits()) << " (between rooms: " << c.travel.cellsMoved << " cells; "
-      << "relocalisations " << mapper.relocalisations() << "; start room moved by the start readings "
-      << mapper.startShift().x << "," << mapper.startShift().y << ")\n"
+      << "relocalisations " << mapper.relocalisations() << ")\n"
       << "sensor requests  " << c.sensorRequests() << "\n"
       << "raw samples      " << c.explore.rawSamples + c.travel.rawSamples << "\n";
   std::cout << out.str() << std::flush;

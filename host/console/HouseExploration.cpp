@@ -110,8 +110,6 @@ house::HouseReport HouseExploration::roomReport(link::Session& s) const {
     r.exits.push_back(RoomExit{protocol::doorwayOf(m.exits[i].door), m.exits[i].inside, m.exits[i].outward});
   if (s.room() && s.room()->roomId == room_) r.crossedAt = Pose{s.room()->origin, s.room()->heading};
   r.stood = stood_;
-  const protocol::ReadingsMsg& k = *s.readings();
-  for (uint8_t i = 0; i < k.startCount; ++i) r.startReadings.push_back({k.start[i].dir, k.start[i].reading});
   return r;
 }
 
@@ -146,15 +144,12 @@ std::optional<house::HouseReport> HouseExploration::crossBlocked(link::Session& 
 }
 
 // The room's end (its whole map held here) and a Status of the brick done in that room (its pose);
-// after a crossing, also the new room's frame (NewRoom, repeated with every Status); and all of the
-// room's start readings.
+// after a crossing, also the new room's frame (NewRoom, repeated with every Status).
 std::optional<house::HouseReport> HouseExploration::roomDone(link::Session& s) const {
   const auto& st = s.status();
   const bool framed = roomsMapped_ == 0 || (s.room() && s.room()->roomId == room_);
   const bool ended = s.roomExits() && s.roomExits()->roomId == room_ && s.roomExits()->end != ExplorerEnd::Running;
-  const bool read = s.readings() && s.readings()->roomId == room_ && s.readings()->startDone;
-  if (!ended || !read || !st || st->roomId != room_ || st->mode != protocol::BrickMode::Done || !framed)
-    return std::nullopt;
+  if (!ended || !st || st->roomId != room_ || st->mode != protocol::BrickMode::Done || !framed) return std::nullopt;
   return roomReport(s);
 }
 

@@ -4,8 +4,7 @@
 // and its exits, picks the next unexplored exit, uploads the known house around the way there and
 // sends the brick to the exit (GoTo), then through it into the next room (EnterRoom); until no exit
 // is left. A robot that seems lost is told to scan standing (Scan; the four readings come back in
-// Readings) and the first room's start readings (also in Readings) anchor the house's start, as in
-// `sim-house`. Every order is a reliable command, run once by the brick. Progress is reported as
+// Readings), as in `sim-house`. Every order is a reliable command, run once by the brick. Progress is reported as
 // lines (rooms done, exits left, time). The link may drop and come back in between: the orders wait.
 // Works on the PC's Session directly (the console calls it under the link runner's lock); times are
 // seconds of the caller's clock.

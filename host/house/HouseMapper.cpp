@@ -44,7 +44,6 @@ HousePlannerConfig plannerFor(const HouseConfig& c) {
   p.registerCells = c.registerCells;
   p.maxOpenings = c.maxOpenings;
   p.relocaliseCells = c.relocaliseCells;
-  p.anchorStart = c.anchorStart;
   p.poseRangeCm = PilotConfig{}.poseRangeCm;
   p.gridCells = c.grid.cells;
   return p;
@@ -218,7 +217,6 @@ HouseReport HouseMapper::report(HouseReport::Kind kind) const {
   if (kind == HouseReport::Kind::RoomMapped) {
     r.map = network::RoomMap::fromGrid(stack_.map().grid());
     for (uint8_t i = 0; i < confinement_.exitCount(); ++i) r.exits.push_back(confinement_.exit(i));
-    r.startReadings.assign(session_.startReadings(), session_.startReadings() + session_.startReadingCount());
     r.crossedAt = session_.crossedAt();
     r.stood = stood_;
   }

@@ -57,10 +57,6 @@ struct HouseConfig {
   // reachable from where it believes it stands, reads all four sides and moves its belief by the
   // whole cells (up to this many each way) that fit the map best, then tries once more (0: off).
   int relocaliseCells = 2;
-  // The readings taken at the very start, where the robot surely is, are matched against the
-  // finished start room; a whole-cell shift under which they fit again (and do not as mapped) moves
-  // the start room's frame and the belief with it (see StartAnchor). false: off.
-  bool anchorStart = true;
   // The explorer's grid: the brick's 64 x 64 cells unless chosen otherwise.
   mapping::GridCapacity grid = mapping::GridCapacity::brick();
 };
@@ -88,7 +84,6 @@ class HouseMapper {
   int exitsFound() const { return planner_.exitsFound(); }
   int exitsUnreached() const { return planner_.exitsUnreached(); }    // exits the robot could not get through
   int relocalisations() const { return planner_.relocalisations(); }  // beliefs moved by a standing scan
-  Cell startShift() const { return planner_.startShift(); }           // see HouseConfig::anchorStart
   int openingsTried() const { return planner_.openingsTried(); }      // see HouseConfig::maxOpenings
   const sim::SimRobot& robot() const { return robot_; }
   const sim::World& world() const { return world_; }

@@ -30,8 +30,6 @@ struct HousePlannerConfig {
   // scans the four sides and moves its belief by the whole cells (up to this many each way) that fit
   // the map best, then tries once more (0: off).
   int relocaliseCells = 2;
-  // The readings taken at the very start are matched against the finished start room (StartAnchor).
-  bool anchorStart = true;
   int poseRangeCm = 0;  // the pilot's pose range (landmarks out to max(geometry.maxCm, this))
   // The brick's grid (cells per side): a travel's map is cut to it, and a way longer than it fits
   // is driven in legs.
@@ -56,11 +54,10 @@ struct HouseReport {
   enum class Kind { RoomMapped, Arrived, NotArrived, CrossBlocked, Scanned };
   Kind kind = Kind::RoomMapped;
   Pose pose{};  // the believed pose in the brick's current frame
-  // RoomMapped: everything the room's run saw (doors open again), its exits, the start readings,
-  // and (after a Cross) the new room's origin and +y in the frame the robot crossed from.
+  // RoomMapped: everything the room's run saw (doors open again), its exits, the cells the robot stood
+  // in (stood), and (after a Cross) the new room's origin and +y in the frame the robot crossed from.
   network::RoomMap map;
   std::vector<RoomExit> exits;
-  std::vector<RoomSession::StartReading> startReadings;
   Pose crossedAt{};
   RangeReading scan[kSensorCount] = {};  // Scanned: Front, Right, Back, Left
   std::vector<Cell> stood;  // RoomMapped: cells the robot believed it stood in while mapping (room frame, in order)
@@ -79,7 +76,6 @@ class HousePlanner {
   int exitsFound() const { return exitsFound_; }
   int exitsUnreached() const { return exitsUnreached_; }
   int relocalisations() const { return relocalisations_; }
-  Cell startShift() const { return startShift_; }
   int openingsTried() const { return static_cast<int>(openingsTried_.size()); }
   int exitsLeft() const { return static_cast<int>(pending_.size()); }
   const Pose& belief() const { return belief_; }  // house frame
@@ -110,7 +106,6 @@ class HousePlanner {
 
   // Recording a room (HousePlannerRooms.cpp).
   void recordRoom(const HouseReport& r, int fromRoom, const RoomExit* via, const std::vector<Cell>& entranceHouse);
-  network::RoomTransform anchoredStart(const HouseReport& r, const network::RoomTransform& toHouse);
   bool leadsToMappedRoom(const Pending& p);
   // Adds a gateway with the pairs of cells neither room's map holds as a wall (a doorway seen from one room
   // may fall a cell into the other's wall); none left: no gateway. The house stays valid to save.
@@ -135,7 +130,6 @@ class HousePlanner {
   int exitsFound_ = 0;
   int exitsUnreached_ = 0;
   int relocalisations_ = 0;
-  Cell startShift_{0, 0};
 };
 
 // The exit's cells, along the doorway then across it.

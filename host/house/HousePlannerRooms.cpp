@@ -9,7 +9,6 @@
 #include "host/house/RoomCut.hpp"
 #include "host/house/RoomRegistration.hpp"
 #include "host/house/RoomSplit.hpp"
-#include "host/house/StartAnchor.hpp"
 #include "host/log/Log.hpp"
 
 namespace nxtmap::house {
@@ -30,7 +29,6 @@ void HousePlanner::recordRoom(const HouseReport& r, int fromRoom, const RoomExit
       log::debug("house", "  registered by %d,%d (score %d -> %d)", reg.dx, reg.dy, reg.scoreBefore, reg.scoreAfter);
     toHouse = reg.toHouse;
   }
-  if (fromRoom < 0 && config_.anchorStart) toHouse = anchoredStart(r, toHouse);
 
   // The room: the cells reached from its start without crossing a doorway, and the doorways.
   std::vector<Cell> doors = entrance;
@@ -70,33 +68,6 @@ void HousePlanner::recordRoom(const HouseReport& r, int fromRoom, const RoomExit
   exitsFound_ += static_cast<int>(r.exits.size());
   brickToHouse_ = toHouse;
   belief_ = Pose{toHouse.apply(r.pose.cell), toHouse.apply(r.pose.heading)};
-}
-
-network::RoomTransform HousePlanner::anchoredStart(const HouseReport& r, const network::RoomTransform& toHouse) {
-  const RangeGeometry& g = geometry_;
-  RangeGeometry reach = g;
-  reach.maxCm = static_cast<int16_t>(std::max<int>(g.maxCm, config_.poseRangeCm));
-  std::vector<AnchorReading> anchor;
-  for (const RoomSession::StartReading& sr : r.startReadings) {
-    // Every echo the pilot would match against a known wall (out to its pose range, beyond the
-    // mapping range); one too near lies at the adjacent cell's face.
-    const RangeReading& rr = sr.reading;
-    if (rr.status == RangeStatus::TooNear) anchor.push_back(AnchorReading{sr.dir, g.cellCm * 5});
-    if (rr.status == RangeStatus::Good || (rr.status == RangeStatus::TooFar && rr.cm > 0 && rr.cm <= reach.maxCm))
-      anchor.push_back(AnchorReading{sr.dir, (rr.cm + g.mountCm) * 10});
-  }
-  AnchorGeometry ag;
-  ag.cellMm = g.cellCm * 10;
-  ag.reachCells = reach.hitCells();
-  ag.wideFromMm = (g.sureCm > 0 ? g.sureCm : g.maxCm) * 10;
-  const Cell s = startAnchorShift(r.map, Cell{0, 0}, anchor, ag);
-  if (s.x == 0 && s.y == 0) return toHouse;
-  // Room cell s is where the robot started: it goes where the start is in the house.
-  const Cell moved = toHouse.apply(s), start = toHouse.apply(Cell{0, 0});
-  startShift_ = s;
-  log::debug("house", "  start anchor: frame moved by %d,%d", s.x, s.y);
-  return network::RoomTransform::fromParts(toHouse.x() - (moved.x - start.x), toHouse.y() - (moved.y - start.y),
-                                           toHouse.quarterTurns());
 }
 
 void HousePlanner::addPassableGateway(network::Gateway g) {

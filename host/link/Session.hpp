@@ -114,7 +114,7 @@ class Session {
   // The exits of the room the brick maps as part of a house, as last reported in the map epoch the
   // copy holds (forgotten when a new epoch begins: its end then waits for the new copy to be whole).
   const std::optional<protocol::RoomExitsMsg>& roomExits() const { return roomExits_; }
-  // The last standing scan and the start readings of the room mapped as part of a house, as last reported.
+  // The last standing scan of a robot mapping a house, as last reported.
   const std::optional<protocol::ReadingsMsg>& readings() const { return readings_; }
   // The brick's room counter as last reported (none before the first report).
   const std::optional<uint16_t>& roomId() const { return roomId_; }

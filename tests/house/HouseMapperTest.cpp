@@ -39,9 +39,6 @@ TEST(HouseMapper, ThreeRoomsWithALoopOfDoorways) {
   const HouseScore s = scoreHouse(m);
   EXPECT_GE(s.agreementPct(), 99.0);
   EXPECT_EQ(s.wrong, 0);
-  // Without noise the start readings fit the start room as mapped: its frame stays.
-  EXPECT_EQ(m.startShift().x, 0);
-  EXPECT_EQ(m.startShift().y, 0);
   // Every gateway's cells are the same world cells seen from both rooms.
   for (const network::Gateway& g : n.gateways()) {
     const auto& ra = n.rooms()[static_cast<size_t>(g.roomA)];

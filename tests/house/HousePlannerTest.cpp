@@ -66,7 +66,6 @@ std::vector<Cell> travelsUntilDone(HousePlanner& p, int arriveOnTry = 0) {
 HousePlannerConfig config() {
   HousePlannerConfig c;
   c.maxOpenings = 0;  // the doorways lead to unknown space: no openings explored beside the exits
-  c.anchorStart = false;
   return c;
 }
 

@@ -1,6 +1,6 @@
 // The PC's Session and a house's readings: Scan goes out as a reliable command with its id (id 0
-// refused), and the brick's Readings (the last standing scan, the room's start readings) are kept
-// as last reported; a malformed one changes nothing.
+// refused), and the brick's Readings (the last standing scan) are kept as last reported; a malformed
+// one changes nothing.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
@@ -56,16 +56,11 @@ class SessionReadingsTest : public ::testing::Test {
   std::vector<Telegram> telegrams_;
 };
 
-ReadingsMsg readingsOf(uint16_t scanId, uint16_t roomId, uint8_t startCount) {
+ReadingsMsg readingsOf(uint16_t scanId, int16_t cm) {
   ReadingsMsg m;
   m.scanId = scanId;
   m.scanPose = Pose{Cell{2, 3}, Dir::West};
-  for (RangeReading& r : m.scan) r = RangeReading{RangeStatus::Good, 55, 3};
-  m.roomId = roomId;
-  m.startDone = startCount > 0;
-  m.startCount = startCount;
-  for (uint8_t i = 0; i < startCount; ++i)
-    m.start[i] = StartReadingMsg{static_cast<Dir>(i % 4), RangeReading{RangeStatus::TooFar, 0, 5}};
+  for (RangeReading& r : m.scan) r = RangeReading{RangeStatus::Good, cm, 3};
   return m;
 }
 
@@ -89,14 +84,13 @@ TEST_F(SessionReadingsTest, TheLastReadingsAreKeptAndAMalformedOneChangesNothing
     ReadingsMsg sent;
     bool spoil;          // the payload's scan pose heading set to 4: refused
     uint16_t scanAfter;  // the scan id the session holds after it
-    uint8_t startAfter;
+    int16_t cmAfter;     // and its readings' range
   };
   const Step steps[] = {
-      {"the first", readingsOf(0, 1, 0), false, 0, 0},
-      {"the room's start readings", readingsOf(0, 1, 8), false, 0, 8},
-      {"a scan", readingsOf(7, 1, 8), false, 7, 8},
-      {"malformed", readingsOf(8, 2, 3), true, 7, 8},
-      {"the next room", readingsOf(7, 2, 2), false, 7, 2},
+      {"the first", readingsOf(0, 40), false, 0, 40},
+      {"a scan", readingsOf(7, 55), false, 7, 55},
+      {"malformed", readingsOf(8, 66), true, 7, 55},
+      {"the same again", readingsOf(7, 55), false, 7, 55},
   };
   for (const Step& s : steps) {
     Payload p;
@@ -105,11 +99,9 @@ TEST_F(SessionReadingsTest, TheLastReadingsAreKeptAndAMalformedOneChangesNothing
     send(Op::Readings, p);
     ASSERT_TRUE(pc.readings().has_value()) << s.what;
     EXPECT_EQ(pc.readings()->scanId, s.scanAfter) << s.what;
-    EXPECT_EQ(pc.readings()->startCount, s.startAfter) << s.what;
+    EXPECT_EQ(pc.readings()->scan[2].cm, s.cmAfter) << s.what;
   }
-  EXPECT_EQ(pc.readings()->roomId, 2);
   EXPECT_EQ(pc.readings()->scanPose.heading, Dir::West);
-  EXPECT_EQ(pc.readings()->scan[2].cm, 55);
 }
 
 }  // namespace

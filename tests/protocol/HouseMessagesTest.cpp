@@ -257,22 +257,15 @@ ReadingsMsg fixedReadings() {
   m.scan[1] = RangeReading{RangeStatus::NoEcho, 0, 3};
   m.scan[2] = RangeReading{RangeStatus::TooFar, 255, 10};
   m.scan[3] = RangeReading{RangeStatus::Inconsistent, 0, 10};
-  m.roomId = 4;
-  m.startDone = true;
-  m.startCount = 2;
-  m.start[0] = StartReadingMsg{Dir::North, RangeReading{RangeStatus::TooNear, 0, 3}};
-  m.start[1] = StartReadingMsg{Dir::West, RangeReading{RangeStatus::Good, 96, 4}};
   return m;
 }
 
-TEST(HouseMessages, ReadingsCarryTheLastScanAndTheRoomsStartReadings) {
+TEST(HouseMessages, ReadingsCarryTheLastScan) {
   Payload p;
-  ASSERT_EQ(encodeReadings(fixedReadings(), p), 19u + 2 * 3u);
-  EXPECT_EQ(bytesOf(p), (Bytes{0x03, 0x00,                                   // scan id
-                               0xFE, 0xFF, 0x07, 0x00, 0x01,                 // its pose
-                               42,   0x30, 0,    0x31, 255,  0xA3, 0, 0xA4,  // Front, Right, Back, Left
-                               0x04, 0x00, 0x01, 0x02,                       // room, start done, count
-                               0x00, 0,    0x32, 0x03, 96,   0x40}));        // North too near, West 96 cm
+  ASSERT_EQ(encodeReadings(fixedReadings(), p), 15u);
+  EXPECT_EQ(bytesOf(p), (Bytes{0x03, 0x00,                                // scan id
+                               0xFE, 0xFF, 0x07, 0x00, 0x01,              // its pose
+                               42, 0x30, 0, 0x31, 255, 0xA3, 0, 0xA4}));  // Front, Right, Back, Left
   ReadingsMsg d;
   ASSERT_TRUE(decodeReadings(p.bytes, p.size, d));
   EXPECT_EQ(d.scanId, 3);
@@ -284,13 +277,6 @@ TEST(HouseMessages, ReadingsCarryTheLastScanAndTheRoomsStartReadings) {
     EXPECT_EQ(d.scan[i].cm, m.scan[i].cm) << i;
     EXPECT_EQ(d.scan[i].samples, m.scan[i].samples) << i;
   }
-  EXPECT_EQ(d.roomId, 4);
-  EXPECT_TRUE(d.startDone);
-  ASSERT_EQ(d.startCount, 2);
-  EXPECT_EQ(d.start[1].dir, Dir::West);
-  EXPECT_EQ(d.start[1].reading.status, RangeStatus::Good);
-  EXPECT_EQ(d.start[1].reading.cm, 96);
-  EXPECT_EQ(d.start[1].reading.samples, 4);
   expectExactLength(bytesOf(p), decodeReadings);
   expectRefused(bytesOf(p),
                 {{"scan pose x 16638", 3, 0x40},
@@ -298,12 +284,7 @@ TEST(HouseMessages, ReadingsCarryTheLastScanAndTheRoomsStartReadings) {
                  {"front status 5", 8, 0x35},
                  {"front status 15", 8, 0x3F},
                  {"front samples 11", 8, 0xB0},
-                 {"room's start done 2", 17, 2},
-                 {"start count 9", 18, 9},
-                 {"start count 1 with two readings", 18, 1},
-                 {"start count 3 with two readings", 18, 3},
-                 {"start 1 dir 4", 22, 4},
-                 {"start 1 status 7", 24, 0x47}},
+                 {"left status 7", 14, 0x47}},
                 decodeReadings);
   // Readings the bytes cannot hold are not encoded.
   for (const int16_t cm : {-1, 256}) {
@@ -312,15 +293,9 @@ TEST(HouseMessages, ReadingsCarryTheLastScanAndTheRoomsStartReadings) {
     EXPECT_EQ(encodeReadings(bad, p), 0u) << cm;
   }
   ReadingsMsg none;
-  ASSERT_EQ(encodeReadings(none, p), 19u);  // no scan yet, no start readings
+  ASSERT_EQ(encodeReadings(none, p), 15u);  // no scan yet
   EXPECT_TRUE(decodeReadings(p.bytes, p.size, d));
   EXPECT_EQ(d.scanId, 0);
-  ReadingsMsg full = fixedReadings();
-  full.startCount = kMaxStartReadings;
-  ASSERT_EQ(encodeReadings(full, p), 19u + kMaxStartReadings * 3u);
-  EXPECT_TRUE(decodeReadings(p.bytes, p.size, d));
-  full.startCount = kMaxStartReadings + 1;
-  EXPECT_EQ(encodeReadings(full, p), 0u);  // more than the message holds
 }
 
 }  // namespace
