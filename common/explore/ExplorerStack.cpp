@@ -16,6 +16,14 @@ Explorer* ExplorerStack::explorer() {
 
 const Explorer* ExplorerStack::explorer() const { return const_cast<ExplorerStack*>(this)->explorer(); }
 
+bool ExplorerStack::believedOffset(int32_t& xMm, int32_t& yMm) const {
+  xMm = yMm = 0;
+  if (!pilot_ || !pilot_->explorerStarted()) return false;
+  xMm = pilot_->tracker().xMm();
+  yMm = pilot_->tracker().yMm();
+  return true;
+}
+
 DriveAction ExplorerStack::start(Strategy strategy, const PilotConfig& pilot, const Pose& at, Cell target,
                                  const CellSet* shut) {
   end();

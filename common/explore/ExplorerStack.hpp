@@ -53,6 +53,9 @@ class ExplorerStack {
   Explorer* explorer();
   const Explorer* explorer() const;
   Pilot* pilot() { return pilot_ ? &*pilot_ : nullptr; }
+  // Where the running pilot believes the robot's centre is from its explorer's cell's centre (mm, x east, y
+  // north, PoseTracker), once its explorer has started; false (and 0, 0) otherwise.
+  bool believedOffset(int32_t& xMm, int32_t& yMm) const;
   const Pilot* pilot() const { return pilot_ ? &*pilot_ : nullptr; }
   const PropagationExplorer* propagation() const { return std::get_if<PropagationExplorer>(&explorer_); }
   const GoToExplorer* goTo() const { return std::get_if<GoToExplorer>(&explorer_); }

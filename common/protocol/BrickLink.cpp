@@ -11,6 +11,11 @@ bool samePath(const PathProgressMsg& a, const PathProgressMsg& b) {
   return a.pathId == b.pathId && a.reached == b.reached && a.state == b.state && a.at == b.at;
 }
 bool samePose(const Pose& a, const Pose& b) { return a.cell == b.cell && a.heading == b.heading; }
+// A believed offset held to what StatusMsg carries.
+int16_t clampOffset(int32_t mm) {
+  constexpr int32_t kMax = StatusMsg::kMaxOffsetMm;
+  return static_cast<int16_t>(mm < -kMax ? -kMax : (mm > kMax ? kMax : mm));
+}
 #ifndef NXTMAP_NO_START_SQUARING
 // v / 10, rounded, held to int16_t's range.
 int16_t tenths(int32_t v) {
@@ -261,6 +266,8 @@ bool BrickLink::transmit(uint32_t nowMs, const BrickReport& report, Frame& out, 
     StatusMsg s;
     s.mode = report.mode;
     s.pose = report.pose;
+    s.offsetXMm = clampOffset(report.offsetXMm);
+    s.offsetYMm = clampOffset(report.offsetYMm);
     s.batteryMillivolts = report.batteryMillivolts;
     s.mapEpoch = sync_.epoch();
     s.roomId = report.roomId;

@@ -19,6 +19,7 @@ namespace nxtmap::protocol {
 struct BrickReport {
   BrickMode mode = BrickMode::Idle;
   Pose pose;
+  int32_t offsetXMm = 0, offsetYMm = 0;  // the robot's centre from pose.cell's centre, mm (StatusMsg)
   Counters counters;
   uint16_t batteryMillivolts = 0;
   // What the robot has learnt of its wheels (WheelCalibration): drift urad/m, turn error ppm.

@@ -63,6 +63,7 @@ class FieldWriter {
   }
   bool u8In(const uint8_t& v, uint8_t, uint8_t) { return u8(v); }
   bool u16In(const uint16_t& v, uint16_t, uint16_t) { return u16(v); }
+  bool i16In(const int16_t& v, int16_t, int16_t) { return i16(v); }
   bool flag(const bool& v) { return u8(v ? 1 : 0); }
   template <class E>
   bool enum8(const E& v, E) {
@@ -124,6 +125,7 @@ class FieldReader {
   }
   bool u8In(uint8_t& v, uint8_t lo, uint8_t hi) { return u8(v) && v >= lo && v <= hi; }
   bool u16In(uint16_t& v, uint16_t lo, uint16_t hi) { return u16(v) && v >= lo && v <= hi; }
+  bool i16In(int16_t& v, int16_t lo, int16_t hi) { return i16(v) && v >= lo && v <= hi; }
   // A byte 0 or 1.
   bool flag(bool& v) {
     uint8_t b = 0;

@@ -117,7 +117,9 @@ struct Layout<StatusMsg> {
   template <class Io, class M>
   static bool fields(Io& io, M& m) {
     return io.enum8(m.mode, BrickMode::Fault) && io.part(m.pose) && io.u16(m.batteryMillivolts) && io.u16(m.mapEpoch) &&
-           io.u16(m.roomId) && io.part(m.path);
+           io.u16(m.roomId) && io.part(m.path) &&
+           io.i16In(m.offsetXMm, -StatusMsg::kMaxOffsetMm, StatusMsg::kMaxOffsetMm) &&
+           io.i16In(m.offsetYMm, -StatusMsg::kMaxOffsetMm, StatusMsg::kMaxOffsetMm);
   }
 };
 template <>

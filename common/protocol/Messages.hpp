@@ -149,14 +149,19 @@ struct LinkCounters {
   uint32_t retransmits = 0;   // map deltas that timed out (their cells are sent again)
 };
 
-// What the brick is doing, small enough to get through a bad link often (21 bytes).
+// What the brick is doing, small enough to get through a bad link often (25 bytes).
 struct StatusMsg {
+  static constexpr int16_t kMaxOffsetMm = 1000;
   BrickMode mode = BrickMode::Idle;
   Pose pose;
   uint16_t batteryMillivolts = 0;
   uint16_t mapEpoch = 0;
   uint16_t roomId = 0;
   PathProgressMsg path;
+  // Where the robot's centre is believed to be from the centre of pose.cell: mm along the explorer's x (east) and
+  // y (north), |.| <= kMaxOffsetMm; 0, 0 before the explorer starts (and on the RAM-run image, which keeps none).
+  int16_t offsetXMm = 0;
+  int16_t offsetYMm = 0;
 };
 size_t encodeStatus(const StatusMsg& m, Payload& out);
 bool decodeStatus(const uint8_t* p, size_t n, StatusMsg& out);

@@ -24,7 +24,7 @@ namespace nxtmap::protocol {
 // 3: Scan and Readings (a house's standing scan, start readings); 4: HelloReply carries the
 // brick's range geometry (cell size, trusted range, sensor mount); 5: Counters carries the wheels'
 // drift and turn error the robot has learnt; 6: Readings carries the standing scan only (no start readings).
-constexpr uint8_t kProtocolVersion = 6;
+constexpr uint8_t kProtocolVersion = 7;
 
 // Sizes (bytes). LEGO's Bluetooth input buffer holds 128 bytes per message.
 constexpr size_t kLengthPrefix = 2;

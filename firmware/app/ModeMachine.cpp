@@ -5,10 +5,11 @@
 namespace nxtmap::fw {
 
 // Run-end markers for the emulator: g_explorerDone turns 1 when the explorer reports Done, after
-// (in the NXTMAP_SIM_GEOMETRY image) the final map was copied to g_mapExport; a house command's end
-// copies the map held then as well.
+// (in the NXTMAP_SIM_GEOMETRY image) the final map was copied to g_mapExport, and g_explorerEnd holds why
+// (ExplorerEnd); a house command's end copies the map held then as well.
 extern "C" {
 volatile uint8_t g_explorerDone = 0;
+volatile uint8_t g_explorerEnd = 0;
 #if defined(NXTMAP_SIM_GEOMETRY)
 MapExport g_mapExport;
 #endif
@@ -142,6 +143,8 @@ void ModeMachine::stepExplorer(const DriveEvent& e, uint32_t nowMs) {
 #if defined(NXTMAP_SIM_GEOMETRY)
     g_mapExport.fill(grid());
 #endif
+    const Explorer* explorer = stack_.explorer();
+    g_explorerEnd = static_cast<uint8_t>(explorer != nullptr ? explorer->end() : ExplorerEnd::Running);
     g_explorerDone = 1;
     return;
   }
@@ -201,6 +204,7 @@ protocol::BrickReport ModeMachine::report(uint16_t batteryMillivolts) const {
   protocol::BrickReport r;
   r.mode = mode();
   r.pose = pose();
+  if (!poseFromPath_) (void)stack_.believedOffset(r.offsetXMm, r.offsetYMm);
   if (hasRun()) r.counters = counters();
   r.batteryMillivolts = batteryMillivolts;
 #ifndef NXTMAP_NO_START_SQUARING  // (the RAM-run image learns no wheels)

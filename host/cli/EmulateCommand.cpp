@@ -5,8 +5,10 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
+#include "common/explore/Explorer.hpp"
 #include "host/cli/Args.hpp"
 #include "host/cli/EmulatedMapScore.hpp"
 #include "host/cli/Errors.hpp"
@@ -18,6 +20,22 @@
 #include "host/report/ExperimentTable.hpp"
 
 namespace nxtmap::cli {
+namespace {
+
+// Why the firmware's explorer stopped (g_explorerEnd, ExplorerEnd), as words after "exploration done".
+std::string endReason(const emu::EmulatedRun& run) {
+  const std::optional<uint8_t> end = run.readSymbolByte("g_explorerEnd");
+  if (!end) return "";
+  switch (static_cast<ExplorerEnd>(*end)) {
+    case ExplorerEnd::Complete: return ": nothing left to map within reach";
+    case ExplorerEnd::GridFull: return ": the room outgrew the grid";
+    case ExplorerEnd::ActionLimit: return ": the action limit was reached";
+    case ExplorerEnd::Running: break;
+  }
+  return "";
+}
+
+}  // namespace
 
 CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
   CLI::App* c = app.add_subcommand("emulate", "the firmware image in the emulated brick, driving the simulated robot");
@@ -142,7 +160,7 @@ int runEmulate(const EmulateOptions& o) {
       << "end              "
       << (r.fault      ? "FAULT"
           : r.pcLeft   ? (r.finished ? "the PC disconnected (exploration done)" : "the PC disconnected")
-          : r.finished ? "exploration done"
+          : r.finished ? "exploration done" + endReason(emulated)
                        : "time limit reached")
       << "\n"
       << "emulated time    " << num(r.emulatedSeconds, 2) << " s\n"

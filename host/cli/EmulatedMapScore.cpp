@@ -5,6 +5,7 @@
 
 #include "host/mapping/FrameTransform.hpp"
 #include "host/mapping/SimDrive.hpp"
+#include "host/mapping/SquaredGrid.hpp"
 #include "host/report/ExperimentTable.hpp"
 #include "host/sim/SceneAxes.hpp"
 #include "host/sim/StartJitter.hpp"
@@ -19,8 +20,8 @@ mapping::MapScore scoreEmulatedMap(const emu::Brick& brick, const RadioMirror& r
   const sim::Scene& scene = *placed.scene;
   const double axis = start.headingDeg - std::remainder(start.headingDeg - sim::sceneAxesDeg(scene), 90.0);
   const auto heading = static_cast<sim::Heading>(sim::squareQuarter(axis));
-  const sim::Placement grid =
-      sim::placeOnGrid(scene, start.centreCm, sim::squareRemainderDeg(axis), placed.robot.cellCm);
+  const sim::Vec2 centre = mapping::believedCellCentre(start.centreCm, axis, start.offsetYCm, start.offsetXCm);
+  const sim::Placement grid = sim::placeOnGrid(scene, centre, sim::squareRemainderDeg(axis), placed.robot.cellCm);
   const sim::World truth = sim::rasterizeScene(scene, grid.frame, grid.width, grid.height, placed.truth.name());
   const ExplorerConfig explorer =
       mapping::explorerConfigFor(truth, placed.robot, sonar, placed.robot.minRangeM, placed.robot.rangeM, -1.0, -1, 1);

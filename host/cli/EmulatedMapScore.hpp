@@ -4,8 +4,8 @@
 // figures beside the host's on the same room and seed.
 // The grid it is scored on is laid as the simulator lays it once the start's sweep is over
 // (mapping::SquaredGrid): turned to the walls' axis nearest to where the robot faced when its explorer began
-// (the radio's first map cells) and centred on the robot's centre then. The brick's sub-cell offset from its
-// tracker does not come over the radio: the grid may sit up to a few cm off the one the brick believes in.
+// (the radio's first map cells), its start cell's centre where the brick believed it then: the robot's centre less
+// the offset the first Status of the explorer told (ExplorerStart).
 #pragma once
 
 #include <string>

@@ -22,13 +22,27 @@ bool RadioMirror::step(uint32_t ms, bool explored) {
 }
 
 bool RadioMirror::follow(emu::EmulatedRun& run, uint64_t cycles, bool untilExplored) {
+  const sim::SimRobot& r = run.brick().robot();
   if (!started_ && map().known() > 0) {
     started_ = true;
-    const sim::SimRobot& r = run.brick().robot();
+    statusesAtStart_ = session_.statusesReceived();
     start_ = ExplorerStart{sim::Vec2(r.xCm(), r.yCm()), r.headingDeg()};
   }
   const bool explored = untilExplored && run.readSymbolByte("g_explorerDone").value_or(0) == 1;
-  return step(static_cast<uint32_t>(cycles / (emu::kMckHz / 1000)), explored);
+  const bool quiet = step(static_cast<uint32_t>(cycles / (emu::kMckHz / 1000)), explored);
+  if (started_ && !start_.offsetKnown && session_.statusesReceived() > statusesAtStart_) {
+    // The first Status since the explorer began: its offset, with the robot where it stands as it arrives (it
+    // reads on the spot first); a robot already gone from its start cell keeps the centre alone.
+    const protocol::StatusMsg& s = *session_.status();
+    start_.offsetKnown = true;
+    if (s.pose.cell == Cell{0, 0} && s.pose.heading == Dir::North) {
+      start_.centreCm = sim::Vec2(r.xCm(), r.yCm());
+      start_.headingDeg = r.headingDeg();
+      start_.offsetXCm = s.offsetXMm / 10.0;
+      start_.offsetYCm = s.offsetYMm / 10.0;
+    }
+  }
+  return quiet;
 }
 
 }  // namespace nxtmap::cli

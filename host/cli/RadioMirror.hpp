@@ -14,10 +14,14 @@
 
 namespace nxtmap::cli {
 
-// The robot's true pose when the brick's explorer began (centre, plane cm; compass heading, degrees).
+// The robot's true pose when the brick's explorer began (centre, plane cm; compass heading, degrees) and, once a
+// Status told it while the robot still stood in its start cell facing the start heading, where the brick believed
+// its centre lay from that cell's centre (cm along the explorer's x and y, StatusMsg's offset).
 struct ExplorerStart {
   sim::Vec2 centreCm{0.0, 0.0};
   double headingDeg = 0.0;
+  bool offsetKnown = false;
+  double offsetXCm = 0.0, offsetYCm = 0.0;
 };
 
 class RadioMirror {
@@ -49,6 +53,7 @@ class RadioMirror {
   uint64_t changes_ = 0;
   uint32_t changedMs_ = 0;
   bool started_ = false;
+  uint64_t statusesAtStart_ = 0;  // statuses received before the first map cells
   ExplorerStart start_;
 };
 

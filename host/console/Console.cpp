@@ -5,6 +5,8 @@
 #include <sstream>
 #include <thread>
 
+#include "host/report/ExperimentTable.hpp"
+
 namespace nxtmap::console {
 namespace {
 
@@ -41,8 +43,10 @@ std::string statusText(const link::Session& s, const std::string& linkText, cons
   std::ostringstream o;
   o << "link: " << linkText << ", " << (s.connected() ? "connected" : "not connected") << "\n";
   if (s.status()) {
-    o << "robot: " << modeText(*s.status()) << " at (" << s.status()->pose.cell.x << "," << s.status()->pose.cell.y
-      << ") battery " << s.status()->batteryMillivolts << " mV\n";
+    const protocol::StatusMsg& st = *s.status();
+    o << "robot: " << modeText(st) << " at (" << st.pose.cell.x << "," << st.pose.cell.y
+      << "), off the cell's centre by " << report::formatNumber(st.offsetXMm / 10.0, 1) << ","
+      << report::formatNumber(st.offsetYMm / 10.0, 1) << " cm (x, y), battery " << st.batteryMillivolts << " mV\n";
   }
   o << "map: " << s.map().known() << " known cells, epoch " << s.map().epoch() << "\n";
   countersText(o, s);

@@ -108,6 +108,7 @@ BrickReport SimBrick::report() const {
   BrickReport r;
   r.mode = mode_;
   r.pose = pose();
+  (void)stack_.believedOffset(r.offsetXMm, r.offsetYMm);
   r.counters = counters();
   r.batteryMillivolts = config_.batteryMillivolts;
   const WheelCalibration w = wheels();

@@ -26,15 +26,19 @@ SquaredGrid squaredGrid(const sim::SimRobot& robot, const Pilot& pilot, Dir expl
   const PoseTracker& tracker = pilot.tracker();
   const double forwardCm = tracker.along(explorerHeading) / 10.0;
   const double rightCm = tracker.along(rotate(explorerHeading, 1)) / 10.0;
-  const double rad = axis * 3.14159265358979323846 / 180.0;
-  const sim::Vec2 forward(std::sin(rad), -std::cos(rad)), right(std::cos(rad), std::sin(rad));
-  const sim::Vec2 centre = sim::Vec2(robot.xCm(), robot.yCm()) - forwardCm * forward - rightCm * right;
+  const sim::Vec2 centre = believedCellCentre(sim::Vec2(robot.xCm(), robot.yCm()), axis, forwardCm, rightCm);
   // Turning on the spot leaves the centre within a few mm of where it was; an approach drives 20 cm or more.
   const bool droveOff = std::hypot(robot.xCm() - setDownCm.x(), robot.yCm() - setDownCm.y()) > kDroveOffCm;
   g.moved = !(g.heading == setDownHeading && std::fabs(turn - robot.frame().headingDeg) < 1e-6 && forwardCm == 0.0 &&
               rightCm == 0.0 && !droveOff);
   if (g.moved) g.placement = sim::placeOnGrid(robot.scene(), centre, turn, robot.frame().cellCm);
   return g;
+}
+
+sim::Vec2 believedCellCentre(const sim::Vec2& robotCm, double axisDeg, double forwardCm, double rightCm) {
+  const double rad = axisDeg * 3.14159265358979323846 / 180.0;
+  const sim::Vec2 forward(std::sin(rad), -std::cos(rad)), right(std::cos(rad), std::sin(rad));
+  return robotCm - forwardCm * forward - rightCm * right;
 }
 
 }  // namespace nxtmap::mapping

@@ -25,4 +25,8 @@ struct SquaredGrid {
 SquaredGrid squaredGrid(const sim::SimRobot& robot, const Pilot& pilot, Dir explorerHeading,
                         sim::Heading setDownHeading, const sim::Vec2& setDownCm);
 
+// The centre of the cell a robot at `robotCm` (plane cm) believes it stands `forwardCm` ahead of and `rightCm` to
+// the right of, on a grid whose explorer heading is the compass heading `axisDeg`.
+sim::Vec2 believedCellCentre(const sim::Vec2& robotCm, double axisDeg, double forwardCm, double rightCm);
+
 }  // namespace nxtmap::mapping

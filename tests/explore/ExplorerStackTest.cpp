@@ -42,6 +42,7 @@ struct ScriptedRobot {
   RangeGeometry geometry;
   Cell cell{};      // the start: (0,0)
   int heading = 0;  // eighths, clockwise from +y
+  int aheadShortCm = 0;  // the front sensor reads this much short (the robot stands nearer the wall ahead)
 
   DriveEvent answer(const DriveAction& a) {
     switch (a.kind) {
@@ -64,7 +65,7 @@ struct ScriptedRobot {
     const int cm = (2 * k - 1) * geometry.cellCm / 2 - geometry.mountCm;
     r.status =
         cm <= geometry.minCm ? RangeStatus::TooNear : (cm > geometry.maxCm ? RangeStatus::TooFar : RangeStatus::Good);
-    r.cm = static_cast<int16_t>(r.status == RangeStatus::Good ? cm : 0);
+    r.cm = static_cast<int16_t>(r.status == RangeStatus::Good ? cm - (s == Sensor::Front ? aheadShortCm : 0) : 0);
     return r;
   }
   // False when the way is blocked (the robot stays).
@@ -220,6 +221,33 @@ TEST(ExplorerStack, EndDropsTheRunAndLeavesTheMap) {
   EXPECT_EQ(rig.stack.map().grid().count(CellState::Free), free);
   EXPECT_EQ(rig.stack.map().grid().count(CellState::Occupied), occupied);
   EXPECT_EQ(rig.stack.map().at(Cell{2, 3}), CellState::Free);
+}
+
+TEST(ExplorerStack, TheBelievedOffsetIsTheRunningPilotsOnceItsExplorerHasStarted) {
+  const Room room{5, 6};
+  StackRig rig;
+  int32_t x = 7, y = 7;
+  EXPECT_FALSE(rig.stack.believedOffset(x, y));  // no run
+  EXPECT_EQ(x, 0);
+  EXPECT_EQ(y, 0);
+  ScriptedRobot robot{room, rig.stack.config().geometry};
+  robot.aheadShortCm = 2;
+  DriveAction a = rig.stack.start(Strategy::Propagation, PilotConfig{});
+  bool moved = false;
+  for (int n = 0; n < 400 && !rig.stack.finished(); ++n) {
+    // The wall ahead reads 2 cm near: the pilot takes the robot for 2 cm past its cell's centre.
+    const DriveEvent e = robot.answer(a);
+    a = rig.stack.step(e);
+    ASSERT_TRUE(rig.stack.believedOffset(x, y));
+    EXPECT_EQ(x, rig.stack.pilot()->tracker().xMm());
+    EXPECT_EQ(y, rig.stack.pilot()->tracker().yMm());
+    moved = moved || x != 0 || y != 0;
+  }
+  EXPECT_TRUE(moved);
+  rig.stack.end();
+  EXPECT_FALSE(rig.stack.believedOffset(x, y));
+  EXPECT_EQ(x, 0);
+  EXPECT_EQ(y, 0);
 }
 
 TEST(ExplorerStack, WithoutARunNothingRunsAndTheCountersAreZero) {

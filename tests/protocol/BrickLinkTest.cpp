@@ -178,6 +178,29 @@ TEST_F(BrickLinkTest, HelloOpensASessionAndTheWholeStateFollows) {
   EXPECT_EQ(collect(1010).count(Op::Pose), 1u);
 }
 
+TEST_F(BrickLinkTest, StatusTellsWhereInItsCellTheRobotIsBelievedHeldToTheMessagesRange) {
+  struct Row {
+    int32_t x, y;          // the report's offset, mm
+    int16_t sentX, sentY;  // what the Status carries
+  };
+  const Row rows[] = {{0, 0, 0, 0}, {-93, 47, -93, 47}, {1000, -1000, 1000, -1000}, {1250, -40000, 1000, -1000}};
+  hello(0xBEE);
+  (void)collect(0);
+  uint32_t now = 0;
+  for (const Row& row : rows) {
+    report.offsetXMm = row.x;
+    report.offsetYMm = row.y;
+    now += 500;
+    const Received r = collect(now);
+    const Bytes* status = r.last(Op::Status);
+    ASSERT_NE(status, nullptr) << row.x;
+    StatusMsg s;
+    ASSERT_TRUE(decodeStatus(status->data(), status->size(), s)) << row.x;
+    EXPECT_EQ(s.offsetXMm, row.sentX);
+    EXPECT_EQ(s.offsetYMm, row.sentY);
+  }
+}
+
 TEST_F(BrickLinkTest, ARepeatedCommandRunsOnceAndIsAcknowledgedEachTime) {
   hello(7);
   collect(0);

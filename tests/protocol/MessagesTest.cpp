@@ -34,8 +34,10 @@ TEST(Messages, StatusAndCountersRoundTripEveryField) {
   s.mapEpoch = 9;
   s.roomId = 2;
   s.path = PathProgressMsg{77, 12, PathState::Blocked, Cell{4, -5}};
+  s.offsetXMm = -93;
+  s.offsetYMm = 1000;
   Payload p;
-  ASSERT_EQ(encodeStatus(s, p), 21u);  // small: it must get through a bad link
+  ASSERT_EQ(encodeStatus(s, p), 25u);  // small: it must get through a bad link
   StatusMsg d;
   ASSERT_TRUE(decodeStatus(p.bytes, p.size, d));
   EXPECT_EQ(d.mode, s.mode);
@@ -46,10 +48,16 @@ TEST(Messages, StatusAndCountersRoundTripEveryField) {
   EXPECT_EQ(d.roomId, 2);
   EXPECT_EQ(d.path.state, PathState::Blocked);
   EXPECT_EQ(d.path.at, (Cell{4, -5}));
+  EXPECT_EQ(d.offsetXMm, -93);
+  EXPECT_EQ(d.offsetYMm, 1000);
   // Truncated at every length, and one byte too many: refused.
   for (size_t n = 0; n < p.size; ++n) EXPECT_FALSE(decodeStatus(p.bytes, n, d)) << n;
   p.bytes[p.size] = 0;
   EXPECT_FALSE(decodeStatus(p.bytes, p.size + 1, d));
+  p.bytes[23] = 0xE9;  // offset y 1001 mm: out of range
+  EXPECT_FALSE(decodeStatus(p.bytes, p.size, d));
+  p.bytes[23] = 0xE8;
+  EXPECT_TRUE(decodeStatus(p.bytes, p.size, d));
   p.bytes[0] = 9;  // mode out of range
   EXPECT_FALSE(decodeStatus(p.bytes, p.size, d));
 
