@@ -110,8 +110,8 @@ int runEmuRoomBench(const std::string& scenarioDir) {
   // One standard error of the mean difference: the runs are chaotic (an image whose code lies elsewhere times its
   // pings otherwise and maps another room), so the gap of a few seeds is known only to about this.
   const double meanDiff = (sumE.aligned - sumH.aligned) / seeds;
-  const double se =
-      seeds > 1 ? std::sqrt(std::max(0.0, sumDiff2 / seeds - meanDiff * meanDiff) * seeds / (seeds - 1) / seeds) : 0.0;
+  const double variance = seeds > 1 ? std::max(0.0, sumDiff2 - seeds * meanDiff * meanDiff) / (seeds - 1) : 0.0;
+  const double se = std::sqrt(variance / seeds);
   const bool ok = gap <= kTargetPoints;
   std::printf("  mean detected: brick %.1f %% (aligned %.1f), host %.1f %% (aligned %.1f); lost %d / %d of %d\n",
               sumE.detected / seeds, sumE.aligned / seeds, sumH.detected / seeds, sumH.aligned / seeds, sumE.lost,

@@ -30,12 +30,13 @@ bool RadioMirror::follow(emu::EmulatedRun& run, uint64_t cycles, bool untilExplo
   }
   const bool explored = untilExplored && run.readSymbolByte("g_explorerDone").value_or(0) == 1;
   const bool quiet = step(static_cast<uint32_t>(cycles / (emu::kMckHz / 1000)), explored);
-  if (started_ && !start_.offsetKnown && session_.statusesReceived() > statusesAtStart_) {
+  if (started_ && !offsetLooked_ && session_.statusesReceived() > statusesAtStart_) {
     // The first Status since the explorer began: its offset, with the robot where it stands as it arrives (it
     // reads on the spot first); a robot already gone from its start cell keeps the centre alone.
     const protocol::StatusMsg& s = *session_.status();
-    start_.offsetKnown = true;
+    offsetLooked_ = true;
     if (s.pose.cell == Cell{0, 0} && s.pose.heading == Dir::North) {
+      start_.offsetKnown = true;
       start_.centreCm = sim::Vec2(r.xCm(), r.yCm());
       start_.headingDeg = r.headingDeg();
       start_.offsetXCm = s.offsetXMm / 10.0;

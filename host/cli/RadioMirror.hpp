@@ -54,6 +54,7 @@ class RadioMirror {
   uint32_t changedMs_ = 0;
   bool started_ = false;
   uint64_t statusesAtStart_ = 0;  // statuses received before the first map cells
+  bool offsetLooked_ = false;     // the first Status since then was looked at (ExplorerStart::offsetKnown or not)
   ExplorerStart start_;
 };
 
