@@ -2,6 +2,7 @@
 
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 
 #include "host/console/ConsoleCommand.hpp"
 
@@ -43,7 +44,27 @@ std::string HouseExploration::start(link::Session& s, double nowS) {
   return "mapping the house: " + send(s, planner_->start());
 }
 
+// An order the brick's decoder would refuse is never sent (Session throws): a crossing is taken as
+// blocked (the planner tries another exit), anything else stops the house, saying why.
 std::string HouseExploration::send(link::Session& s, const house::HouseOrder& o) {
+  try {
+    return sendOrder(s, o);
+  } catch (const std::invalid_argument& e) {
+    if (o.kind == Kind::Cross && s.status()) {
+      house::HouseReport r;
+      r.kind = house::HouseReport::Kind::CrossBlocked;
+      r.pose = s.status()->pose;
+      return std::string("house: an exit not sent to the brick (") + e.what() + "): taken as blocked\n" +
+             send(s, planner_->on(r));
+    }
+    wait_ = Wait::Nothing;
+    active_ = false;
+    stopped_ = std::string("an order the brick would refuse: ") + e.what();
+    return "house stopped: " + stopped_ + "; " + progress() + "\n";
+  }
+}
+
+std::string HouseExploration::sendOrder(link::Session& s, const house::HouseOrder& o) {
   stillFrom_ = 0;
   switch (o.kind) {
     case Kind::ExploreFirstRoom:
@@ -83,15 +104,15 @@ void HouseExploration::sendTravel(link::Session& s, const house::HouseOrder& o) 
 }
 
 void HouseExploration::sendCross(link::Session& s, const house::HouseOrder& o) {
-  ++room_;
   protocol::EnterRoomMsg m;
-  m.roomId = room_;
+  m.roomId = static_cast<uint16_t>(room_ + 1);
   m.strategy = protocol::ExploreStrategy::Frontier;
   m.door = protocol::doorwayMessage(o.exit.door);
   m.outward = o.exit.outward;
   m.inside = o.exit.inside;
-  s.setPose(o.at);
+  s.setPose(o.at);  // where the planner believes the robot stands: harmless if the crossing is refused
   enterSeq_ = s.enterRoom(m);
+  ++room_;
   statusesAtAck_ = 0;
   wait_ = Wait::Cross;
   stood_.clear();

@@ -48,6 +48,7 @@ class HouseExploration {
  private:
   enum class Wait { Nothing, Room, Goal, Cross, Scan };
   std::string send(link::Session& s, const house::HouseOrder& o);
+  std::string sendOrder(link::Session& s, const house::HouseOrder& o);
   void sendTravel(link::Session& s, const house::HouseOrder& o);
   void sendCross(link::Session& s, const house::HouseOrder& o);
   // The report the brick gave for the current order, once it is complete.

@@ -1,5 +1,6 @@
 #include "host/house/OpeningSearch.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace nxtmap::house {
@@ -49,7 +50,8 @@ std::optional<Opening> findOpening(const network::HouseNetwork& network, const n
           o.room = static_cast<int>(r);
           o.inside = inside;
           o.outward = roomDir;
-          for (int i = 0; i < width; ++i)
+          const int kept = std::min(width, limits.maxWidth), first = width / 2 - kept / 2;
+          for (int i = first; i < first + kept; ++i)
             o.cells.push_back(advance(advance(start, along, static_cast<int16_t>(i)), roomDir));
           best = o;
         }

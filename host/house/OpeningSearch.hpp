@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/grid/Cell.hpp"
+#include "common/protocol/HouseMessages.hpp"
 #include "host/network/HouseNetwork.hpp"
 #include "host/network/RoomMap.hpp"
 
@@ -16,7 +17,7 @@ namespace nxtmap::house {
 
 struct Opening {
   int room = -1;             // the room whose free cells face the unknown
-  std::vector<Cell> cells;   // the first unknown cells beyond, in the room's frame (to cross)
+  std::vector<Cell> cells;   // the first unknown cells beyond, room frame (to cross; at most maxWidth)
   Cell inside{};             // the room's free cell in front of the middle, room frame
   Dir outward = Dir::North;  // towards the unknown, room frame
 };
@@ -24,6 +25,8 @@ struct Opening {
 struct OpeningLimits {
   int minWidth = 4;  // cells side by side
   int depth = 6;     // unknown cells straight beyond each
+  // The cells to cross, centred on the inside cell, at most: the widest doorway an EnterRoom holds.
+  int maxWidth = protocol::kMaxDoorwayWidth;
 };
 
 // The widest opening of any room of `network` onto cells `known` (house frame) holds unknown,

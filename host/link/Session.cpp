@@ -10,6 +10,20 @@ namespace nxtmap::link {
 
 using namespace protocol;
 
+namespace {
+
+// A command's bytes, as the brick's own decoder takes them; std::invalid_argument(`refused`) when that
+// decoder would refuse them (the brick acknowledges a malformed command and never runs it).
+template <class Msg, class Encode, class Decode>
+Payload brickWillTake(const Msg& m, Encode encode, Decode decode, const char* refused) {
+  Payload p;
+  Msg back;
+  if (encode(m, p) == 0 || !decode(p.bytes, p.size, back)) throw std::invalid_argument(refused);
+  return p;
+}
+
+}  // namespace
+
 Session::Session(const SessionConfig& config) : config_(config) {
   while (config_.session == 0) config_.session = std::random_device{}();
 }
@@ -22,26 +36,22 @@ uint16_t Session::enqueue(Op op, const Payload& payload) {
 }
 
 uint16_t Session::explore(const ExploreMsg& how) {
-  Payload p;
-  encodeExplore(how, p);
-  return enqueue(Op::Explore, p);
+  return enqueue(Op::Explore, brickWillTake(how, encodeExplore, decodeExplore, "an Explore needs a known strategy"));
 }
 
 uint16_t Session::goTo(uint16_t goalId, Cell target) {
-  Payload p;
-  if (encodeGoTo(GoToMsg{goalId, target}, p) == 0) throw std::invalid_argument("the goal's cell is out of range");
-  return enqueue(Op::GoTo, p);
+  return enqueue(Op::GoTo,
+                 brickWillTake(GoToMsg{goalId, target}, encodeGoTo, decodeGoTo, "the goal's cell is out of range"));
 }
 
 uint16_t Session::enterRoom(const EnterRoomMsg& m) {
-  Payload p;
-  if (encodeEnterRoom(m, p) == 0) throw std::invalid_argument("the doorway does not fit a packet");
-  return enqueue(Op::EnterRoom, p);
+  return enqueue(Op::EnterRoom,
+                 brickWillTake(m, encodeEnterRoom, decodeEnterRoom,
+                               "the doorway is not one the brick can cross (1..32 cells wide, 1..8 deep, "
+                               "entered by one step outward from the inside cell)"));
 }
 uint16_t Session::scan(uint16_t scanId) {
-  Payload p;
-  if (encodeScan(ScanMsg{scanId}, p) == 0 || scanId == 0) throw std::invalid_argument("a scan's id is 1..65535");
-  return enqueue(Op::Scan, p);
+  return enqueue(Op::Scan, brickWillTake(ScanMsg{scanId}, encodeScan, decodeScan, "a scan's id is 1..65535"));
 }
 uint16_t Session::stop() { return enqueue(Op::Stop, Payload{}); }
 uint16_t Session::requestMap() { return enqueue(Op::RequestMap, Payload{}); }
@@ -57,9 +67,7 @@ uint16_t Session::followPath(const std::vector<Cell>& cells, uint16_t pathId) {
   for (const Cell c : cells) {
     if (!m.append(c)) throw std::invalid_argument("the path's cells must be 8-neighbours, one after another");
   }
-  Payload p;
-  if (encodePath(m, p) == 0) throw std::invalid_argument("the path does not fit a packet");
-  return enqueue(Op::FollowPath, p);
+  return enqueue(Op::FollowPath, brickWillTake(m, encodePath, decodePath, "the path's cells are out of range"));
 }
 
 void Session::uploadMap(const Bounds& window, const std::vector<CellState>& rowMajor, uint16_t transferId) {
@@ -81,16 +89,12 @@ void Session::uploadMap(const Bounds& window, const std::vector<CellState>& rowM
     m.offset = static_cast<uint16_t>(k * per);
     m.count = static_cast<uint16_t>(std::min<size_t>(per, total - m.offset));
     for (uint16_t i = 0; i < m.count; ++i) m.setState(i, rowMajor[m.offset + i]);
-    Payload p;
-    encodeMapChunk(m, p);
-    enqueue(Op::MapChunk, p);
+    enqueue(Op::MapChunk, brickWillTake(m, encodeMapChunk, decodeMapChunk, "the map's window is out of range"));
   }
 }
 
 uint16_t Session::setPose(const Pose& pose) {
-  Payload p;
-  if (encodePose(PoseMsg{pose}, p) == 0) throw std::invalid_argument("the pose does not fit a packet");
-  return enqueue(Op::SetPose, p);
+  return enqueue(Op::SetPose, brickWillTake(PoseMsg{pose}, encodePose, decodePose, "the pose's cell is out of range"));
 }
 
 std::vector<RoomChange> Session::takeRoomChanges() {

@@ -71,7 +71,8 @@ class Session {
   // The transport dropped: bytes in flight are gone; say Hello again.
   void linkLost();
 
-  // Commands, queued and sent in order. Each returns its sequence number.
+  // Commands, queued and sent in order. Each returns its sequence number. A command the brick's own
+  // decoder would refuse is not queued: std::invalid_argument says why.
   // Explore: the frontier explorer, not confined, unless `how` says otherwise.
   uint16_t explore(const protocol::ExploreMsg& how = protocol::ExploreMsg{});
   // Mapping a house: drive to a cell of the brick's map (progress as PathProgress with pathId =

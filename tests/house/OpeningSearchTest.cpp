@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "DrawnMap.hpp"
+#include "common/house/RoomExit.hpp"
 #include "host/house/OpeningSearch.hpp"
 
 namespace nxtmap::house {
@@ -73,6 +74,28 @@ TEST(OpeningSearch, AnOpeningTriedBeforeIsNotOfferedAgain) {
   EXPECT_FALSE(findOpening(n, n.merged(), {Cell{3, 3}}).has_value());
   EXPECT_FALSE(findOpening(n, n.merged(), {Cell{4, 2}}).has_value());  // within 2 cells
   EXPECT_TRUE(findOpening(n, n.merged(), {Cell{9, 9}}).has_value());
+}
+
+TEST(OpeningSearch, AnOpeningWiderThanADoorwayTheBrickTakesIsCrossedAtItsMiddle) {
+  // A room 40 cells wide with no top wall: the brick's EnterRoom holds a doorway of at most 32 cells.
+  const std::string wall(42, '#'), inside = "#" + std::string(40, '.') + "#";
+  const network::HouseNetwork n = houseOf(drawMap({"." + std::string(40, '.') + ".", inside, inside, wall}));
+  const std::optional<Opening> o = findOpening(n, n.merged(), {});
+  ASSERT_TRUE(o.has_value());
+  ASSERT_EQ(o->cells.size(), static_cast<size_t>(protocol::kMaxDoorwayWidth));
+  EXPECT_EQ(o->cells.front(), (Cell{5, 4}));  // 42 free cells from x 0: the middle 32
+  EXPECT_EQ(o->cells.back(), (Cell{36, 4}));
+  EXPECT_EQ(o->inside, (Cell{21, 3}));
+  // As the console sends it: one step outward from the inside cell enters the doorway.
+  protocol::EnterRoomMsg m;
+  m.roomId = 2;
+  m.door = protocol::doorwayMessage(doorwayAround(o->cells.data(), static_cast<int>(o->cells.size())));
+  m.outward = o->outward;
+  m.inside = o->inside;
+  protocol::Payload p;
+  protocol::EnterRoomMsg back;
+  ASSERT_NE(protocol::encodeEnterRoom(m, p), 0u);
+  EXPECT_TRUE(protocol::decodeEnterRoom(p.bytes, p.size, back));
 }
 
 }  // namespace
