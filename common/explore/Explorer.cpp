@@ -129,6 +129,17 @@ Action Explorer::settle(const Action& a) {
     forgotten_ = 0;
     return Action::think();  // the scan runs in slices (continueProveScan)
   }
+#ifndef NXTMAP_NO_START_SQUARING
+  // Still nothing, with turns refused where one stalled: a stall says as much about where in its cell the robot
+  // stood as about the cell (a robot trapped by its own stalls gave up with most of a room unknown). Before giving
+  // up, the stalls are forgotten once and the robot looks again, turning anywhere.
+  if (!retriedStalls_ && stalledTurns_.count > 0) {
+    retriedStalls_ = true;
+    stalledTurns_.count = 0;
+    if (config_.turnNeedsRoom) waiveRoom(true);
+    return settle(decide());
+  }
+#endif
   return finish(ExplorerEnd::Complete);
 }
 

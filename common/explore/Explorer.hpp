@@ -137,6 +137,7 @@ class Explorer {
     bool full() const { return count == kCapacity; }
   };
   StalledTurns stalledTurns_;
+  bool retriedStalls_ = false;  // the stalled turns were forgotten once, before giving up (settle)
 #else
   bool roomWaived() const { return false; }
 #endif

@@ -47,5 +47,21 @@ TEST(RoomWaiver, NoTurnIsTriedAgainWhereOneStalled) {
   EXPECT_EQ(run.explorer->counters().blockedMoves, 1u);
 }
 
+TEST(RoomWaiver, ATurnThatStalledIsTriedOnceMoreBeforeTheRobotGivesUp) {
+  // The corridor of the first test: the turn into the row, the only way on, stalls the first time (the robot stood
+  // a few mm off where a later try finds room). Before giving up with the row unknown, the robot turns there again.
+  const TextWorld world({"##################", "#................#", "########.#########", "########.#########",
+                         "########S#########", "##################"});
+  ScriptedRun run;
+  run.stallFirstTurn = true;
+  run.go(world);
+  ASSERT_TRUE(run.stalled);
+  ASSERT_TRUE(run.explorer->finished());
+  EXPECT_EQ(run.explorer->end(), ExplorerEnd::Complete);
+  EXPECT_GE(run.turnsAtStalled, 1);
+  EXPECT_EQ(run.map.at(Cell{-8, 3}), CellState::Occupied);
+  EXPECT_EQ(run.map.at(Cell{9, 3}), CellState::Occupied);
+}
+
 }  // namespace
 }  // namespace nxtmap
