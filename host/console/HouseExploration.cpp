@@ -44,19 +44,13 @@ std::string HouseExploration::start(link::Session& s, double nowS) {
   return "mapping the house: " + send(s, planner_->start());
 }
 
-// An order the brick's decoder would refuse is never sent (Session throws): a crossing is taken as
-// blocked (the planner tries another exit), anything else stops the house, saying why.
+// An order the brick's decoder would refuse is never sent (Session throws; the planner makes none: its
+// openings are cut to the widest doorway an EnterRoom holds): the house stops there, saying why, with
+// what it has mapped kept.
 std::string HouseExploration::send(link::Session& s, const house::HouseOrder& o) {
   try {
     return sendOrder(s, o);
   } catch (const std::invalid_argument& e) {
-    if (o.kind == Kind::Cross && s.status()) {
-      house::HouseReport r;
-      r.kind = house::HouseReport::Kind::CrossBlocked;
-      r.pose = s.status()->pose;
-      return std::string("house: an exit not sent to the brick (") + e.what() + "): taken as blocked\n" +
-             send(s, planner_->on(r));
-    }
     wait_ = Wait::Nothing;
     active_ = false;
     stopped_ = std::string("an order the brick would refuse: ") + e.what();
@@ -110,7 +104,7 @@ void HouseExploration::sendCross(link::Session& s, const house::HouseOrder& o) {
   m.door = protocol::doorwayMessage(o.exit.door);
   m.outward = o.exit.outward;
   m.inside = o.exit.inside;
-  s.setPose(o.at);  // where the planner believes the robot stands: harmless if the crossing is refused
+  s.setPose(o.at);
   enterSeq_ = s.enterRoom(m);
   ++room_;
   statusesAtAck_ = 0;
