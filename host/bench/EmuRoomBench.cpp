@@ -72,9 +72,12 @@ int runEmuRoomBench(const std::string& scenarioDir) {
   const std::string fw = env ? env : "build/firmware/nxtmap.elf";
   const char* seedsEnv = std::getenv("NXTMAP_EMU_ROOM_SEEDS");
   const int seeds = seedsEnv ? std::max(1, std::atoi(seedsEnv)) : 5;
+  // The first seed (default 1): a long run split over several processes, one range each.
+  const char* firstEnv = std::getenv("NXTMAP_EMU_ROOM_FIRST_SEED");
+  const int first = firstEnv ? std::max(1, std::atoi(firstEnv)) : 1;
   std::cout << "\nemulated brick room: " << fw << " on occupancy-089 from " << kStart
-            << ", brick robot, noise nxt, start jitter " << kJitterDeg << " deg, seeds 1-" << seeds
-            << "; host: the same with MappingRun (propagation)\n";
+            << ", brick robot, noise nxt, start jitter " << kJitterDeg << " deg, seeds " << first << "-"
+            << first + seeds - 1 << "; host: the same with MappingRun (propagation)\n";
   emu::ElfLoad load = emu::ElfImage::load(fw);
   const sim::RobotDescription brick = *sim::robotByName("brick");
   if (!load.image) {
@@ -94,7 +97,7 @@ int runEmuRoomBench(const std::string& scenarioDir) {
     sum.lost += f.lost;
     sum.maxPerUpdate = std::max(sum.maxPerUpdate, f.maxPerUpdate);
   };
-  for (int s = 1; s <= seeds; ++s) {
+  for (int s = first; s < first + seeds; ++s) {
     const Figures e = emulated(*load.image, site, brick, noise, static_cast<uint64_t>(s));
     const Figures h = host(site, brick, noise, static_cast<uint64_t>(s));
     // instr: the brick's costliest sensor update in that run (instructions).

@@ -11,7 +11,8 @@
 
 namespace nxtmap::bench {
 
-// occupancy-089 from 1,20, seeds 1..NXTMAP_EMU_ROOM_SEEDS (default 5). Returns the targets missed.
+// occupancy-089 from 1,20, NXTMAP_EMU_ROOM_SEEDS seeds (default 5) from NXTMAP_EMU_ROOM_FIRST_SEED (default 1).
+// Returns the targets missed.
 int runEmuRoomBench(const std::string& scenarioDir);
 
 }  // namespace nxtmap::bench
