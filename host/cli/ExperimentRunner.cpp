@@ -107,6 +107,13 @@ report::RunResult runOnce(const sim::World& world, const mapping::RunConfig& con
   return resultOf(run);
 }
 
+WheelCalibration firstOutingWheels(const Suite& suite, size_t scenario, const SuiteSettings& settings, uint64_t seed) {
+  const report::Scenario& s = suite.scenarios[scenario];
+  mapping::MappingRun run(suite.site(s), scenarioConfig(s, settings, seed));
+  run.runToEnd();
+  return run.pilot().wheels();
+}
+
 report::ExperimentTable runSuite(const Suite& suite, mapping::Strategy strategy, const std::string& noiseName,
                                  int seeds, const Progress& progress, size_t doneBefore, size_t total) {
   SuiteSettings settings;
@@ -125,12 +132,16 @@ report::ExperimentTable runSuite(const Suite& suite, const SuiteSettings& settin
   table.seeds = settings.seeds;
   if (total == 0) total = suite.scenarios.size() * static_cast<size_t>(settings.seeds);
   size_t done = doneBefore;
-  for (const report::Scenario& s : suite.scenarios) {
+  for (size_t i = 0; i < suite.scenarios.size(); ++i) {
+    const report::Scenario& s = suite.scenarios[i];
     report::ExperimentRow row;
     row.scenario = s;
     for (int seed = 1; seed <= settings.seeds; ++seed) {
       if (progress) progress(done, total, s.id);
-      mapping::MappingRun run(suite.site(s), scenarioConfig(s, settings, static_cast<uint64_t>(seed)));
+      mapping::RunConfig config = scenarioConfig(s, settings, static_cast<uint64_t>(seed));
+      if (settings.afterFirstOuting)
+        config.storedWheels = firstOutingWheels(suite, (i + 1) % suite.scenarios.size(), settings, config.seed);
+      mapping::MappingRun run(suite.site(s), config);
       run.runToEnd();
       row.perSeed.push_back(resultOf(run, s.id, gridFull));
       ++done;

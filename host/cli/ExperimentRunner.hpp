@@ -39,6 +39,9 @@ struct SuiteSettings {
   bool squareAtStart = false;  // the pilot turns square to the walls before mapping
   int calibrateTurns = 0;      // > 0: and measures its turns' error first (RunConfig::calibrateTurns)
   mapping::GridCapacity grid = mapping::GridCapacity::brick();
+  // Each run's robot first maps the suite's next layout with nothing stored (its first outing, the same seed:
+  // the same wheels) and starts with the wheels it learnt there, as a brick keeps them from run to run.
+  bool afterFirstOuting = false;
 };
 
 // A run that met the grid's edge (MappingRun::metGridEdge): its room was larger than the grid.
@@ -53,6 +56,10 @@ mapping::RunConfig scenarioConfig(const report::Scenario& s, mapping::Strategy s
                                   uint64_t seed);
 // The same for a robot and a start jitter.
 mapping::RunConfig scenarioConfig(const report::Scenario& s, const SuiteSettings& settings, uint64_t seed);
+
+// The wheels a robot (`seed`: its wheels' systematic errors) learns mapping `scenario` of the suite with
+// nothing stored (Pilot::wheels at the run's end).
+WheelCalibration firstOutingWheels(const Suite& suite, size_t scenario, const SuiteSettings& settings, uint64_t seed);
 
 // The figures of a finished run.
 report::RunResult resultOf(const mapping::MappingRun& run);

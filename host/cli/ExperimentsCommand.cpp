@@ -74,6 +74,9 @@ CLI::App* addExperimentsCommand(CLI::App& app, ExperimentsOptions& o) {
   addSquareOption(*ex, o.run);
   ex->add_option("--seeds", o.seeds, "runs per scenario with seeds 1..N, reported as means (default 1)");
   ex->add_option("--strategy", o.strategy, "propagation, frontier or both (default propagation)");
+  ex->add_flag("--after-first-outing", o.afterFirstOuting,
+               "each robot (seed) first maps the next layout with nothing stored and starts the measured run with "
+               "the wheels' errors it learnt there, as the brick keeps them from run to run (twice the runs)");
   return ex;
 }
 
@@ -93,6 +96,7 @@ int runExperiments(const ExperimentsOptions& o) {
     settings.calibrateTurns = 4;
   }
   settings.grid = gridOf(o.run);
+  settings.afterFirstOuting = o.afterFirstOuting;
   if (o.seeds < 1 || o.seeds > 1000) throw CliError("--seeds must lie in 1..1000, not " + std::to_string(o.seeds));
   if (!o.plots.empty() && report::findGnuplot().empty()) {
     throw CliError("--plots needs gnuplot, which is not on PATH; install gnuplot or leave out --plots");

@@ -19,6 +19,7 @@ struct ExperimentsOptions {
   WorldRunOptions run;  // --noise, --robot (brick: the layouts scaled to 20 cm cells), --start-jitter, --grid
   int seeds = 1;
   std::string strategy = "propagation";  // or frontier, both
+  bool afterFirstOuting = false;         // --after-first-outing (SuiteSettings::afterFirstOuting)
 };
 
 CLI::App* addExperimentsCommand(CLI::App& app, ExperimentsOptions& options);

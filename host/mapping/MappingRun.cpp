@@ -71,7 +71,7 @@ MappingRun::MappingRun(Setup setup, const RunConfig&)
   startMovedCm_ = setup.placed.startMovedCm;
   PilotConfig pilot;
   pilot.correct = config_.poseCorrection;
-  pilot.wheels = storedCalibration(config_.noise.wheels);
+  pilot.wheels = config_.storedWheels ? *config_.storedWheels : storedCalibration(config_.noise.wheels);
   pilot.sonarConeMrad = sonarConeMrad(config_.noise.sonar);
   if (config_.calibrateTurns > 0) config_.squareAtStart = true;
   if (config_.squareAtStart) pilot.squareSweepMrad = 1571;

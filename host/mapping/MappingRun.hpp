@@ -38,6 +38,9 @@ struct RunConfig {
   double beamHalfAngleDeg = -1.0;  // the robot's sonar beam, known to it (< 0: the noise profile's cone)
   int blindCm = -1;                // the sensor's blind zone, known to it (< 0: the noise profile's, sonarBlindCm)
   bool poseCorrection = true;      // the pilot keeps the robot on the grid (off: dead reckoning)
+  // What the robot holds of its wheels from earlier runs (what a pilot learnt: Pilot::wheels), as the brick keeps
+  // it; empty: nothing stored, the wheels' error sizes only (storedCalibration).
+  std::optional<WheelCalibration> storedWheels;
   uint16_t searchSliceStates = 8;  // travel-search states per explorer step (brick CPU budget)
   // The firmware pings one sensor at a time (single shot, SonarSequencer); true fires every read as if the
   // other sensors pinged at the same moment (continuous mode), so their cross-talk shows.
