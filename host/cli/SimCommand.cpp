@@ -12,6 +12,7 @@
 
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
+#include "host/cli/WheelFile.hpp"
 #include "host/fileio/AtomicFile.hpp"
 #include "host/fileio/OutputTarget.hpp"
 #include "host/mapio/MapFiles.hpp"
@@ -111,6 +112,9 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
   sim->add_option("--trace", o.trace,
                   "write a CSV of the pose the robot believes and the pose it truly has after every action "
                   "(explorer frame, mm and mrad), to see where a lost run went astray");
+  sim->add_option("--wheels", o.wheels,
+                  "the wheels' errors the robot keeps (YAML), as the brick keeps them from run to run: read at the "
+                  "start when the file exists (else nothing is stored), what the run learnt written at its end");
   return sim;
 }
 
@@ -205,8 +209,13 @@ int runSim(const SimOptions& o) {
   if (!o.trace.empty() && std::filesystem::path(o.trace).extension() != ".csv") {
     throw CliError("--trace must name a .csv file, not '" + o.trace + "'");
   }
-  for (const std::string& out : {o.png, o.save, o.trace}) {
+  for (const std::string& out : {o.png, o.save, o.trace, o.wheels}) {
     if (!out.empty() && !fileio::resolveOutputTarget(out, outputError)) throw CliError(outputError);
+  }
+  if (!o.wheels.empty()) {
+    std::string error;
+    config.storedWheels = readWheelFile(o.wheels, error);
+    if (!error.empty()) throw CliError(error);
   }
   const sim::Site site = loadSiteFile(o.world, robot.cellCm);
   config.startPose = parseSiteStart(site, o.start, o.heading);
@@ -256,6 +265,7 @@ int runSim(const SimOptions& o) {
   out << "\n";
   if (run.config().squareAtStart) out << squareLine(run) << "\n";
   if (config.calibrateTurns > 0) out << calibrationLine(run) << "\n";
+  if (config.storedWheels) out << "wheels stored    read from " << o.wheels << "\n";
   out << wheelsLine(run) << "\n";
   out << "end              " << endName(run.explorer().end())
       << (run.metGridEdge() && run.explorer().end() == ExplorerEnd::Complete ? " (up to the grid's edge)" : "") << "\n"
@@ -296,6 +306,11 @@ int runSim(const SimOptions& o) {
     std::string error;
     if (!mapio::saveRosMap(exploredMap(run), o.save, error)) throw CliError(error);
     std::cout << "wrote " << o.save << " and " << mapio::pgmNameFor(o.save) << "\n";
+  }
+  if (!o.wheels.empty()) {
+    std::string error;
+    if (!fileio::writeFileAtomically(o.wheels, wheelFileText(run.pilot().wheels()), error)) throw CliError(error);
+    std::cout << "wrote " << o.wheels << ": the wheels learnt, for the next run\n";
   }
   return kExitOk;
 }

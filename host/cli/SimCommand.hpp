@@ -25,6 +25,7 @@ struct SimOptions {
   std::string png;             // optional PNG of the final map
   std::string save;            // optional ROS map_server YAML (+PGM) of the explored map, world frame
   std::string trace;           // optional CSV of the believed and true pose after every action (mapping::RunTrace)
+  std::string wheels;          // optional wheels file (WheelFile): read at the start if it exists, written at the end
 };
 
 // Registers the subcommand; the options are filled in by CLI11.
