@@ -29,6 +29,7 @@ constexpr double kJitterDeg = 10.0;
 // Brick rooms under one preset and strategy, summed over every layout and seed.
 struct RoomFigures {
   double detected = 0, worst = 100, wrongPct = 0, unsafePct = 0;
+  double headingOffPct = 0, positionOffPct = 0;  // means over the runs (mapping::PoseErrorShare)
   int runs = 0, lost = 0;
 };
 
@@ -62,9 +63,13 @@ RoomFigures brickRooms(const cli::Suite& suite, const std::string& noise, mappin
       occupied += r.actualOccupied;
       wrong += r.wrongCells;
       unsafe += r.unsafeFree;
+      f.headingOffPct += r.headingOffPct;
+      f.positionOffPct += r.positionOffPct;
     }
   }
   f.detected /= std::max(1, f.runs);
+  f.headingOffPct /= std::max(1, f.runs);
+  f.positionOffPct /= std::max(1, f.runs);
   f.wrongPct = room > 0 ? 100.0 * wrong / room : 0;
   f.unsafePct = occupied > 0 ? 100.0 * unsafe / occupied : 0;
   return f;
@@ -154,6 +159,10 @@ int runAcceptanceBench() {
       row("brick rooms, nxt: lost runs", p.lost, fr.lost, "0", false, 0, 0),
       row("brick rooms, nxt: wrong cells % of the room", p.wrongPct, fr.wrongPct, "<= 2", false, 2, 2),
       row("brick rooms, nxt: unsafe free % of occupied", p.unsafePct, fr.unsafePct, "<= 1", false, 1, 2),
+      {"brick rooms, nxt: % of actions with the heading > 40 mrad off", formatNumber(p.headingOffPct, 1),
+       formatNumber(fr.headingOffPct, 1), "(info)", "measured"},
+      {"brick rooms, nxt: % of actions with the centre > 1/4 cell off", formatNumber(p.positionOffPct, 1),
+       formatNumber(fr.positionOffPct, 1), "(info)", "measured"},
       {"brick rooms, nxt-uncalibrated: mean detected %", formatNumber(up.detected, 1), formatNumber(uf.detected, 1),
        "(info)", "measured"},
       {"uncalibrated: points under nxt (the better of each)", "", formatNumber(gap, 1), "<= 2",

@@ -5,6 +5,7 @@
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
 #include "host/mapping/MapScore.hpp"
+#include "host/mapping/PoseErrorShare.hpp"
 
 namespace nxtmap::cli {
 
@@ -52,7 +53,8 @@ mapping::RunConfig scenarioConfig(const report::Scenario& s, mapping::Strategy s
   return c;
 }
 
-report::RunResult resultOf(const mapping::MappingRun& run) {
+namespace {
+report::RunResult resultOf(const mapping::MappingRun& run, const mapping::PoseErrorShare& pose) {
   const mapping::MapScore s = mapping::scoreRun(run);
   const Counters c = run.counters();
   report::RunResult r;
@@ -74,15 +76,26 @@ report::RunResult resultOf(const mapping::MappingRun& run) {
   r.lost = s.lost ? 1.0 : 0.0;
   r.detectedPctAligned = s.detectedPctAligned();
   r.wrongCellsAligned = s.wrongCellsAligned;
+  r.headingOffPct = pose.headingOffPct();
+  r.positionOffPct = pose.positionOffPct();
   return r;
 }
+}  // namespace
 
-report::RunResult resultOf(const mapping::MappingRun& run, const std::string& id, std::vector<GridFullRun>* gridFull) {
+report::RunResult runAndScore(mapping::MappingRun& run) {
+  mapping::PoseErrorShare pose;
+  while (run.step()) pose.add(run);
+  pose.add(run);
+  return resultOf(run, pose);
+}
+
+report::RunResult runAndScore(mapping::MappingRun& run, const std::string& id, std::vector<GridFullRun>* gridFull) {
+  const report::RunResult r = runAndScore(run);
   if (gridFull && run.metGridEdge()) {
     gridFull->push_back(
         GridFullRun{id, static_cast<int>(run.config().seed), run.world().width(), run.world().height()});
   }
-  return resultOf(run);
+  return r;
 }
 
 mapping::RunConfig scenarioConfig(const report::Scenario& s, const SuiteSettings& settings, uint64_t seed) {
@@ -97,14 +110,12 @@ mapping::RunConfig scenarioConfig(const report::Scenario& s, const SuiteSettings
 
 report::RunResult runOnce(const sim::Site& site, const mapping::RunConfig& config) {
   mapping::MappingRun run(site, config);
-  run.runToEnd();
-  return resultOf(run);
+  return runAndScore(run);
 }
 
 report::RunResult runOnce(const sim::World& world, const mapping::RunConfig& config) {
   mapping::MappingRun run(world, config);
-  run.runToEnd();
-  return resultOf(run);
+  return runAndScore(run);
 }
 
 WheelCalibration firstOutingWheels(const Suite& suite, size_t scenario, const SuiteSettings& settings, uint64_t seed) {
@@ -142,8 +153,7 @@ report::ExperimentTable runSuite(const Suite& suite, const SuiteSettings& settin
       if (settings.afterFirstOuting)
         config.storedWheels = firstOutingWheels(suite, (i + 1) % suite.scenarios.size(), settings, config.seed);
       mapping::MappingRun run(suite.site(s), config);
-      run.runToEnd();
-      row.perSeed.push_back(resultOf(run, s.id, gridFull));
+      row.perSeed.push_back(runAndScore(run, s.id, gridFull));
       ++done;
     }
     row.summarize();

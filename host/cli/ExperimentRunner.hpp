@@ -61,10 +61,11 @@ mapping::RunConfig scenarioConfig(const report::Scenario& s, const SuiteSettings
 // nothing stored (Pilot::wheels at the run's end).
 WheelCalibration firstOutingWheels(const Suite& suite, size_t scenario, const SuiteSettings& settings, uint64_t seed);
 
-// The figures of a finished run.
-report::RunResult resultOf(const mapping::MappingRun& run);
+// Runs `run` to its end and gives its figures, the localisation counted after every action
+// (mapping::PoseErrorShare).
+report::RunResult runAndScore(mapping::MappingRun& run);
 // The same, and the run (id, seed, room) added to `gridFull` when it met the grid's edge (nullptr: not recorded).
-report::RunResult resultOf(const mapping::MappingRun& run, const std::string& id, std::vector<GridFullRun>* gridFull);
+report::RunResult runAndScore(mapping::MappingRun& run, const std::string& id, std::vector<GridFullRun>* gridFull);
 // One full run.
 report::RunResult runOnce(const sim::World& world, const mapping::RunConfig& config);
 report::RunResult runOnce(const sim::Site& site, const mapping::RunConfig& config);

@@ -18,6 +18,7 @@
 #include "host/mapio/MapFiles.hpp"
 #include "host/mapping/MapScore.hpp"
 #include "host/mapping/MappingRun.hpp"
+#include "host/mapping/PoseErrorShare.hpp"
 #include "host/mapping/RunTrace.hpp"
 #include "host/report/ExperimentTable.hpp"
 #include "host/report/MapImage.hpp"
@@ -228,11 +229,13 @@ int runSim(const SimOptions& o) {
   std::ostringstream traceText;
   std::optional<mapping::RunTrace> trace;
   if (!o.trace.empty()) trace.emplace(traceText);
+  mapping::PoseErrorShare pose;
   if (show == Show::Live) drawFrame(run, textOptions, true);
   for (uint64_t n = 1; !run.finished(); ++n) {
     const DriveAction done = run.lastAction();
     run.step();
     if (trace) trace->record(run, n, done);
+    pose.add(run);
     if (show != Show::Live) continue;
     // Redraw when the robot moved or turned (reads and steering alone would make the display crawl).
     const bool turned = done.kind == DriveAction::Kind::Rotate && (done.value > 700 || done.value < -700);
@@ -288,7 +291,10 @@ int runSim(const SimOptions& o) {
       << "aligned          map turned " << num(s.alignRotationDeg) << " deg, moved " << num(s.alignShiftCol) << ","
       << num(s.alignShiftRow) << " cells to fit the world best: detected " << num(s.detectedPctAligned())
       << " %, wrong " << s.wrongCellsAligned << ", unsafe free " << s.unsafeFreeAligned << ", lost "
-      << (s.lostAligned ? "yes" : "no") << "\n";
+      << (s.lostAligned ? "yes" : "no") << "\n"
+      << "off its belief   heading over " << num(mapping::PoseErrorShare::kHeadingMrad) << " mrad for "
+      << num(pose.headingOffPct()) << " % of the actions, centre over a quarter cell for " << num(pose.positionOffPct())
+      << " %\n";
   if (run.metGridEdge()) out << gridFullNote(config.grid, robot.cellCm, world.width(), world.height()) << "\n";
   std::cout << out.str() << std::flush;
 

@@ -72,7 +72,8 @@ class MappingRun {
   const DriveAction& lastAction() const { return last_; }
   // What the robot answered to the action step() carried out last (a reading, a turn, a drive).
   const DriveEvent& lastEvent() const { return lastEvent_; }
-  const Pilot& pilot() const { return *stack_.pilot(); }
+  const Pilot& pilot() const { return *stack_.pilot(); }  // only when hasPilot()
+  bool hasPilot() const { return stack_.pilot() != nullptr; }
   const sim::SimRobot& robot() const { return robot_; }
   // The truth on the robot's grid (the safe rule: a cell holding any part of an obstacle is blocked).
   const sim::World& world() const { return truth_; }

@@ -154,6 +154,8 @@ void ExperimentRow::summarize() {
     mean.lost += r.lost / n;
     mean.detectedPctAligned += r.detectedPctAligned / n;
     mean.wrongCellsAligned += r.wrongCellsAligned / n;
+    mean.headingOffPct += r.headingOffPct / n;
+    mean.positionOffPct += r.positionOffPct / n;
     mean.roomCells = r.roomCells;
     mean.complete = mean.complete && r.complete;
     minDetectedPct = std::min(minDetectedPct, r.detectedPct);
@@ -210,10 +212,11 @@ double ExperimentTable::publishedMedianUnknowns() const {
 }
 
 namespace {
-// The values of kSafetyColumns, each after a comma.
+// The values of kSafetyColumns and kPoseColumns, each after a comma.
 std::string safetyFields(const RunResult& m) {
   return "," + formatNumber(m.unsafeFree) + "," + formatNumber(m.phantomOccupied) + "," + formatNumber(m.lost) + "," +
-         formatNumber(m.detectedPctAligned) + "," + formatNumber(m.wrongCellsAligned);
+         formatNumber(m.detectedPctAligned) + "," + formatNumber(m.wrongCellsAligned) + "," +
+         formatNumber(m.headingOffPct) + "," + formatNumber(m.positionOffPct);
 }
 }  // namespace
 
@@ -222,7 +225,7 @@ const char* ExperimentTable::csvHeader() {
       std::string(
           "id,actual_free,found_free,actual_occupied,found_occupied,unknown,wrong_cells,detected_pct,"
           "time_units,sensor_reads,seed_time_units,seed_sensor_count,seed_detected_pct,") +
-      kSafetyColumns;
+      kSafetyColumns + "," + kPoseColumns;
   return header.c_str();
 }
 
@@ -243,7 +246,7 @@ void ExperimentTable::writeSeedCsv(std::ostream& out, bool header) const {
   if (header) {
     out << "id,strategy,noise,seed,actual_free,found_free,actual_occupied,found_occupied,unknown,"
            "unknown_observable,wrong_cells,detected_pct,performance_pct,time_units,sensor_reads,complete,"
-        << kSafetyColumns << '\n';
+        << kSafetyColumns << ',' << kPoseColumns << '\n';
   }
   for (const ExperimentRow& r : rows) {
     for (size_t i = 0; i < r.perSeed.size(); ++i) {

@@ -9,6 +9,9 @@ namespace nxtmap::report {
 
 // The columns both CSVs end with, after their older columns (readers of those keep working).
 constexpr const char* kSafetyColumns = "unsafe_free,phantom_occupied,lost,detected_pct_aligned,wrong_cells_aligned";
+// The localisation (mapping::PoseErrorShare): % of the explorer's actions with the heading over 40 mrad off, and
+// with the centre over a quarter of a cell off the believed one.
+constexpr const char* kPoseColumns = "heading_off_pct,position_off_pct";
 
 // The thesis's medians over the 18 runs (Chapter 5).
 constexpr double kPublishedMedianTimeUnits = 350.5;
@@ -51,6 +54,7 @@ struct RunResult {
   // Safety (mapping::MapScore): a mean over seeds is a mean count; `lost` is 0/1, its mean the share lost.
   double unsafeFree = 0, phantomOccupied = 0, lost = 0;
   double detectedPctAligned = 0, wrongCellsAligned = 0;  // after the best rigid alignment to the world
+  double headingOffPct = 0, positionOffPct = 0;          // mapping::PoseErrorShare
 };
 
 // One scenario's results: the mean over the seeds plus the spread.
@@ -82,7 +86,8 @@ struct ExperimentTable {
   double publishedMedianSensorReads() const;
   double publishedMedianUnknowns() const;
 
-  // CSV header: the published comparison columns, then the safety columns (kSafetyColumns).
+  // CSV header: the published comparison columns, then the safety columns (kSafetyColumns) and the localisation's
+  // (kPoseColumns).
   static const char* csvHeader();
   // One row per scenario (means over the seeds).
   void writeCsv(std::ostream& out) const;

@@ -184,6 +184,10 @@ TEST(ExperimentTable, CsvColumnsAndMeans) {
   b.detectedPctAligned = 97;
   a.wrongCellsAligned = 0;
   b.wrongCellsAligned = 1;
+  a.headingOffPct = 2;
+  b.headingOffPct = 7;
+  a.positionOffPct = 10;
+  b.positionOffPct = 40.5;
   row.perSeed = {a, b};
   row.summarize();
   EXPECT_DOUBLE_EQ(row.mean.timeUnits, 100.5);
@@ -195,15 +199,16 @@ TEST(ExperimentTable, CsvColumnsAndMeans) {
   const std::vector<std::string> rows = cli::test::lines(csv.str());
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0], ExperimentTable::csvHeader());
-  EXPECT_EQ(rows[1], "occ1,0,0,0,0,0,1.5,95,100.5,0,294,1189,100,1,0.5,0.5,98.5,0.5");
-  // The older columns keep their places; the safety columns follow them.
+  EXPECT_EQ(rows[1], "occ1,0,0,0,0,0,1.5,95,100.5,0,294,1189,100,1,0.5,0.5,98.5,0.5,4.5,25.25");
+  // The older columns keep their places; the safety columns follow them, then the localisation's.
   EXPECT_EQ(
       std::string(ExperimentTable::csvHeader())
           .rfind("id,actual_free,found_free,actual_occupied,found_occupied,unknown,wrong_cells,detected_pct,time_units,"
                  "sensor_reads,seed_time_units,seed_sensor_count,seed_detected_pct,",
                  0),
       0u);
-  EXPECT_EQ(rows[0].substr(rows[0].size() - std::string(kSafetyColumns).size()), kSafetyColumns);
+  const std::string tail = std::string(kSafetyColumns) + "," + kPoseColumns;
+  EXPECT_EQ(rows[0].substr(rows[0].size() - tail.size()), tail);
 
   t.strategy = "propagation";
   t.noise = "typical";
@@ -214,9 +219,9 @@ TEST(ExperimentTable, CsvColumnsAndMeans) {
   EXPECT_EQ(seedRows[0],
             "id,strategy,noise,seed,actual_free,found_free,actual_occupied,found_occupied,unknown,unknown_observable,"
             "wrong_cells,detected_pct,performance_pct,time_units,sensor_reads,complete,unsafe_free,phantom_occupied,"
-            "lost,detected_pct_aligned,wrong_cells_aligned");
-  EXPECT_EQ(seedRows[1], "occ1,propagation,typical,1,0,0,0,0,0,0,0,100,0,100,0,1,0,0,0,100,0");
-  EXPECT_EQ(seedRows[2], "occ1,propagation,typical,2,0,0,0,0,0,0,3,90,0,101,0,1,2,1,1,97,1");
+            "lost,detected_pct_aligned,wrong_cells_aligned,heading_off_pct,position_off_pct");
+  EXPECT_EQ(seedRows[1], "occ1,propagation,typical,1,0,0,0,0,0,0,0,100,0,100,0,1,0,0,0,100,0,2,10");
+  EXPECT_EQ(seedRows[2], "occ1,propagation,typical,2,0,0,0,0,0,0,3,90,0,101,0,1,2,1,1,97,1,7,40.5");
 }
 
 TEST(ExperimentTable, MalformedLinesAreNamed) {
