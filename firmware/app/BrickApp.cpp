@@ -69,7 +69,7 @@ NXTMAP_RUN_ONCE BrickApp::BrickApp()
 #endif
       link_(stack_.map().grid(), shadow_, linkConfigFor(stack_.config().geometry)),
       runner_(motion_, sonar_, config_.drive, stack_.config().geometry, config_.sensorPorts),
-      modes_(stack_, houseBrick(), runner_, link_, safety_, tacho_, avr_.command(), config_),
+      modes_(stack_, houseBrick(), runner_, link_, safety_, tacho_, avr_.command(), config_, wheelStore()),
       lego_(modes_, runner_, speaker_, bt_, reg::kMck),
       radio_(bt_, link_, modes_, avr_),
       status_(frame_, lcd_, modes_, bt_, link_, avr_, safety_) {

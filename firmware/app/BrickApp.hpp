@@ -9,6 +9,7 @@
 #include "firmware/app/ActionRunner.hpp"
 #include "firmware/app/BrickConfig.hpp"
 #include "firmware/app/EventBeeper.hpp"
+#include "firmware/app/FlashWheelStore.hpp"
 #include "firmware/app/LegoPort.hpp"
 #include "firmware/app/ModeMachine.hpp"
 #include "firmware/app/RadioService.hpp"
@@ -75,6 +76,13 @@ class BrickApp {
   void loopOnce();
   void guardMotors(uint32_t nowMs);
   void startSonarClock();
+  WheelStore* wheelStore() {
+#ifdef NXTMAP_RAM_RUN
+    return nullptr;  // the RAM-run image learns no wheels
+#else
+    return &wheels_;
+#endif
+  }
   HouseBrick* houseBrick() {
 #ifdef NXTMAP_RAM_RUN
     return nullptr;
@@ -116,6 +124,9 @@ class BrickApp {
   uint8_t shadow_[packedBytes(AppExplorerStorage::kWidth(), AppExplorerStorage::kHeight(), 2)] = {};
   protocol::BrickLink link_;
   ActionRunner runner_;
+#ifndef NXTMAP_RAM_RUN
+  FlashWheelStore<Mmio> wheels_{FlashPage<Mmio>{bus_, nxtmapFlashCommand}};  // what the runs learnt of the wheels
+#endif
   ModeMachine modes_;
   EventBeeper beeper_;  // short tones on the robot's own events
   LegoPort lego_;       // LEGO's direct commands on the outputs and sensors (attached to link_)

@@ -140,6 +140,7 @@ void ModeMachine::stepExplorer(const DriveEvent& e, uint32_t nowMs) {
   if (pending_.kind == DriveAction::Kind::Done || stack_.finished()) {
     mode_ = Mode::Done;
     ++finishes_;
+    keepWheels();
 #if defined(NXTMAP_SIM_GEOMETRY)
     g_mapExport.fill(grid());
 #endif
@@ -301,7 +302,14 @@ void ModeMachine::restAt(const Pose& p) {
 void ModeMachine::stop() {
   runner_.abort();
   follower_.abort();
+  if (mode_ == Mode::Exploring) keepWheels();
   if (moving()) mode_ = Mode::Idle;
+}
+
+void ModeMachine::keepWheels() {
+#ifndef NXTMAP_NO_START_SQUARING  // (the RAM-run image learns no wheels)
+  if (store_ != nullptr && stack_.pilot() != nullptr) (void)store_->save(stack_.pilot()->wheels());
+#endif
 }
 
 void ModeMachine::newRoom() {

@@ -9,6 +9,7 @@
 #include "firmware/app/BrickConfig.hpp"
 #include "firmware/app/PathFollower.hpp"
 #include "firmware/app/PcOutputs.hpp"
+#include "firmware/app/WheelStore.hpp"
 #include "firmware/drivers/AvrFrame.hpp"
 #include "firmware/drivers/MotorSafety.hpp"
 #include "firmware/drivers/TachoDecoder.hpp"
@@ -31,14 +32,17 @@ inline constexpr bool kHouseCommands = true;
 // Explore, GoTo, EnterRoom, Scan from the PC) feeds it the HouseBrick's: while that is active, the mode,
 // pose, room and report are the house's; any other command or button, and a fault, aborts it and
 // leaves the robot resting where the house believed it. Owns the follower and the robot's resting
-// pose; the stack, house, runner, link, safety and tachometers are BrickApp's (`house` may be
-// nullptr: no house commands).
+// pose; the stack, house, runner, link, safety, tachometers and wheel store are BrickApp's (`house` may be
+// nullptr: no house commands; `wheels` nullptr: what is learnt of the wheels lasts until switched off).
+// What the runs learnt of the wheels is loaded from `wheels` at construction and saved there when an
+// explorer run ends or is stopped.
 class ModeMachine {
  public:
   using Mode = protocol::BrickMode;
 
   NXTMAP_RUN_ONCE ModeMachine(ExplorerStack& stack, HouseBrick* house, ActionRunner& runner, protocol::BrickLink& link,
-                              MotorSafety& safety, TachoDecoder& tacho, AvrCommand& motors, const BrickConfig& config)
+                              MotorSafety& safety, TachoDecoder& tacho, AvrCommand& motors, const BrickConfig& config,
+                              WheelStore* wheels = nullptr)
       : stack_(stack),
         house_(house),
         runner_(runner),
@@ -46,7 +50,10 @@ class ModeMachine {
         safety_(safety),
         tacho_(tacho),
         motors_(motors),
-        config_(config) {}
+        config_(config),
+        store_(wheels) {
+    if (store_ != nullptr) (void)store_->load(learnt_);
+  }
   ModeMachine(const ModeMachine&) = delete;
   ModeMachine& operator=(const ModeMachine&) = delete;
 
@@ -115,6 +122,8 @@ class ModeMachine {
   // The pilot's settings for a new run: what the runs before learnt of the wheels, and (not in the RAM-run
   // image) the start's sweep square to the walls when the map is empty (BrickConfig::squareSweepMrad).
   PilotConfig pilotConfig();
+  // What the explorer run's pilot learnt of the wheels, into the store (if any).
+  void keepWheels();
   void mapChanged() { ++mapVersion_; }
 
   ExplorerStack& stack_;
@@ -125,6 +134,7 @@ class ModeMachine {
   TachoDecoder& tacho_;
   AvrCommand& motors_;  // the AVR link's next command (its motor part)
   const BrickConfig& config_;
+  WheelStore* store_;  // nullptr: none
   PathFollower follower_{};
   PcOutputs pc_{};         // outputs as a PC drives them while the robot rests
   DriveAction pending_{};  // the action being carried out

@@ -74,6 +74,11 @@ constexpr uint32_t kWdtCrKey = 0xA5u << 24, kWdtCrWdrstt = 1u << 0;  // restart 
 // MC / EFC
 constexpr uint32_t kMcRcr = 0xFFFFFF00;
 constexpr uint32_t kMcFmr = 0xFFFFFF60;
+constexpr uint32_t kMcFcr = 0xFFFFFF64;  // FKEY 0x5A in 31..24, page in 17..8, command in 3..0
+constexpr uint32_t kMcFsr = 0xFFFFFF68;  // FRDY 0, LOCKE 2, PROGE 3, lock bits 31..16 (one per 64 pages)
+constexpr uint32_t kMcFcrKey = 0x5Au << 24, kMcFcrWp = 0x1u, kMcFcrClb = 0x4u;
+constexpr uint32_t kMcFsrLocke = 1u << 2, kMcFsrProge = 1u << 3, kMcFsrLocksShift = 16;
+constexpr uint32_t kFlashBase = 0x00100000, kFlashPageBytes = 256, kFlashPagesPerRegion = 64;
 
 // TWI (AVR link)
 constexpr uint32_t kTwiCr = 0xFFFB8000;

@@ -15,6 +15,7 @@
 #include "host/cli/LcdSeries.hpp"
 #include "host/cli/RadioMirror.hpp"
 #include "host/emu/EmulatedRun.hpp"
+#include "host/emu/FlashState.hpp"
 #include "host/emu/LinkServer.hpp"
 #include "host/fileio/OutputTarget.hpp"
 #include "host/report/ExperimentTable.hpp"
@@ -33,6 +34,32 @@ std::string endReason(const emu::EmulatedRun& run) {
     case ExplorerEnd::Running: break;
   }
   return "";
+}
+
+// --flash-keep FILE before the run: the file is checked (readable if there, writable), and the pages above the
+// image come from it. Returns the line that says what the brick finds kept.
+std::string keepFlashFrom(const std::string& file, emu::ElfImage& image) {
+  std::string error;
+  if (!fileio::resolveOutputTarget(file, error)) throw CliError("--flash-keep: " + error);
+  const std::optional<std::vector<uint8_t>> kept = emu::readFlashState(file, error);
+  if (!error.empty()) throw CliError("--flash-keep: " + error);
+  if (!kept) return "flash kept       " + file + ": new (the brick starts with nothing kept)\n";
+  image.keepPagesFrom(*kept);
+  const std::optional<WheelCalibration> w = emu::storedWheels(image.flash());
+  return "flash kept       " + file + ": wheels " + (w ? emu::wheelsText(*w) : std::string("none kept")) + "\n";
+}
+
+// After the run: what the brick's flash holds of its wheels, and (with --score) what it last told the PC.
+std::string wheelLines(const std::vector<uint8_t>& flash, const RadioMirror* mirror) {
+  const std::optional<WheelCalibration> w = emu::storedWheels(flash);
+  std::string lines = "wheels in flash  " + (w ? emu::wheelsText(*w) : std::string("none")) + "\n";
+  if (mirror != nullptr && mirror->brickCounters()) {
+    WheelCalibration told;
+    told.driftUradPerM = mirror->brickCounters()->wheelDrift10UradPerM * 10;
+    told.turnPpm = mirror->brickCounters()->wheelTurn10Ppm * 10;
+    lines += "wheels reported  " + emu::wheelsText(told) + " (the brick's last counters over the radio)\n";
+  }
+  return lines;
 }
 
 }  // namespace
@@ -64,6 +91,9 @@ CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
   c->add_flag("--score", o.score,
               "a PC listens on the radio and keeps the map the brick streams (as the console would); at the end that "
               "map is scored against the world: detected, wrong cells, unsafe free (not with --listen)");
+  c->add_option("--flash-keep", o.flashKeep,
+                "keep the brick's flash in FILE from run to run, as a brick keeps it while switched off (what it "
+                "learnt of its wheels); read at the start if it exists, written at the end");
   c->add_flag("--profile", o.profile,
               "print where the instructions of the costliest sensor update went, by firmware function (the "
               "run is slower)");
@@ -122,6 +152,7 @@ int runEmulate(const EmulateOptions& o) {
     run.brick.link = link.get();
   }
 
+  const std::string keptLine = o.flashKeep.empty() ? "" : keepFlashFrom(o.flashKeep, *load.image);
   // A firmware without our symbols (a raw .bin, another firmware's ELF) runs; what needs them is not measured.
   const bool ours = load.image->symbol("g_explorerDone").has_value();
   if (!ours)
@@ -147,9 +178,14 @@ int runEmulate(const EmulateOptions& o) {
       return mirror && mirror->follow(*holder, cycles, untilExplored);
     };
   }
+  std::cout << keptLine << std::flush;
   holder = std::make_unique<emu::EmulatedRun>(*load.image, site, run);
   emu::EmulatedRun& emulated = *holder;
   const emu::EmulatedRunReport r = emulated.run();
+  const std::vector<uint8_t> flash = emulated.brick().machine().flashContents();
+  std::string flashError;  // the flash is kept whatever the run's end (a brick that faulted keeps it too)
+  if (!o.flashKeep.empty() && !emu::writeFlashState(o.flashKeep, flash, flashError))
+    throw CliError("--flash-keep: " + flashError);
   if (!seriesError.empty()) throw CliError(seriesError);
 
   auto num = [](double v, int d = 1) { return report::formatNumber(v, d); };
@@ -186,6 +222,7 @@ int runEmulate(const EmulateOptions& o) {
     out << (r.worstUpdate.empty() ? std::string("  (no function symbols: nothing to attribute)\n")
                                   : emu::profileLines(r.worstUpdate, r.maxPerUpdate, 15));
   }
+  if (ours) out << wheelLines(flash, mirror.get());
   if (mirror) out << scoreLines(scoreEmulatedMap(emulated.brick(), *mirror, run.brick.noise.sonar));
   std::cout << out.str() << std::flush;
   if (!o.lcd.empty()) {

@@ -1,5 +1,5 @@
 // `nxtmap emulate WORLD --start C,R [--firmware FILE.elf|FILE.bin] [--listen tcp:127.0.0.1:PORT|pty] [--lcd FILE.png
-//  [--lcd-every SECONDS]] [--speed max|realtime] [--noise P] [--seed N]`: the real firmware image, instruction by instruction, in
+//  [--lcd-every SECONDS]] [--speed max|realtime] [--noise P] [--seed N] [--flash-keep FILE]`: the real firmware image, instruction by instruction, in
 // the emulated brick driving the simulated robot; the PC console connects to the listening end as it would
 // to a brick over Bluetooth. Prints the run's measurements at the end.
 #pragma once
@@ -29,6 +29,7 @@ struct EmulateOptions {
   double enterAt = 1.0;     // emulated second at which Enter is pressed (< 0: never)
   bool profile = false;     // print where the costliest sensor update's instructions went
   bool score = false;       // a PC on the radio keeps the brick's map; scored against the world at the end
+  std::string flashKeep;    // the brick's flash kept in this file from run to run (FlashState); empty: none
 };
 
 CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& options);

@@ -43,6 +43,8 @@ class RadioMirror {
     if (!session_.status()) return std::nullopt;
     return session_.status()->pose.cell;
   }
+  // The brick's last Counters (what it counts and what it learnt of its wheels), if one arrived.
+  const std::optional<protocol::CountersMsg>& brickCounters() const { return session_.brickCounters(); }
   // A map change unacknowledged is sent again by the brick: this long without one, the copy is whole.
   static constexpr uint32_t kQuietMs = 5000;
 

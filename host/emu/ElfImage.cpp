@@ -140,4 +140,11 @@ std::optional<uint32_t> ElfImage::firstSymbol(std::initializer_list<const char*>
   return std::nullopt;
 }
 
+void ElfImage::keepPagesFrom(const std::vector<uint8_t>& saved) {
+  constexpr uint32_t kPage = 256;
+  const uint32_t from = (flashUsed_ + kPage - 1) / kPage * kPage;
+  if (saved.size() != kFlashSize || from >= kFlashSize) return;
+  std::copy(saved.begin() + from, saved.end(), flash_.begin() + from);
+}
+
 }  // namespace nxtmap::emu

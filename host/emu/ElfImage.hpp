@@ -51,6 +51,9 @@ class ElfImage {
   const FunctionSymbol* functionAt(uint32_t address) const;
   const std::string& path() const { return path_; }
   bool rawFlash() const { return raw_; }  // loaded from a raw .bin image: no symbols
+  // The pages above the image (from flashUsed() rounded up to a 256-byte page) taken from `saved` (a whole
+  // kFlashSize flash, FlashState): what a firmware stored in its flash survives, as over a power cycle.
+  void keepPagesFrom(const std::vector<uint8_t>& saved);
 
  private:
   std::string path_;

@@ -172,6 +172,12 @@ uint32_t Machine::currentPc() const {
   return pc ? pc : lastBlock_;
 }
 
+std::vector<uint8_t> Machine::flashContents() const {
+  std::vector<uint8_t> bytes(flash_, flash_ + kFlashSize);
+  for (const FlashWord& w : flashRestore_) std::memcpy(bytes.data() + w.offset, w.bytes, 4);
+  return bytes;
+}
+
 void Machine::restoreFlash() {
   for (const FlashWord& w : flashRestore_) std::memcpy(flash_ + w.offset, w.bytes, 4);
   flashRestore_.clear();

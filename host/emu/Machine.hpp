@@ -76,6 +76,8 @@ class Machine : public GuestMemory {
   Aic& aic() { return aic_; }
   Pmc& pmc() { return pmc_; }
   const FlashController& flash() const { return efc_; }
+  // The flash's 256 KiB as the chip holds them now (what a power cycle would keep).
+  std::vector<uint8_t> flashContents() const;
   const ElfImage& image() const { return image_; }
 
   // Attaches a board peripheral at [base, base+size) (a multiple of 16 bytes, inside the MMIO window).

@@ -78,7 +78,7 @@ TEST(EmulateCli, ForeignFirmwareSaysItsRamIsNotMeasured) {
 // --score: the map that came over the radio, scored against the world. The published-geometry image on a
 // published room without noise maps it as the host does (EndToEnd): every observable wall cell, no wrong cell,
 // the robot where it believes it is; and a room the image cannot see whole is scored as it is (not 100 %).
-TEST(EmulateCli, ScoreRatesTheMapThatCameOverTheRadio) {
+TEST(EmulateCliEndToEnd, ScoreRatesTheMapThatCameOverTheRadio) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "a whole room at emulation speed: make test runs this from the Release build";
 #endif
@@ -101,7 +101,7 @@ TEST(EmulateCli, ScoreRatesTheMapThatCameOverTheRadio) {
 // the nearest walls): the map is scored on the grid the brick believed in, laid from the offset its first Status
 // told, so it needs no shift to fit the world (laid on the robot's centre instead, this seed's map needed one and
 // scored 49 % against 99 % shifted).
-TEST(EmulateCli, ScoreLaysTheGridWhereTheBrickBelievedItsStartCell) {
+TEST(EmulateCliEndToEnd, ScoreLaysTheGridWhereTheBrickBelievedItsStartCell) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "a whole room at emulation speed: make test runs this from the Release build";
 #endif

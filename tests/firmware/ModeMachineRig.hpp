@@ -5,8 +5,10 @@
 // bus that hear no echo (an open floor).
 #pragma once
 #include <cstdint>
+#include <optional>
 
 #include "common/house/HouseBrick.hpp"
+#include "common/motion/WheelRecord.hpp"
 #include "common/house/RoomConfinement.hpp"
 #include "firmware/app/ModeMachine.hpp"
 #include "tests/firmware/I2cSlaveModel.hpp"
@@ -15,6 +17,25 @@ namespace nxtmap::fw::test {
 
 constexpr TachoDecoder::Pins kRigPins[TachoDecoder::kMotors] = {
     {1u << 15, 1u << 1}, {1u << 26, 1u << 9}, {1u, 1u << 8}};
+
+// The brick's flash page for the learnt wheels, in RAM: what it keeps and how often it was written (a save of
+// what is kept already writes nothing, as FlashWheelStore).
+struct RamWheelStore final : WheelStore {
+  RamWheelStore() = default;
+  explicit RamWheelStore(const WheelCalibration& w) : kept(w) {}
+  bool load(WheelCalibration& w) const override {
+    if (kept) w = *kept;
+    return kept.has_value();
+  }
+  bool save(const WheelCalibration& w) override {
+    if (kept && WheelRecord::same(*kept, w)) return true;
+    kept = w;
+    ++writes;
+    return true;
+  }
+  std::optional<WheelCalibration> kept;
+  int writes = 0;
+};
 
 struct Brick {
   static constexpr int16_t kCells = 16;
@@ -35,13 +56,17 @@ struct Brick {
   MotorSafety safety{};
   TachoDecoder tacho{kRigPins};
   AvrCommand motors{};
-  ModeMachine modes{stack, &house, runner, link, safety, tacho, motors, config};
+  RamWheelStore wheels{};
+  ModeMachine modes{stack, &house, runner, link, safety, tacho, motors, config, &wheels};
 
   I2cSlaveModel sensors[4] = {I2cSlaveModel{1}, I2cSlaveModel{1}, I2cSlaveModel{1}, I2cSlaveModel{1}};
   bool stalled = false;  // the wheels do not turn (an obstacle, or the robot held)
   uint32_t now = 0;      // ms
 
-  Brick() {
+  Brick() { quiet(); }
+  // A brick switched on with `stored` kept in its flash.
+  explicit Brick(const WheelCalibration& stored) : wheels(stored) { quiet(); }
+  void quiet() {
     sonar.powered(0);
     for (I2cSlaveModel& s : sensors) s.regs[0x42] = kNoEchoCm;
   }

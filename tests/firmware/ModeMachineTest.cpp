@@ -160,5 +160,37 @@ TEST(ModeMachine, ARunOnAnEmptyMapSquaresToTheWallsFirst) {
   }
 }
 
+// What the runs learnt of the wheels outlives switching the brick off: the kept wheels are reported at once and
+// are where the next run's learning starts; an explorer run stopped keeps what its pilot holds then; a save of
+// what is kept already writes nothing.
+TEST(ModeMachine, TheWheelsKeptAreWhereTheNextRunStartsAndAStoppedRunKeepsItsOwn) {
+  WheelCalibration stored;
+  stored.driftUradPerM = -33500;  // (the tracker keeps 100 urad/m steps, 10 ppm, as it hands them out)
+  stored.turnPpm = 17800;
+  stored.driftVariance = 4000000;
+  stored.turnVariance = 250000;
+  Brick b(stored);
+  EXPECT_EQ(b.modes.report(7400).wheelDriftUradPerM, -33500) << "told the PC before any run";
+  EXPECT_EQ(b.modes.report(7400).wheelTurnPpm, 17800);
+  b.modes.carryOut(commandOf(protocol::CommandKind::Explore), 0);
+  ASSERT_NE(b.stack.pilot(), nullptr);
+  EXPECT_TRUE(WheelRecord::same(b.stack.pilot()->wheels(), stored)) << "the run starts from what was kept";
+  b.modes.carryOut(commandOf(protocol::CommandKind::Stop), 1);
+  ASSERT_TRUE(b.wheels.kept.has_value());
+  EXPECT_TRUE(WheelRecord::same(*b.wheels.kept, b.stack.pilot()->wheels()));
+  EXPECT_EQ(b.wheels.writes, 0) << "nothing learnt on an open floor: nothing written";
+
+  Brick fresh;  // nothing kept: an uncalibrated robot's first outing
+  EXPECT_EQ(fresh.modes.report(7400).wheelDriftUradPerM, 0);
+  fresh.modes.carryOut(commandOf(protocol::CommandKind::Explore), 0);
+  EXPECT_EQ(fresh.wheels.writes, 0) << "a run that goes on keeps nothing yet";
+  fresh.modes.carryOut(commandOf(protocol::CommandKind::Stop), 1);
+  EXPECT_EQ(fresh.wheels.writes, 1);
+  ASSERT_TRUE(fresh.wheels.kept.has_value());
+  EXPECT_TRUE(WheelRecord::same(*fresh.wheels.kept, fresh.stack.pilot()->wheels()));
+  fresh.modes.carryOut(commandOf(protocol::CommandKind::Stop), 2);
+  EXPECT_EQ(fresh.wheels.writes, 1) << "a stop while resting is no run's end";
+}
+
 }  // namespace
 }  // namespace nxtmap::fw::test
