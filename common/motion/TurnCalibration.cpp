@@ -13,6 +13,7 @@ DriveAction TurnCalibration::begin(int approachesLeft) {
   found_ = false;
   errorPpm_ = 0;
   readings_ = samples_ = turnedMrad_ = 0;
+  countedMrad_ = 0;
   phase_ = Phase::FirstSweep;
   sweeping_ = true;
   return squaring_.begin(approachesLeft);
@@ -36,10 +37,12 @@ void TurnCalibration::measure() {
   const WallDirectionEstimate& w = squaring_.result();
   found_ = w.found;
   if (!found_) return;
-  // The walls seen w.mrad clockwise of the robot after N turns counter-clockwise of 2 pi (1 + e) each:
-  // the robot stands 2 pi N e counter-clockwise of square, so w.mrad = 2 pi N e.
-  const int64_t turned = static_cast<int64_t>(turns_) * 4 * kQuarterMrad;
-  errorPpm_ = static_cast<int32_t>(static_cast<int64_t>(w.mrad) * 1000000 / turned);
+  // The walls seen w.mrad clockwise of the robot after turning T (counted) counter-clockwise, truly T (1 + e):
+  // the robot stands T (1 + e) - 2 pi N counter-clockwise of square, so w.mrad = (T - 2 pi N) + T e.
+  constexpr int64_t kTwoPiUrad = 6283185;
+  const int64_t countedUrad = static_cast<int64_t>(countedMrad_) * 1000;
+  const int64_t pastUrad = countedUrad - kTwoPiUrad * turns_;
+  errorPpm_ = static_cast<int32_t>((static_cast<int64_t>(w.mrad) * 1000 - pastUrad) * 1000000 / countedUrad);
 }
 
 DriveAction TurnCalibration::step(const DriveEvent& e) {
@@ -51,6 +54,7 @@ DriveAction TurnCalibration::step(const DriveEvent& e) {
     case Phase::Turning:
       NXTMAP_CHECK(e.kind == DriveEvent::Kind::Rotated);
       turnedMrad_ += kQuarterMrad;
+      countedMrad_ += e.measured ? -e.achieved : kQuarterMrad;
       if (--quartersLeft_ > 0) return DriveAction::rotate(-kQuarterMrad);
       phase_ = Phase::SecondSweep;
       sweeping_ = true;

@@ -12,7 +12,8 @@ namespace nxtmap {
 // out: it squares to the walls (StartSquaring), turns `turns` whole turns the other way round, and squares
 // again; the second sweep finds the walls turned by the turns' error (N whole turns of 2 pi (1 + e)
 // counter-clockwise leave the robot 2 pi N e past square), so e = (second sweep's estimate) / (2 pi N).
-// It ends square to the walls.
+// It ends square to the walls. The turns are taken as the encoders counted them (the motor control stops each
+// quarter turn a little off; with T counted, e = (the second sweep's estimate - (T - 2 pi N)) / T).
 // Resolution: in a plain room the sweeps agree to about a degree, so 4 turns give e to about 0.1 %; from a
 // cluttered spot they differ more (the brick rooms under nxt-uncalibrated: 0.27 % rms). |e| must stay under
 // 1 / (8 N) (the walls repeat every quarter turn). The sweep object is the caller's (the pilot's).
@@ -52,6 +53,9 @@ class TurnCalibration {
   // Spent before the sweep in progress (the first sweep once done, and the whole turns).
   uint32_t readings_ = 0, samples_ = 0, turnedMrad_ = 0;
   bool sweeping_ = false;  // squaring_ holds a sweep of this calibration not yet added above
+  // The whole turns as the encoders counted them (mrad, counter-clockwise positive; the commanded angle for a
+  // rotation not measured): the motors stop a little past or short of each quarter, and that is no turn error.
+  int32_t countedMrad_ = 0;
 
  public:
   // Readings, raw samples and rotation (mrad) spent, for the run's figures.

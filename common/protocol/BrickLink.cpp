@@ -67,7 +67,8 @@ void BrickLink::handlePacket(const Telegram& t) {
     case Op::SetPose:
     case Op::GoTo:
     case Op::EnterRoom:
-    case Op::Scan: handleCommand(v.header, v.payload, v.payloadSize); break;
+    case Op::Scan:
+    case Op::Calibrate: handleCommand(v.header, v.payload, v.payloadSize); break;
     case Op::BatteryRequest: batteryDue_ = true; break;
     default: break;  // Ack (already applied) and anything the brick does not take
   }
@@ -128,6 +129,7 @@ void BrickLink::handleCommand(const PacketHeader& h, const uint8_t* p, size_t n)
       valid = decodeScan(p, n, *new (&c.scan) ScanMsg());
       break;
     case Op::Stop: c.kind = CommandKind::Stop; break;
+    case Op::Calibrate: c.kind = CommandKind::Calibrate; break;
     case Op::RequestMap:
       if (valid) {
         sync_.restart();

@@ -16,6 +16,7 @@ enum class CommandKind : uint8_t {
   GoTo,        // drive to `goTo.target` over the map held; report PathProgress with pathId = goalId
   EnterRoom,   // cross `enterRoom.door` and map the room beyond it, confined
   Scan,        // read the four sensors where the robot stands; report Readings with scanId = `scan.scanId`
+  Calibrate,   // measure the turns' error where the robot stands (sweep, whole turns, sweep), keep it, rest
 };
 
 struct Command {

@@ -23,8 +23,9 @@ namespace nxtmap::protocol {
 
 // 3: Scan and Readings (a house's standing scan, start readings); 4: HelloReply carries the
 // brick's range geometry (cell size, trusted range, sensor mount); 5: Counters carries the wheels'
-// drift and turn error the robot has learnt; 6: Readings carries the standing scan only (no start readings).
-constexpr uint8_t kProtocolVersion = 7;
+// drift and turn error the robot has learnt; 6: Readings carries the standing scan only (no start readings);
+// 7: Status tells where in its cell the robot is believed to stand; 8: Calibrate.
+constexpr uint8_t kProtocolVersion = 8;
 
 // Sizes (bytes). LEGO's Bluetooth input buffer holds 128 bytes per message.
 constexpr size_t kLengthPrefix = 2;
@@ -57,6 +58,8 @@ enum class Op : uint8_t {
   GoTo = 0x0A,            // reliable command; GoToMsg: drive to a cell of the brick's map
   EnterRoom = 0x0B,       // reliable command; EnterRoomMsg: cross a doorway, start the room beyond it
   Scan = 0x0C,            // reliable command; ScanMsg: read the four sensors where the robot stands
+  Calibrate = 0x0D,       // reliable command, no payload: measure the turns' error against the walls where the
+                          // robot stands (TurnCalibration), keep it with what was learnt of the wheels, rest
   // brick -> PC:
   HelloReply = 0x41,    // unreliable; HelloReplyMsg
   Status = 0x42,        // unreliable, periodic; StatusMsg

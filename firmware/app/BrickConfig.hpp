@@ -16,6 +16,9 @@ struct BrickConfig {
   // Output (0 = A) of each wheel; positive power drives forward.
   uint8_t leftMotor = 0;
   uint8_t rightMotor = 1;
+  // The PC's Calibrate: whole turns between the two sweeps (TurnCalibration: 4 give the turns' error to about
+  // 0.1 % in a plain room).
+  uint8_t calibrationTurns = 4;
 #if defined(NXTMAP_SIM_GEOMETRY)
   MotionGeometry drive{56, 112, 100, 360};  // 10 cm cells
   int16_t minCm = 5, maxCm = 100, mountCm = 0;

@@ -28,6 +28,10 @@ __attribute__((noinline)) DriveAction nxtmapSensorUpdate(ExplorerStack* stack, c
 }
 
 namespace {
+// A calibration's sweeps: a quarter turn each way, whatever a run's start does (the published-geometry image
+// does not sweep at a run's start).
+constexpr int16_t kCalibrationSweepMrad = 1571;
+
 bool isHouseCommand(const protocol::Command& c) {
   return c.kind == protocol::CommandKind::GoTo || c.kind == protocol::CommandKind::EnterRoom ||
          c.kind == protocol::CommandKind::Scan || (c.kind == protocol::CommandKind::Explore && c.explore.confine);
@@ -43,6 +47,7 @@ void ModeMachine::carryOut(const protocol::Command& c, uint32_t nowMs) {
     case protocol::CommandKind::FollowPath: followPath(c.path, nowMs); break;
     case protocol::CommandKind::MapChunk: takeMapChunk(c.chunk); break;
     case protocol::CommandKind::SetPose: restAt(c.pose); break;
+    case protocol::CommandKind::Calibrate: calibrate(nowMs); break;
     case protocol::CommandKind::GoTo:  // houseCommand
     case protocol::CommandKind::EnterRoom:
     case protocol::CommandKind::Scan: break;
@@ -137,6 +142,8 @@ void ModeMachine::stepExplorer(const DriveEvent& e, uint32_t nowMs) {
   const bool thinking = e.kind == DriveEvent::Kind::Range || e.kind == DriveEvent::Kind::Thought;
   pending_ = thinking ? nxtmapSensorUpdate(&stack_, &e) : stack_.step(e);
   mapChanged();
+  if (calibrating_ && (stack_.pilot()->explorerStarted() || pending_.kind == DriveAction::Kind::Done))
+    return endCalibration();
   if (pending_.kind == DriveAction::Kind::Done || stack_.finished()) {
     mode_ = Mode::Done;
     ++finishes_;
@@ -303,13 +310,46 @@ void ModeMachine::stop() {
   runner_.abort();
   follower_.abort();
   if (mode_ == Mode::Exploring) keepWheels();
+  calibrating_ = false;  // a calibration stopped: a later Explore resumes it, then explores
   if (moving()) mode_ = Mode::Idle;
 }
 
 void ModeMachine::keepWheels() {
 #ifndef NXTMAP_NO_START_SQUARING  // (the RAM-run image learns no wheels)
-  if (store_ != nullptr && stack_.pilot() != nullptr) (void)store_->save(stack_.pilot()->wheels());
+  if (stack_.pilot() == nullptr) return;
+  learnt_ = stack_.pilot()->wheels();
+  if (store_ != nullptr) (void)store_->save(learnt_);
 #endif
+}
+
+void ModeMachine::calibrate(uint32_t nowMs) {
+#ifndef NXTMAP_NO_START_SQUARING  // (the RAM-run image has no sweep: refused like an unknown command)
+  if (moving()) stop();
+  safety_.clear();
+  tacho_.clearFault();
+  const Pose here = pose();
+  poseFromPath_ = false;
+  restPose_ = here;  // where it rests afterwards, square to the walls
+  PilotConfig p = pilotConfig();
+  p.squareSweepMrad = kCalibrationSweepMrad;
+  p.calibrateTurns = config_.calibrationTurns;
+  p.approaches = 0;  // where it stands: a calibration never drives off to find a wall
+  pending_ = stack_.start(Strategy::Frontier, p, here);
+  calibrating_ = true;
+  runner_.begin(pending_, wheels(), nowMs);
+  mapChanged();
+  mode_ = Mode::Exploring;
+#else
+  (void)nowMs;
+#endif
+}
+
+void ModeMachine::endCalibration() {
+  calibrating_ = false;
+  keepWheels();
+  stack_.end();  // the explorer never moves: the robot rests where it stood
+  mode_ = Mode::Idle;
+  ++finishes_;
 }
 
 void ModeMachine::newRoom() {

@@ -122,8 +122,13 @@ class ModeMachine {
   // The pilot's settings for a new run: what the runs before learnt of the wheels, and (not in the RAM-run
   // image) the start's sweep square to the walls when the map is empty (BrickConfig::squareSweepMrad).
   PilotConfig pilotConfig();
-  // What the explorer run's pilot learnt of the wheels, into the store (if any).
+  // What the explorer run's pilot learnt of the wheels: the next run's start, and into the store (if any).
   void keepWheels();
+  // The PC's Calibrate: a run whose pilot sweeps, turns BrickConfig::calibrationTurns whole turns and sweeps
+  // again (TurnCalibration), and ends where its explorer would begin (endCalibration): the wheels kept, the
+  // robot resting where it stood, square to the walls. Reported as Exploring meanwhile.
+  void calibrate(uint32_t nowMs);
+  void endCalibration();
   void mapChanged() { ++mapVersion_; }
 
   ExplorerStack& stack_;
@@ -141,6 +146,7 @@ class ModeMachine {
   Pose restPose_{};        // where the robot stands when neither the explorer nor a path moved it last
   WheelCalibration learnt_{};  // what the last run's pilot learnt of the wheels (an uncalibrated robot's first)
   bool poseFromPath_ = false;
+  bool calibrating_ = false;  // the run is the PC's Calibrate (ends before its explorer moves)
   Mode mode_ = Mode::Idle;
   uint16_t roomId_ = 0;
   uint32_t mapVersion_ = 1;

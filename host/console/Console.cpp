@@ -71,6 +71,7 @@ const Console::Command Console::kCommands[] = {
     {K::Explore, "explore", &Console::explore},
     {K::ExploreHouse, "explore house", &Console::exploreHouse},
     {K::Stop, "stop", &Console::stop},
+    {K::Calibrate, "calibrate", &Console::calibrate},
     {K::Goto, "goto", &Console::gotoCell},
     {K::GotoNear, "goto near", &Console::gotoNear},
     {K::Label, nullptr, &Console::label},
@@ -221,6 +222,46 @@ std::string Console::stop(const ConsoleCommand&) {
   route_.cancel();
   runner_.with([](link::Session& s) { return s.stop(); });
   return "stopping\n";
+}
+
+std::string Console::calibrate(const ConsoleCommand& c) {
+  exploration_.cancel();
+  goals_.cancel();
+  route_.cancel();
+  const auto turnText = [](const protocol::CountersMsg& k) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%+.2f %%", k.wheelTurn10Ppm * 1e-3);
+    return std::string(text);
+  };
+  const std::string before = runner_.with([&](link::Session& s) {
+    return s.brickCounters() ? turnText(*s.brickCounters()) : std::string("not reported yet");
+  });
+  const uint16_t seq = runner_.with([](link::Session& s) { return s.calibrate(); });
+  // The brick reports Exploring while it calibrates: from the second Status after the command was
+  // acknowledged (the first may have left before it ran) until it rests again.
+  uint64_t acked = 0;
+  const auto statusAfterAck = [&] {
+    return runner_.with([&](link::Session& s) {
+      if (acked == 0 && s.acknowledged(seq)) acked = s.statusesReceived() + 1;
+      return acked != 0 && s.statusesReceived() > acked;
+    });
+  };
+  const auto mode = [&] { return runner_.with([](link::Session& s) { return s.status()->mode; }); };
+  if (!waitFor(statusAfterAck, 10) || mode() != protocol::BrickMode::Exploring)
+    throw ConsoleError("calibrate: the brick did not start calibrating (its image may have no sweep)");
+  if (!waitFor([&] { return mode() != protocol::BrickMode::Exploring; }, c.seconds))
+    throw ConsoleError("calibrate: still calibrating after " + std::to_string(static_cast<int>(c.seconds)) + " s");
+  const uint64_t counters = runner_.with([](link::Session& s) { return s.countersReceived(); });
+  (void)waitFor([&] { return runner_.with([&](link::Session& s) { return s.countersReceived() > counters; }); }, 5);
+  return runner_.with([&](link::Session& s) {
+    if (!s.brickCounters()) return std::string("calibrated (the brick has not reported its wheels yet)\n");
+    const std::string after = turnText(*s.brickCounters());
+    if (after == before)
+      return "not calibrated: the turns' error is still " + after +
+             " (no straight wall in reach of the sweep where the robot stands, or its turns stalled)\n";
+    return "calibrated: turns " + after + " off (before: " + before +
+           "); the brick corrects its turns by it and keeps it\n";
+  });
 }
 
 std::string Console::gotoCell(const ConsoleCommand& c) {

@@ -69,6 +69,8 @@ class Console {
   std::string explore(const ConsoleCommand&);
   std::string exploreHouse(const ConsoleCommand&);
   std::string stop(const ConsoleCommand&);
+  // Sends Calibrate and waits (ConsoleCommand::seconds) until the brick rests again, then says what it measured.
+  std::string calibrate(const ConsoleCommand& c);
   std::string gotoCell(const ConsoleCommand& c);
   std::string gotoNear(const ConsoleCommand& c);
   std::string label(const ConsoleCommand& c);

@@ -30,6 +30,8 @@ const char* consoleHelp() {
          "explore house        map the whole house by itself: room by room, through every exit (the\n"
          "                     start is labelled 'start')\n"
          "stop                 stop the robot\n"
+         "calibrate [SECONDS]  measure the turns' error against the walls where the robot stands (a sweep,\n"
+         "                     four whole turns, a sweep), wait for it (default 300 s); the brick keeps it\n"
          "goto C R             drive to map cell column C, row R (as the map shows them)\n"
          "goto near LABEL      drive next to a labelled cell\n"
          "label NAME C R       name a map cell\n"
@@ -108,6 +110,16 @@ void parseExport(const Words& w, ConsoleCommand& c) {
     throw ConsoleError("export needs a .png file name: export FILE.png");
 }
 
+void parseCalibrate(const Words& w, ConsoleCommand& c) {
+  if (w.size() > 2) throw ConsoleError("usage: calibrate [SECONDS]");
+  c.kind = K::Calibrate;
+  c.seconds = 300;
+  if (w.size() == 2) {
+    c.seconds = parseWhole(w[1], "calibrate: SECONDS", "a whole number of seconds");
+    if (c.seconds < 1) throw ConsoleError("calibrate: SECONDS must be at least 1");
+  }
+}
+
 void parseWait(const Words& w, ConsoleCommand& c) {
   if (w.size() < 2 || w.size() > 3 || (w[1] != "explored" && w[1] != "goal" && w[1] != "house"))
     throw ConsoleError("usage: wait explored|goal|house [SECONDS]");
@@ -143,6 +155,7 @@ struct Syntax {
 const Syntax kSyntax[] = {
     {"explore", parseExplore},
     {"stop", parseBare<K::Stop>},
+    {"calibrate", parseCalibrate},
     {"goto", parseGoto},
     {"label", parseLabel},
     {"rooms", parseBare<K::Rooms>},

@@ -10,6 +10,7 @@ struct ConsoleCommand {
     Explore,
     ExploreHouse,
     Stop,
+    Calibrate,
     Goto,
     GotoNear,
     Label,
@@ -30,7 +31,7 @@ struct ConsoleCommand {
   std::string name;      // Label, GotoNear: label; Route: room (or label with near); Save: file or house
                          // directory; Export: file; Wait: what
   bool near = false;     // Route: `route near LABEL`
-  double seconds = 0;    // Wait: the longest wait
+  double seconds = 0;    // Wait, Calibrate: the longest wait
 };
 
 // A malformed line: the message names what was wrong and the right form.

@@ -54,6 +54,8 @@ uint16_t Session::scan(uint16_t scanId) {
   return enqueue(Op::Scan, brickWillTake(ScanMsg{scanId}, encodeScan, decodeScan, "a scan's id is 1..65535"));
 }
 uint16_t Session::stop() { return enqueue(Op::Stop, Payload{}); }
+
+uint16_t Session::calibrate() { return enqueue(Op::Calibrate, Payload{}); }
 uint16_t Session::requestMap() { return enqueue(Op::RequestMap, Payload{}); }
 
 uint16_t Session::followPath(const std::vector<Cell>& cells, uint16_t pathId) {
@@ -276,7 +278,10 @@ void Session::handle(const Telegram& t, uint32_t nowMs) {
     }
     case Op::Counters: {
       CountersMsg m;
-      if (decodeCounters(v.payload, v.payloadSize, m)) brickCounters_ = m;
+      if (decodeCounters(v.payload, v.payloadSize, m)) {
+        brickCounters_ = m;
+        ++countersCount_;
+      }
       break;
     }
     case Op::Pose: {

@@ -84,6 +84,8 @@ class Session {
   // std::invalid_argument for scanId 0.
   uint16_t scan(uint16_t scanId);
   uint16_t stop();
+  // Measure the turns' error where the robot stands (Op::Calibrate); the result comes in Counters.
+  uint16_t calibrate();
   // A path of 8-neighbour cells (cell 0 = the robot's cell), at most kMaxPathCells cells.
   // Throws std::invalid_argument for an empty, too long or broken path.
   uint16_t followPath(const std::vector<Cell>& cells, uint16_t pathId);
@@ -108,6 +110,8 @@ class Session {
   const std::optional<protocol::StatusMsg>& status() const { return status_; }
   // Statuses received so far (to tell a status sent after some event from an older one).
   uint64_t statusesReceived() const { return statuses_; }
+  // Counters received so far (the same for the wheels the brick reports).
+  uint64_t countersReceived() const { return countersCount_; }
   const std::optional<protocol::CountersMsg>& brickCounters() const { return brickCounters_; }
   const std::optional<Pose>& pose() const { return pose_; }
   const std::optional<protocol::PathProgressMsg>& pathProgress() const { return path_; }
@@ -178,6 +182,7 @@ class Session {
   std::optional<protocol::RoomExitsMsg> roomExits_;
   std::optional<protocol::ReadingsMsg> readings_;
   uint64_t statuses_ = 0;
+  uint64_t countersCount_ = 0;
   std::optional<uint16_t> battery_;
   std::optional<uint16_t> legoBattery_;
   std::optional<protocol::HelloReplyMsg> hello_;

@@ -96,12 +96,12 @@ void SimBrick::trueCell(int& col, int& row) const {
 PilotConfig SimBrick::pilotConfig() const {
   PilotConfig p;
   p.correct = config_.run.poseCorrection;
-  p.wheels = mapping::storedCalibration(config_.run.noise.wheels);
+  p.wheels = learnt_ ? *learnt_ : mapping::storedCalibration(config_.run.noise.wheels);
   return p;
 }
 
 WheelCalibration SimBrick::wheels() const {
-  return stack_.pilot() != nullptr ? stack_.pilot()->wheels() : mapping::storedCalibration(config_.run.noise.wheels);
+  return stack_.pilot() != nullptr ? stack_.pilot()->wheels() : pilotConfig().wheels;
 }
 
 BrickReport SimBrick::report() const {
@@ -137,6 +137,7 @@ void SimBrick::linkLost() {
 }
 
 void SimBrick::stopMoving() {
+  calibrating_ = false;
   if (mode_ == BrickMode::Following && path_.state == PathState::Following) path_.state = PathState::Aborted;
   if (mode_ == BrickMode::Exploring || mode_ == BrickMode::Following) mode_ = BrickMode::Idle;
 }
@@ -162,6 +163,25 @@ void SimBrick::startExploring() {
   restPose_ = pose();
   pending_ = stack_.start(config_.run.strategy, pilotConfig(), restPose_);
   mode_ = stack_.finished() ? BrickMode::Done : BrickMode::Exploring;
+}
+
+void SimBrick::calibrate() {
+  stopMoving();
+  restPose_ = pose();
+  PilotConfig p = pilotConfig();
+  p.squareSweepMrad = 1571;  // a quarter turn each way, as the brick's calibration
+  p.calibrateTurns = 4;
+  p.approaches = 0;  // where it stands
+  pending_ = stack_.start(config_.run.strategy, p, restPose_);
+  calibrating_ = true;
+  mode_ = BrickMode::Exploring;
+}
+
+void SimBrick::endCalibration() {
+  calibrating_ = false;
+  learnt_ = stack_.pilot()->wheels();
+  stack_.end();
+  mode_ = BrickMode::Idle;
 }
 
 void SimBrick::takeMapChunk(const MapChunkMsg& chunk) {
@@ -256,6 +276,7 @@ void SimBrick::carryOut(const Command& c) {
     }
     case CommandKind::MapChunk: takeMapChunk(c.chunk); break;
     case CommandKind::SetPose: setPose(c.pose); break;
+    case CommandKind::Calibrate: calibrate(); break;
     case CommandKind::GoTo:
     case CommandKind::EnterRoom:
     case CommandKind::Scan: break;  // houseCommand
@@ -311,6 +332,7 @@ void SimBrick::exploreOne() {
   do {
     pending_ = stack_.step(mapping::carryOutOnRobot(robot_, pending_, stack_.config().geometry));
   } while (!stack_.finished() && pending_.kind == DriveAction::Kind::Think);
+  if (calibrating_ && (stack_.pilot()->explorerStarted() || stack_.finished())) return endCalibration();
   if (stack_.finished() || pending_.kind == DriveAction::Kind::Done) mode_ = BrickMode::Done;
 }
 

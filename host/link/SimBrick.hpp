@@ -11,7 +11,8 @@
 // where the robot stands (after a path, an upload or SetPose); newRoom() is the Left button.
 //
 // Stand-in simplifications: paths are followed on the world's truth, one cell per cellMs,
-// without sensing (the robot is put on each cell's centre).
+// without sensing (the robot is put on each cell's centre); runs start from the noise preset's stored wheel
+// calibration (mapping::storedCalibration) until a Calibrate measured the turns, and do not sweep first.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -83,6 +84,10 @@ class SimBrick {
   PilotConfig pilotConfig() const;
   void carryOut(const protocol::Command& c);
   void startExploring();
+  // Calibrate, as the brick's ModeMachine does: a run whose pilot sweeps, turns and sweeps again where the
+  // robot stands (TurnCalibration), ended when its explorer would begin; what it learnt starts later runs.
+  void calibrate();
+  void endCalibration();
   void takeMapChunk(const protocol::MapChunkMsg& chunk);
   void setPose(const Pose& p);
   void stopMoving();
@@ -107,6 +112,8 @@ class SimBrick {
   HouseBrick house_;       // the house commands (confined explore, goto, enter room)
   DriveAction pending_{};  // the action the pilot asked for last
   Pose restPose_{};        // where the robot stands when no run holds its pose
+  bool calibrating_ = false;                // the run is a Calibrate (ends before its explorer moves)
+  std::optional<WheelCalibration> learnt_;  // what a Calibrate learnt (none: the noise preset's stored calibration)
   std::vector<uint8_t> shadow_;
   protocol::BrickLink link_;
   protocol::BrickMode mode_ = protocol::BrickMode::Idle;

@@ -27,6 +27,8 @@ TEST(ConsoleCommand, EachLineParsesToItsCommand) {
       {"explore", K::Explore, 0, 0, "", false, 0},
       {"explore house", K::ExploreHouse, 0, 0, "", false, 0},
       {"  stop  ", K::Stop, 0, 0, "", false, 0},
+      {"calibrate", K::Calibrate, 0, 0, "", false, 300},
+      {"calibrate 90", K::Calibrate, 0, 0, "", false, 90},
       {"goto 18 3", K::Goto, 18, 3, "", false, 0},
       {"goto near sofa", K::GotoNear, 0, 0, "sofa", false, 0},
       {"label door 4 0", K::Label, 4, 0, "door", false, 0},
@@ -78,6 +80,9 @@ TEST(ConsoleCommand, AMalformedLineIsOneMessageNamingTheRightForm) {
       {"wait rooms", "usage: wait explored|goal|house [SECONDS]"},
       {"wait goal 0", "wait: SECONDS must be at least 1"},
       {"wait goal x", "wait: SECONDS 'x' is not a whole number of seconds (0, 1, 2, ...)"},
+      {"calibrate 1 2", "usage: calibrate [SECONDS]"},
+      {"calibrate 0", "calibrate: SECONDS must be at least 1"},
+      {"calibrate soon", "calibrate: SECONDS 'soon' is not a whole number of seconds (0, 1, 2, ...)"},
       {"fly 1 2", "unknown command 'fly' (type help for the list)"},
   };
   for (const Case& c : cases) {

@@ -160,6 +160,38 @@ TEST(ModeMachine, ARunOnAnEmptyMapSquaresToTheWallsFirst) {
   }
 }
 
+// The PC's Calibrate (reported as exploring meanwhile) on an open floor with no echo at all: nothing to measure
+// by, and it never drives off to look for a wall; it rests where it stood, what it holds of the wheels kept.
+// (Its sweeps and whole turns: FlashKeep's and the console's end-to-end tests, with walls.)
+TEST(ModeMachine, ACalibrationWithNoWallInReachRestsWhereItStood) {
+  Brick b;
+  protocol::Command set = commandOf(protocol::CommandKind::SetPose);
+  set.pose = Pose{Cell{2, -1}, Dir::East};
+  b.modes.carryOut(set, 0);
+  const uint8_t finishes = b.modes.finishes();
+  b.modes.carryOut(commandOf(protocol::CommandKind::Calibrate), 1);
+  EXPECT_EQ(b.modes.mode(), Mode::Exploring);
+  ASSERT_NE(b.stack.pilot(), nullptr);
+  EXPECT_FALSE(b.stack.pilot()->explorerStarted()) << "it sweeps first";
+  int32_t drivenMs = 0;
+  const bool rested = b.runUntil(
+      [&] {
+        const int8_t l = b.motors.pwm[0], r = b.motors.pwm[1];
+        drivenMs += (l > 0 && r > 0) || (l < 0 && r < 0) ? 1 : 0;  // both wheels one way: a drive
+        return b.modes.mode() != Mode::Exploring;
+      },
+      600000);
+  ASSERT_TRUE(rested) << "still calibrating after 10 minutes";
+  EXPECT_EQ(b.modes.mode(), Mode::Idle);
+  EXPECT_EQ(b.modes.finishes(), static_cast<uint8_t>(finishes + 1));
+  EXPECT_EQ(b.modes.pose().cell, (Cell{2, -1})) << "rests where it stood";
+  EXPECT_EQ(b.modes.pose().heading, Dir::East);
+  EXPECT_EQ(drivenMs, 0) << "never drove";
+  EXPECT_FALSE(b.modes.hasRun());
+  EXPECT_EQ(b.wheels.writes, 1) << "what it holds of the wheels is kept";
+  EXPECT_EQ(b.modes.motorsDriven(), false);
+}
+
 // What the runs learnt of the wheels outlives switching the brick off: the kept wheels are reported at once and
 // are where the next run's learning starts; an explorer run stopped keeps what its pilot holds then; a save of
 // what is kept already writes nothing.

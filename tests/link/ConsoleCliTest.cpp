@@ -50,6 +50,29 @@ TEST(Console, ExploresReachesGoalsSavesAndExports) {
   EXPECT_NE(readFile(tmp.path("room.yaml")).find("chair"), std::string::npos);
 }
 
+// `calibrate` on the stand-in brick: a robot whose turns are 2 % off (nxt-uncalibrated, seed 1: +2.04 %, as
+// `sim` prints it beside what it learns) measures them on the spot and says so; `status` then reports them.
+TEST(Console, CalibrateMeasuresTheTurnsWhereTheRobotStands) {
+  const RunOutput r = runWithInput(
+      "connect sim:worlds/seed-appendix-a/occupancy-120.map@6,14 --robot brick --noise nxt-uncalibrated --speed 25",
+      "calibrate 120\nstatus\nquit\n");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const std::string key = "calibrated: turns ";
+  const size_t at = r.out.find(key);
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const double percent = std::stod(r.out.substr(at + key.size()));
+  EXPECT_NEAR(percent, 2.04, 0.5) << r.out;
+  EXPECT_NE(r.out.find("(before: +0.00 %)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("turns " + r.out.substr(at + key.size(), 5) + " % (learnt)"), std::string::npos) << r.out;
+  // In the open, nothing to measure by: said so, the error unchanged.
+  const RunOutput open = runWithInput(
+      "connect sim:worlds/seed-appendix-a/occupancy-120.map@11,11 --robot brick --noise nxt-uncalibrated --speed 25",
+      "calibrate 120\nquit\n");
+  EXPECT_EQ(open.exitCode, 0) << open.err;
+  EXPECT_NE(open.out.find("not calibrated: the turns' error is still +0.00 %"), std::string::npos) << open.out;
+}
+
 TEST(Console, BadGoalsAndMalformedCommandsGetOneClearMessageAndTheRobotStays) {
   struct Case {
     std::string line, message;

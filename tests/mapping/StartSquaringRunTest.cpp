@@ -123,7 +123,7 @@ Calibrated calibrateAt(const sim::Site& site, uint64_t seed) {
 TEST(StartSquaringRun, TheTurnCalibrationRecoversAKnownTrackWidthError) {
   const sim::Site site = room(10);
   int positive = 0;
-  // Measured over seeds 1-30: |measured - true| mean 0.19 %, worst 0.44 %.
+  // Measured over seeds 1-30: |measured - true| mean 0.18 %, worst 0.48 %.
   for (uint64_t seed = 1; seed <= 10; ++seed) {
     const Calibrated k = calibrateAt(site, seed);
     ASSERT_TRUE(k.found) << "seed " << seed;

@@ -293,6 +293,25 @@ TEST_F(BrickLinkTest, SetPoseIsACommandRunOnceAndABadPoseIsNeverRun) {
   EXPECT_EQ(r.headers.back().ack, 3);
 }
 
+TEST_F(BrickLinkTest, CalibrateIsACommandRunOnceAndOneWithAPayloadIsNeverRun) {
+  hello(1);
+  collect(0);
+  const Bytes calibrate = test::pcPacket(Op::Calibrate, 1, received);
+  feed(calibrate);
+  feed(calibrate);  // resent: runs once
+  Received r = collect(10);
+  std::vector<Command> cmds = commands();
+  ASSERT_EQ(cmds.size(), 1u);
+  EXPECT_EQ(cmds[0].kind, CommandKind::Calibrate);
+  EXPECT_EQ(r.headers.back().ack, 1);
+  Payload p;
+  p.size = 1;  // Calibrate carries nothing
+  feed(test::pcPacket(Op::Calibrate, 2, received, &p));
+  r = collect(20);
+  EXPECT_TRUE(commands().empty());
+  EXPECT_EQ(r.headers.back().ack, 2);
+}
+
 TEST_F(BrickLinkTest, UnacknowledgedDeltasComeAgainAndAcknowledgedOnesDoNot) {
   hello(1);
   collect(0);
