@@ -103,6 +103,9 @@ class SimBrick {
 
   sim::World world_;  // the truth on the robot's grid
   SimBrickConfig config_;
+  // What a Calibrate learnt (none: the noise preset's stored calibration); before house_, whose construction
+  // asks pilotConfig().
+  std::optional<WheelCalibration> learnt_;
   mapping::FrameTransform frame_;  // the brick map's frame -> world cells (changes with SetPose / new room)
   sim::SimRobot robot_;
   mapping::ExplorerBuffer buffer_;  // the memory of stack_, of config_.run.grid's capacity
@@ -112,8 +115,7 @@ class SimBrick {
   HouseBrick house_;       // the house commands (confined explore, goto, enter room)
   DriveAction pending_{};  // the action the pilot asked for last
   Pose restPose_{};        // where the robot stands when no run holds its pose
-  bool calibrating_ = false;                // the run is a Calibrate (ends before its explorer moves)
-  std::optional<WheelCalibration> learnt_;  // what a Calibrate learnt (none: the noise preset's stored calibration)
+  bool calibrating_ = false;  // the run is a Calibrate (ends before its explorer moves)
   std::vector<uint8_t> shadow_;
   protocol::BrickLink link_;
   protocol::BrickMode mode_ = protocol::BrickMode::Idle;
