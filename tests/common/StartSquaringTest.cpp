@@ -225,34 +225,48 @@ TEST(StartSquaring, ASweepHearsNothingOnlyWhenNoReadingHadAnEcho) {
   }
 }
 
+// A turn calibration of 4 whole turns in TwoWalls with the right wall 40 cm away, begun as the pilot's last
+// sweep (no approach left), the wheels turning (1 + errorPpm / 10^6) times what the encoders count and the
+// motors stopping pastMrad past each rotation asked for (counted so).
+struct CalibrationOutcome {
+  bool finished = false, found = false;
+  int32_t errorPpm = 0;
+};
+CalibrationOutcome calibrateBetweenTwoWalls(int32_t errorPpm, int32_t pastMrad) {
+  TwoWalls room;
+  room.rightCm = 40;
+  StartSquaring squaring;
+  TurnCalibration calibration(squaring, 4);
+  int64_t countedMrad = 0;  // every turn as counted, summed; the robot has truly turned (1 + e) times that
+  DriveAction a = calibration.begin(0);
+  for (int i = 0; i < 2000 && !calibration.finished(); ++i) {
+    if (a.kind == DriveAction::Kind::Rotate) {
+      const int32_t counted = a.value + (a.value < 0 ? -pastMrad : pastMrad);
+      countedMrad += counted;
+      a = calibration.step(DriveEvent::rotatedBy(counted));
+      continue;
+    }
+    EXPECT_EQ(a.kind, DriveAction::Kind::Read);
+    if (a.kind != DriveAction::Kind::Read) break;
+    RangeReading r;
+    r.cm = room.read(a.sensor, static_cast<int32_t>(countedMrad * (1000000 + errorPpm) / 1000000));
+    r.status = r.cm > 0 ? RangeStatus::Good : RangeStatus::NoEcho;
+    r.samples = 1;
+    a = calibration.step(DriveEvent::range(a.sensor, r));
+  }
+  return CalibrationOutcome{calibration.finished(), calibration.found(), calibration.errorPpm()};
+}
+
 // A turn calibration where only the widest dip names the walls (the two walls 6 degrees apart, nothing 70 cm away
 // to approach): its first sweep is the pilot's last (no approach left) and takes that dip; the second sweep, after
 // the whole turns, stands where the first did and takes it too (begun as a sweep that never takes it, it found no
 // wall and the turns went unmeasured). The wheels turn 1 % too far and the encoders count what was told.
 TEST(TurnCalibration, TheSecondSweepTakesTheWidestDipWhereTheFirstDid) {
   constexpr int32_t kErrorPpm = 10000;
-  TwoWalls room;
-  room.rightCm = 40;
-  StartSquaring squaring;
-  TurnCalibration calibration(squaring, 4);
-  int64_t toldMrad = 0;  // every turn told, summed; the robot has truly turned (1 + e) times that
-  DriveAction a = calibration.begin(0);
-  for (int i = 0; i < 2000 && !calibration.finished(); ++i) {
-    if (a.kind == DriveAction::Kind::Rotate) {
-      toldMrad += a.value;
-      a = calibration.step(DriveEvent::rotatedBy(a.value));
-      continue;
-    }
-    ASSERT_EQ(a.kind, DriveAction::Kind::Read);
-    RangeReading r;
-    r.cm = room.read(a.sensor, static_cast<int32_t>(toldMrad * (1000000 + kErrorPpm) / 1000000));
-    r.status = r.cm > 0 ? RangeStatus::Good : RangeStatus::NoEcho;
-    r.samples = 1;
-    a = calibration.step(DriveEvent::range(a.sensor, r));
-  }
-  ASSERT_TRUE(calibration.finished());
-  ASSERT_TRUE(calibration.found());
-  EXPECT_NEAR(calibration.errorPpm(), kErrorPpm, 2000);  // measured 1.11 %: the two sweeps place the dip 27 mrad apart
+  const CalibrationOutcome c = calibrateBetweenTwoWalls(kErrorPpm, 0);
+  ASSERT_TRUE(c.finished);
+  ASSERT_TRUE(c.found);
+  EXPECT_NEAR(c.errorPpm, kErrorPpm, 2000);  // measured 1.11 %: the two sweeps place the dip 27 mrad apart
 }
 
 // The motors stop each quarter turn a little past or short of it, and the encoders count where they stopped:
@@ -261,29 +275,10 @@ TEST(TurnCalibration, TheSecondSweepTakesTheWidestDipWhereTheFirstDid) {
 TEST(TurnCalibration, TheTurnsAreTakenAsTheEncodersCountedThem) {
   constexpr int32_t kErrorPpm = 10000;
   for (const int32_t pastMrad : {0, 8, -8}) {
-    TwoWalls room;
-    room.rightCm = 40;
-    StartSquaring squaring;
-    TurnCalibration calibration(squaring, 4);
-    int64_t countedMrad = 0;  // every turn as counted, summed; the robot has truly turned (1 + e) times that
-    DriveAction a = calibration.begin(0);
-    for (int i = 0; i < 2000 && !calibration.finished(); ++i) {
-      if (a.kind == DriveAction::Kind::Rotate) {
-        const int32_t counted = a.value + (a.value < 0 ? -pastMrad : pastMrad);
-        countedMrad += counted;
-        a = calibration.step(DriveEvent::rotatedBy(counted));
-        continue;
-      }
-      ASSERT_EQ(a.kind, DriveAction::Kind::Read);
-      RangeReading r;
-      r.cm = room.read(a.sensor, static_cast<int32_t>(countedMrad * (1000000 + kErrorPpm) / 1000000));
-      r.status = r.cm > 0 ? RangeStatus::Good : RangeStatus::NoEcho;
-      r.samples = 1;
-      a = calibration.step(DriveEvent::range(a.sensor, r));
-    }
-    ASSERT_TRUE(calibration.finished()) << pastMrad;
-    ASSERT_TRUE(calibration.found()) << pastMrad;
-    EXPECT_NEAR(calibration.errorPpm(), kErrorPpm, 2000) << "stopping " << pastMrad << " mrad past each quarter";
+    const CalibrationOutcome c = calibrateBetweenTwoWalls(kErrorPpm, pastMrad);
+    ASSERT_TRUE(c.finished) << pastMrad;
+    ASSERT_TRUE(c.found) << pastMrad;
+    EXPECT_NEAR(c.errorPpm, kErrorPpm, 2000) << "stopping " << pastMrad << " mrad past each quarter";
   }
 }
 
