@@ -36,7 +36,7 @@ RobotDescription brick() {
   r.mountCm = 6;
   r.minRangeM = 0.07;
   r.rangeM = 1.2;
-  r.faceMarginCm = 3;  // walls anywhere; 3 cm: the sensor's per-pose error and its whole-cm reading
+  r.faceMarginCm = 4;  // walls anywhere: as the brick (BrickConfig::faceMarginCm, measured there)
   r.correctsSonar = true;
   return r;
 }
