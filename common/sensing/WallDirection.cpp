@@ -53,7 +53,13 @@ bool WallDirection::addHeading(int32_t mrad) {
 
 void WallDirection::addReading(Sensor s, int16_t cm) {
   if (steps_ == 0) return;
-  cm_[steps_ - 1][static_cast<int>(s)] = static_cast<uint8_t>(cm > 0 && cm <= kFarCm ? cm : 0);
+  const uint8_t c = static_cast<uint8_t>(cm > 0 && cm <= kFarCm ? cm : 0);
+  cm_[steps_ - 1][static_cast<int>(s)] = c;
+  if (steps_ < 3) return;
+  // The reading before, far below both its neighbours: a lone wild echo, read as the nearer neighbour.
+  uint8_t& b = cm_[steps_ - 2][static_cast<int>(s)];
+  const uint8_t a = cm_[steps_ - 3][static_cast<int>(s)], near = a < c ? a : c;
+  if (b > 0 && b + kLoneDropCm + near / 10 < near && a > 0 && c > 0) b = near;
 }
 
 bool WallDirection::localMinimum(int s, int k) const {

@@ -54,6 +54,7 @@ class WallDirection {
   static constexpr int32_t kMaxHeadingMrad = 8000;  // a sweep's headings lie within +-8 rad
   static constexpr int16_t kFarCm = 160;            // farther readings are too coarse for a dip
   static constexpr int16_t kMinRiseCm = 2;          // flanks that rise less locate nothing
+  static constexpr int16_t kLoneDropCm = 3;         // a lone reading this far (+ 10 %) below both neighbours is wild
   static constexpr int16_t kCornerDropCm = 4;       // a flank falling this far below its top has passed a corner
 
   void clear() { steps_ = 0; }
@@ -61,7 +62,10 @@ class WallDirection {
   // +-kMaxHeadingMrad). False when full, not increasing or out of range: the heading and its readings
   // are ignored.
   bool addHeading(int32_t mrad);
-  // The reading of `s` at the current heading, cm; 0 (or anything outside 1..kFarCm): no usable echo.
+  // The reading of `s` at the current heading, cm; 0 (or anything outside 1..kFarCm): no usable echo. A reading
+  // between two echoes that lies more than kLoneDropCm + 10 % below the nearer of them is taken as that one:
+  // the NXT sensor's lone wild echoes ("12 cm when really 30", docs/nxt-sonar-and-odometry.md) would otherwise
+  // cut a wall's flank or make a dip of their own.
   void addReading(Sensor s, int16_t cm);
   int steps() const { return steps_; }
 

@@ -145,6 +145,38 @@ TEST(WallDirection, HandComputedDipCentreAndObjectEdge) {
   }
 }
 
+TEST(WallDirection, ALoneWildEchoIsReadAsItsNearerNeighbour) {
+  // The hand-computed dip above (floor 50, level 55, centre 0, width 724) with one reading replaced. A reading
+  // more than kLoneDropCm (3) + a tenth of the nearer neighbour below both neighbours is a wild echo and read as
+  // that neighbour: at heading 2 the neighbours are 54 and 50, so 41 (41 + 3 + 5 < 50) is wild and the dip is as
+  // clean; 42 is an echo (a thing 42 cm off), whose edge jumps to 54: no wall. Two in a row, or one beside a
+  // missing echo, are echoes too.
+  struct Case {
+    int at;
+    int16_t cm;
+    int at2;  // a second reading set to cm2 (-1: none)
+    int16_t cm2;
+    int dips;
+  };
+  for (const Case c : {Case{2, 41, -1, 0, 1}, Case{5, 20, -1, 0, 1}, Case{8, 30, -1, 0, 1}, Case{2, 42, -1, 0, 0},
+                       Case{4, 30, 5, 30, 0}, Case{2, 30, 3, 0, 0}}) {
+    int16_t cm[] = {60, 54, 51, 50, 50, 50, 50, 50, 51, 54, 60};
+    cm[c.at] = c.cm;
+    if (c.at2 >= 0) cm[c.at2] = c.cm2;
+    WallDirection w;
+    for (int k = 0; k < 11; ++k) {
+      w.addHeading(-435 + 87 * k);
+      w.addReading(Sensor::Front, cm[k]);
+    }
+    WallDirection::Dip d[4];
+    ASSERT_EQ(w.dips(d, 4), c.dips) << c.cm << " cm at heading " << c.at;
+    if (c.dips == 1) {
+      EXPECT_EQ(d[0].centreMrad, 0) << c.cm << " cm at heading " << c.at;
+      EXPECT_EQ(d[0].widthMrad, 724) << c.cm << " cm at heading " << c.at;
+    }
+  }
+}
+
 TEST(WallDirection, AFlankThatRunsOffTheSweepAmongMissingEchoesIsCutOff) {
   // A floor of 107 cm (level 117) whose left flank has not risen where the sweep ends. Two missing echoes in a
   // row end a flank as risen (specular loss on a wall's flank); one alone is passed over (a lost ping), so one

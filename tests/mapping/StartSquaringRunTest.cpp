@@ -269,7 +269,7 @@ TEST(StartSquaringRun, InAClutteredRoomLaterApproachesGoToTheFarthestEcho) {
 
 TEST(StartSquaringRun, ARobotThatDroveOffAndFoundNoWallMapsFromWhereItStands) {
   // The published start-positions room from cell 5,14, at 20 cm cells a 4.4 m room with blocks in it, the brick
-  // under nxt set down off square (seed 19): no sweep finds a straight wall; the robot drives
+  // under nxt set down off square (seed 5): no sweep finds a straight wall; the robot drives
   // towards echoes between the sweeps, ends more than half a metre from where it was set down with no wall near
   // enough to snap to, and maps as set down from there. The grid it maps on (the truth it is scored against) is
   // laid where it stands: it starts in its believed cell. (Laid where it was set down, every cell it mapped was
@@ -281,7 +281,7 @@ TEST(StartSquaringRun, ARobotThatDroveOffAndFoundNoWallMapsFromWhereItStands) {
   c.startPose = load.site->rasterStart(5, 14, 0.0);
   c.startJitterDeg = 10;
   c.noise = *sim::noiseProfileByName("nxt");
-  c.seed = 19;
+  c.seed = 5;
   c.robot = *sim::robotByName("brick");
   c.squareAtStart = true;
   MappingRun run(*load.site, c);
