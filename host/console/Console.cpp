@@ -1,58 +1,17 @@
 #include "host/console/Console.hpp"
 
 #include <chrono>
-#include <cstdio>
-#include <sstream>
 #include <thread>
 
-#include "host/report/ExperimentTable.hpp"
+#include "host/console/StatusText.hpp"
 
 namespace nxtmap::console {
 namespace {
 
 using K = ConsoleCommand::Kind;
 
-const char* const kModes[] = {"idle", "exploring", "following a path", "done exploring", "fault"};
-
-const char* modeText(const protocol::StatusMsg& st) { return kModes[static_cast<int>(st.mode)]; }
-
 std::string cellArgs(const ConsoleCommand& c) {
   return "(" + std::to_string(c.col) + "," + std::to_string(c.row) + ")";
-}
-
-// The brick's and the PC's counters for `status`.
-void countersText(std::ostream& o, const link::Session& s) {
-  if (s.brickCounters()) {
-    const auto& k = *s.brickCounters();
-    o << "brick: " << k.explorer.sensorRequests << " readings, " << k.explorer.cellsMoved << " cells moved, "
-      << k.explorer.turnEighths << " turn eighths, " << k.link.commandsRun << " commands run, " << k.link.duplicates
-      << " duplicates ignored, " << k.link.retransmits << " map retransmissions\n";
-    // Learnt from the walls as it goes (PoseTracker): what its wheels do beyond what they are told.
-    char wheels[96];
-    std::snprintf(wheels, sizeof wheels, "wheels: drift %+.2f deg/m, turns %+.2f %% (learnt)\n",
-                  k.wheelDrift10UradPerM * 1e-5 * 57.29578, k.wheelTurn10Ppm * 1e-3);
-    o << wheels;
-  }
-  const auto& pc = s.counters();
-  o << "pc: " << pc.bytesIn << " bytes in, " << pc.deltasApplied << " map deltas, " << pc.commandsAcknowledged
-    << " commands acknowledged, " << pc.commandRetries << " resent, " << s.decoderCounters().skipped
-    << " noise bytes skipped, " << pc.connects << " connects\n";
-}
-
-std::string statusText(const link::Session& s, const std::string& linkText, const GoalDriver& goals) {
-  std::ostringstream o;
-  o << "link: " << linkText << ", " << (s.connected() ? "connected" : "not connected") << "\n";
-  if (s.status()) {
-    const protocol::StatusMsg& st = *s.status();
-    o << "robot: " << modeText(st) << " at (" << st.pose.cell.x << "," << st.pose.cell.y
-      << "), off the cell's centre by " << report::formatNumber(st.offsetXMm / 10.0, 1) << ","
-      << report::formatNumber(st.offsetYMm / 10.0, 1) << " cm (x, y), battery " << st.batteryMillivolts << " mV\n";
-  }
-  o << "map: " << s.map().known() << " known cells, epoch " << s.map().epoch() << "\n";
-  countersText(o, s);
-  if (!goals.outcome().empty() || goals.active())
-    o << "goal: " << (goals.active() ? "on the way" : goals.outcome()) << "\n";
-  return o.str();
 }
 
 ConsoleError stillWaiting(const ConsoleCommand& c) {
@@ -150,14 +109,7 @@ bool Console::waitFor(const std::function<bool()>& done, double seconds) {
 
 std::string Console::statusLine() const {
   const std::string state = runner_.state();
-  return runner_.with([&](link::Session& s) {
-    std::ostringstream o;
-    o << state;
-    if (s.status()) o << " | robot " << modeText(*s.status());
-    o << " | map " << s.map().known() << " cells";
-    if (goals_.active()) o << " | goal " << goals_.routeCells() << "-cell route";
-    return o.str();
-  });
+  return runner_.with([&](link::Session& s) { return statusLineText(state, s, goals_); });
 }
 
 std::string Console::startGoal(Cell target, const std::string& what) {
@@ -228,13 +180,8 @@ std::string Console::calibrate(const ConsoleCommand& c) {
   exploration_.cancel();
   goals_.cancel();
   route_.cancel();
-  const auto turnText = [](const protocol::CountersMsg& k) {
-    char text[48];
-    std::snprintf(text, sizeof text, "%+.2f %%", k.wheelTurn10Ppm * 1e-3);
-    return std::string(text);
-  };
   const std::string before = runner_.with([&](link::Session& s) {
-    return s.brickCounters() ? turnText(*s.brickCounters()) : std::string("not reported yet");
+    return s.brickCounters() ? turnErrorText(*s.brickCounters()) : std::string("not reported yet");
   });
   const uint16_t seq = runner_.with([](link::Session& s) { return s.calibrate(); });
   // The brick reports Exploring while it calibrates: from the second Status after the command was
@@ -255,12 +202,7 @@ std::string Console::calibrate(const ConsoleCommand& c) {
   (void)waitFor([&] { return runner_.with([&](link::Session& s) { return s.countersReceived() > counters; }); }, 5);
   return runner_.with([&](link::Session& s) {
     if (!s.brickCounters()) return std::string("calibrated (the brick has not reported its wheels yet)\n");
-    const std::string after = turnText(*s.brickCounters());
-    if (after == before)
-      return "not calibrated: the turns' error is still " + after +
-             " (no straight wall in reach of the sweep where the robot stands, or its turns stalled)\n";
-    return "calibrated: turns " + after + " off (before: " + before +
-           "); the brick corrects its turns by it and keeps it\n";
+    return calibrationText(before, turnErrorText(*s.brickCounters()));
   });
 }
 
@@ -337,10 +279,7 @@ std::string Console::battery(const ConsoleCommand&) {
   const auto mv = runner_.with([](link::Session& s) { return s.batteryMillivolts(); });
   const auto lego = runner_.with([](link::Session& s) { return s.legoBatteryMillivolts(); });
   if (!got && !mv && !lego) throw ConsoleError("battery: no answer from the brick within 3 s");
-  std::ostringstream o;
-  o << "battery: " << (mv ? std::to_string(*mv) : std::string("?"))
-    << " mV (LEGO GET_BATTERY_LEVEL: " << (lego ? std::to_string(*lego) : std::string("no answer")) << ")\n";
-  return o.str();
+  return batteryText(mv, lego);
 }
 
 std::string Console::wait(const ConsoleCommand& c) {
