@@ -20,10 +20,9 @@ void countersText(std::ostream& o, const link::Session& s) {
       << k.explorer.turnEighths << " turn eighths, " << k.link.commandsRun << " commands run, " << k.link.duplicates
       << " duplicates ignored, " << k.link.retransmits << " map retransmissions\n";
     // Learnt from the walls as it goes (PoseTracker): what its wheels do beyond what they are told.
-    char wheels[96];
-    std::snprintf(wheels, sizeof wheels, "wheels: drift %+.2f deg/m, turns %+.2f %% (learnt)\n",
-                  k.wheelDrift10UradPerM * 1e-5 * 57.29578, k.wheelTurn10Ppm * 1e-3);
-    o << wheels;
+    char drift[48];
+    std::snprintf(drift, sizeof drift, "%+.2f deg/m", k.wheelDrift10UradPerM * 1e-5 * 57.29578);
+    o << "wheels: drift " << drift << ", turns " << turnErrorText(k) << " (learnt)\n";
   }
   const auto& pc = s.counters();
   o << "pc: " << pc.bytesIn << " bytes in, " << pc.deltasApplied << " map deltas, " << pc.commandsAcknowledged
