@@ -106,7 +106,7 @@ void BrickApp::initSensorPorts() {
 
 // AVR: 9 V constant on all four ports for the ultrasonic sensors, motors braked.
 void BrickApp::initAvr() {
-  avr_.init(reg::kMck);
+  avr_.init();
   avr_.command().inputPower = static_cast<uint8_t>(constant9v(0) | constant9v(1) | constant9v(2) | constant9v(3));
   avr_.command().brakeMask = ModeMachine::kAllBrakes;
   sonar_.powered(0);

@@ -31,8 +31,8 @@ class AvrLink {
 
   explicit AvrLink(Bus& bus) : bus_(bus) {}
 
-  // Takes the pins and the TWI (call once, interrupts off). MCK in Hz.
-  void init(uint32_t mck) {
+  // Takes the pins and the TWI (call once, interrupts off).
+  void init() {
     using namespace reg;
     bus_.write(kPmcPcer, (1u << kIdTwi) | (1u << kIdPioa));
     bus_.write(kTwiIdr, ~0u);
@@ -47,10 +47,7 @@ class AvrLink {
     }
     bus_.write(kPioPdr, kPinTwd | kPinTwck);
     bus_.write(kPioAsr, kPinTwd | kPinTwck);
-    bus_.write(kTwiCr, kTwiCrSwrst | kTwiCrMsdis);
-    const uint32_t div = (mck / 400000u) / 2u - 3u;  // 400 kHz
-    bus_.write(kTwiCwgr, div | (div << 8));
-    bus_.write(kTwiCr, kTwiCrMsen);
+    resetTwi();
     state_ = State::Down;
   }
 
@@ -182,11 +179,18 @@ class AvrLink {
       if (++badInRow_ >= kMaxBadFrames) restart();
     }
   }
-  void restart() {
+  // A software reset clears every TWI register, the clock's waveform too (SAM7S datasheet, TWI_CR.SWRST): it is
+  // set again, or the next frames run at a few MHz and every read overruns.
+  void resetTwi() {
     using namespace reg;
+    constexpr uint32_t div = (kMck / 400000u) / 2u - 3u;  // SCL at 400 kHz
     bus_.write(kTwiIdr, ~0u);
     bus_.write(kTwiCr, kTwiCrSwrst | kTwiCrMsdis);
+    bus_.write(kTwiCwgr, div | (div << 8));
     bus_.write(kTwiCr, kTwiCrMsen);
+  }
+  void restart() {
+    resetTwi();
     busy_ = false;
     busyMs_ = 0;
     badInRow_ = 0;

@@ -40,6 +40,10 @@ struct TwiAvr {
 
   TwiAvr() {
     bus.onWrite = [this](uint32_t a, uint32_t v) {
+      if (a == kTwiCr && (v & kTwiCrSwrst)) {  // a software reset clears the TWI's registers (SAM7S datasheet)
+        bus.regs[kTwiCwgr] = bus.regs[kTwiMmr] = 0;
+        imr = 0;
+      }
       if (a == kTwiIer) imr |= v;
       if (a == kTwiIdr) imr &= ~v;
       const bool mread = (bus.regs[kTwiMmr] & kTwiMmrMread) != 0;
@@ -122,7 +126,7 @@ void tickAndServe(TwiAvr& twi, Link& link, int ticks) {
 TEST(AvrLink, HandshakeThenAlternatingCommandAndStatusFrames) {
   TwiAvr twi;
   AvrLink<FakeBus> link(twi.bus);
-  link.init(kMck);
+  link.init();
   EXPECT_EQ(twi.bus.regs[kTwiCwgr], 57u | (57u << 8));  // 400 kHz
   twi.setStatus(0x320, 600);
   link.command().pwm[0] = 50;
@@ -162,7 +166,7 @@ TEST(AvrLink, HandshakeThenAlternatingCommandAndStatusFrames) {
 TEST(AvrLink, WritesStartAtTheirFirstByteAndEndByThemselvesReadsAskStop) {
   TwiAvr twi;
   AvrLink<FakeBus> link(twi.bus);
-  link.init(kMck);
+  link.init();
   twi.setStatus(0, 0);
   tickAndServe(twi, link, 5 + AvrLink<FakeBus>::kTransferPeriodMs);  // handshake, settle, write, read
   ASSERT_EQ(twi.writes.size(), 2u);
@@ -177,7 +181,7 @@ TEST(AvrLink, WritesStartAtTheirFirstByteAndEndByThemselvesReadsAskStop) {
 TEST(AvrLink, TheNextTransferWaitsForTxcomp) {
   TwiAvr twi;
   AvrLink<FakeBus> link(twi.bus);
-  link.init(kMck);
+  link.init();
   twi.setStatus(0, 0);
   tickAndServe(twi, link, 4);  // handshake + settle
   twi.txcompHeld = true;       // the handshake's STOP not yet sent
@@ -192,7 +196,7 @@ TEST(AvrLink, TheNextTransferWaitsForTxcomp) {
 TEST(AvrLink, ThreeBadChecksumsInARowRestartWithTheHandshake) {
   TwiAvr twi;
   AvrLink<FakeBus> link(twi.bus);
-  link.init(kMck);
+  link.init();
   twi.setStatus(0, 0, true);
   tickAndServe(twi, link, 4);                                            // handshake + settle
   tickAndServe(twi, link, 1 + 5 * AvrLink<FakeBus>::kTransferPeriodMs);  // 3 writes + 3 bad reads
@@ -206,7 +210,7 @@ TEST(AvrLink, ThreeBadChecksumsInARowRestartWithTheHandshake) {
 TEST(AvrLink, NackRestartsTheLink) {
   TwiAvr twi;
   AvrLink<FakeBus> link(twi.bus);
-  link.init(kMck);
+  link.init();
   twi.setStatus(0, 0);
   tickAndServe(twi, link, 4);
   twi.nackNext = true;
@@ -215,10 +219,29 @@ TEST(AvrLink, NackRestartsTheLink) {
   EXPECT_FALSE(link.up());
 }
 
+// The reset that restarts the link clears the TWI's clock waveform with the rest: the link sets it again, as init did
+// (left at 0 the TWI clocks bytes every 54 MCK cycles, each read overruns, and the link never comes back).
+TEST(AvrLink, ARestartClocksTheTwiAsInitDid) {
+  TwiAvr twi;
+  AvrLink<FakeBus> link(twi.bus);
+  link.init();
+  const uint32_t clock = twi.bus.regs[kTwiCwgr];
+  EXPECT_NE(clock, 0u);
+  twi.setStatus(0, 0);
+  tickAndServe(twi, link, 4);
+  twi.nackNext = true;
+  tickAndServe(twi, link, 1);
+  ASSERT_EQ(link.restarts(), 1u);
+  EXPECT_EQ(twi.bus.regs[kTwiCwgr], clock);
+  tickAndServe(twi, link, 4 + 2 * AvrLink<FakeBus>::kTransferPeriodMs);  // handshake, settle, a command, a status
+  EXPECT_TRUE(link.up());
+  EXPECT_EQ(link.goodFrames(), 1u);
+}
+
 TEST(AvrLink, ATransferThatNeverEndsTimesOut) {
   TwiAvr twi;
   AvrLink<FakeBus> link(twi.bus);
-  link.init(kMck);
+  link.init();
   link.tick();  // starts the handshake; no interrupt ever serves it
   for (int i = 0; i < AvrLink<FakeBus>::kTimeoutMs; ++i) link.tick();
   EXPECT_EQ(link.restarts(), 1u);
