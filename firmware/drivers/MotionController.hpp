@@ -6,9 +6,10 @@ namespace nxtmap::fw {
 // Closed-loop motion of the two drive wheels to target encoder counts, updated every millisecond.
 // Both wheels travel the same number of counts (straight: same sign; spin turn: opposite signs).
 // Per wheel: power proportional to the counts left, clamped to [minPower, maxPower], plus a
-// synchronisation term that slows the wheel ahead of the other. Done when both wheels stayed
-// within `tolerance` counts for settleMs; Blocked when the wheels made no progress for stallMs
-// while driven, or the move took longer than timeoutMs. Pure logic: counts in, power out.
+// synchronisation term that slows the wheel ahead of the other. Done when both wheels stayed on their
+// targets (reached, at most `tolerance` counts beyond) for settleMs; Blocked when the wheels made no
+// progress for stallMs while driven, or the move took longer than timeoutMs. Pure logic: counts in,
+// power out.
 class MotionController {
  public:
   enum class Status : uint8_t { Idle, Running, Done, Blocked };
@@ -17,8 +18,9 @@ class MotionController {
     int16_t minPower = 22;  // below this the NXT motor does not turn under load
     int16_t gainPer16 = 8;  // power per count left, in 1/16
     int16_t syncPer4 = 6;   // power per count of lead over the other wheel, in 1/4
-    int16_t tolerance = 1;  // counts; 1 count of spin = 0.5 degree at 112 mm track, so 3 left every turn
-                            // up to 1.5 degrees short and made smaller heading corrections impossible
+    int16_t tolerance = 1;  // counts a wheel may end beyond its target; it stops on reaching it (one count of
+                            // spin = 0.5 degree at 112 mm track: stopping a count short left every turn short
+                            // and a correction of one count undone)
     uint16_t settleMs = 40;
     uint16_t stallMs = 500;
     uint16_t timeoutMs = 8000;
@@ -67,7 +69,8 @@ class MotionController {
     for (int w = 0; w < 2; ++w) {
       const int32_t rest = target_[w] - now[w];
       const int32_t mag = rest < 0 ? -rest : rest;
-      if (mag <= t_.tolerance) {
+      const int32_t past = -rest * sign_[w];  // counts beyond the target along the move's direction
+      if (past >= 0 && past <= t_.tolerance) {
         power_[w] = 0;
         continue;
       }

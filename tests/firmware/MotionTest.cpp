@@ -62,6 +62,24 @@ TEST(MotionController, ReachesTheTargetCountsOfAStraightMove) {
   EXPECT_EQ(m.power(1), 0);
 }
 
+// A move ends on the counts it was asked for, not a count short: a spin of one count (half a degree) is a heading
+// correction, and a turn a count short is half a degree off.
+TEST(MotionController, EndsEachWheelOnItsTargetCount) {
+  struct Row {
+    int32_t left, right;
+  };
+  const Row rows[] = {{1, -1}, {-1, 1}, {2, 2}, {10, -10}, {-10, 10}, {180, -180}, {409, 409}, {-409, -409}};
+  for (const Row& r : rows) {
+    MotionController m;
+    FinePlant p;
+    uint32_t now = 1000;
+    m.start(0, 0, r.left, r.right, now);
+    EXPECT_EQ(run(m, p, now, 10000), MotionController::Status::Done) << r.left << "," << r.right;
+    EXPECT_EQ(p.count[0], r.left);
+    EXPECT_EQ(p.count[1], r.right);
+  }
+}
+
 TEST(MotionController, SpinTurnDrivesTheWheelsInOppositeDirections) {
   MotionController m;
   FinePlant p;
