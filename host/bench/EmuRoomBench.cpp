@@ -47,7 +47,7 @@ Figures emulated(const emu::ElfImage& image, const sim::Site& site, const sim::R
   o.onEvent = [&](uint64_t cycles) { return mirror.follow(*run, cycles, true); };
   run = std::make_unique<emu::EmulatedRun>(image, site, o);
   const emu::EmulatedRunReport r = run->run();
-  Figures f = figures(cli::scoreEmulatedMap(run->brick(), mirror, noise.sonar));
+  Figures f = figures(cli::scoreEmulatedMap(cli::layEmulatedMap(run->brick(), mirror, noise.sonar)));
   f.maxPerUpdate = r.maxPerUpdate;
   return f;
 }

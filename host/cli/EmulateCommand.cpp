@@ -91,6 +91,9 @@ CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
   c->add_flag("--score", o.score,
               "a PC listens on the radio and keeps the map the brick streams (as the console would); at the end that "
               "map is scored against the world: detected, wrong cells, unsafe free (not with --listen)");
+  c->add_option("--png", o.png,
+                "with --score: write a PNG of the map that came over the radio, laid on the world as the score lays "
+                "it (missed obstacles light red, wrong cells orange, the robot where it believes it stands)");
   c->add_option("--flash-keep", o.flashKeep,
                 "keep the brick's flash in FILE from run to run, as a brick keeps it while switched off (what it "
                 "learnt of its wheels); read at the start if it exists, written at the end");
@@ -122,6 +125,9 @@ int runEmulate(const EmulateOptions& o) {
     throw CliError("--until must be explored, disconnect or time, not '" + o.until + "'");
   if (until == "disconnect" && o.listen.empty()) throw CliError("--until disconnect needs --listen");
   if (o.score && !o.listen.empty()) throw CliError("--score listens on the radio itself: not with --listen");
+  if (!o.png.empty() && !o.score) throw CliError("--png draws the scored map: it needs --score");
+  std::string pngError;  // checked before the run, as --lcd is: nothing written yet
+  if (!o.png.empty() && !fileio::resolveOutputTarget(o.png, pngError)) throw CliError("--png: " + pngError);
   run.stopWhenExplored = until == "explored";
   run.stopWhenPcLeaves = until == "disconnect";
   run.profileWorstUpdate = o.profile;
@@ -223,8 +229,15 @@ int runEmulate(const EmulateOptions& o) {
                                   : emu::profileLines(r.worstUpdate, r.maxPerUpdate, 15));
   }
   if (ours) out << wheelLines(flash, mirror.get());
-  if (mirror) out << scoreLines(scoreEmulatedMap(emulated.brick(), *mirror, run.brick.noise.sonar));
+  std::optional<EmulatedMap> map;
+  if (mirror) map = layEmulatedMap(emulated.brick(), *mirror, run.brick.noise.sonar);
+  if (map) out << scoreLines(scoreEmulatedMap(*map));
   std::cout << out.str() << std::flush;
+  if (map && !o.png.empty()) {
+    std::string error;
+    if (!writeEmulatedMapPng(o.png, *map, error)) throw CliError(error);
+    std::cout << "wrote " << o.png << "\n";
+  }
   if (!o.lcd.empty()) {
     std::string error;
     if (!emulated.brick().lcd().savePng(o.lcd, 4, error)) throw CliError(error);

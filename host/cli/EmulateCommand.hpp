@@ -21,6 +21,7 @@ struct EmulateOptions {
   std::string listen;                     // empty = no PC side
   std::string until;                      // explored | disconnect (default: disconnect with --listen, else explored)
   std::string lcd;                        // PNG of the LCD at the end
+  std::string png;                        // with score: PNG of the radio map laid on the world
   double lcdEvery = 0.0;                  // > 0: also numbered PNGs beside it every this many emulated seconds
   std::string speed = "max";              // max | realtime
   WorldRunOptions run{"ideal", "", 0.0};  // --noise, --robot (empty: the firmware's own), --start-jitter

@@ -7,28 +7,27 @@
 #include "host/mapping/SimDrive.hpp"
 #include "host/mapping/SquaredGrid.hpp"
 #include "host/report/ExperimentTable.hpp"
+#include "host/report/MapImage.hpp"
 #include "host/sim/SceneAxes.hpp"
 #include "host/sim/StartJitter.hpp"
 #include "host/sim/TruthRaster.hpp"
 
 namespace nxtmap::cli {
 
-mapping::MapScore scoreEmulatedMap(const emu::Brick& brick, const RadioMirror& radio, const sim::SonarNoise& sonar) {
+EmulatedMap layEmulatedMap(const emu::Brick& brick, const RadioMirror& radio, const sim::SonarNoise& sonar) {
   const sim::RobotPlacement& placed = brick.placement();
   const ExplorerStart& start = radio.explorerStart();
-  const std::optional<Cell> believed = radio.believedCell();
   const sim::Scene& scene = *placed.scene;
   const double axis = start.headingDeg - std::remainder(start.headingDeg - sim::sceneAxesDeg(scene), 90.0);
   const auto heading = static_cast<sim::Heading>(sim::squareQuarter(axis));
   const sim::Vec2 centre = mapping::believedCellCentre(start.centreCm, axis, start.offsetYCm, start.offsetXCm);
   const sim::Placement grid = sim::placeOnGrid(scene, centre, sim::squareRemainderDeg(axis), placed.robot.cellCm);
-  const sim::World truth = sim::rasterizeScene(scene, grid.frame, grid.width, grid.height, placed.truth.name());
-  const ExplorerConfig explorer =
-      mapping::explorerConfigFor(truth, placed.robot, sonar, placed.robot.minRangeM, placed.robot.rangeM, -1.0, -1, 1);
+  EmulatedMap m{sim::rasterizeScene(scene, grid.frame, grid.width, grid.height, placed.truth.name()), {}, heading};
+  const ExplorerConfig explorer = mapping::explorerConfigFor(m.truth, placed.robot, sonar, placed.robot.minRangeM,
+                                                             placed.robot.rangeM, -1.0, -1, 1);
 
-  mapping::ScoreInput in;
+  mapping::ScoreInput& in = m.input;
   in.scene = &scene;
-  in.truth = &truth;
   in.frame = grid.frame;
   in.startCol = grid.startCol;
   in.startRow = grid.startRow;
@@ -44,8 +43,34 @@ mapping::MapScore scoreEmulatedMap(const emu::Brick& brick, const RadioMirror& r
   });
   in.trueCentreCm = sim::Vec2(brick.robot().xCm(), brick.robot().yCm());
   in.believedCol = in.believedRow = -1;  // no Status: no cell of the grid, lost
-  if (believed) frame.toWorld(*believed, in.believedCol, in.believedRow);
+  if (const std::optional<protocol::StatusMsg>& status = radio.status()) {
+    frame.toWorld(status->pose.cell, in.believedCol, in.believedRow);
+    m.heading = frame.toWorld(status->pose.heading);
+  }
+  return m;
+}
+
+mapping::MapScore scoreEmulatedMap(const EmulatedMap& map) {
+  mapping::ScoreInput in = map.input;
+  in.truth = &map.truth;
   return mapping::scoreMap(in);
+}
+
+bool writeEmulatedMapPng(const std::string& path, const EmulatedMap& map, std::string& error) {
+  const sim::World& world = map.truth;
+  const auto index = [&](int col, int row) {
+    return static_cast<size_t>(row) * static_cast<size_t>(world.width()) + static_cast<size_t>(col);
+  };
+  std::vector<CellState> cells(index(0, world.height()), CellState::Unknown);
+  for (const mapping::KnownCell& k : map.input.known)
+    if (world.inside(k.col, k.row)) cells[index(k.col, k.row)] = k.state;
+  report::BeliefPicture p;
+  p.world = &world;
+  p.belief = [&](int col, int row) { return cells[index(col, row)]; };
+  p.robotCol = map.input.believedCol;
+  p.robotRow = map.input.believedRow;
+  p.heading = map.heading;
+  return report::writePng(path, report::renderBeliefImage(p), error);
 }
 
 std::string scoreLines(const mapping::MapScore& m) {

@@ -14,13 +14,27 @@
 #include "host/emu/Brick.hpp"
 #include "host/mapping/MapScore.hpp"
 #include "host/sim/NoiseProfile.hpp"
+#include "host/sim/World.hpp"
 
 namespace nxtmap::cli {
 
-// The brick's map and believed cell as `radio` kept them (its explorer's frame; no Status counts as lost),
-// scored against the truth on the grid laid at the radio's explorer start. `sonar`: the noise profile the
-// robot ran under (its trusted range decides which cells a reading can prove).
-mapping::MapScore scoreEmulatedMap(const emu::Brick& brick, const RadioMirror& radio, const sim::SonarNoise& sonar);
+// The brick's map and believed cell as `radio` kept them (its explorer's frame; no Status counts as lost), laid on
+// the grid laid at the radio's explorer start: the truth rasterised on that grid, and what the score reads
+// (input.truth is set when it is scored). `sonar`: the noise profile the robot ran under (its trusted range
+// decides which cells a reading can prove).
+struct EmulatedMap {
+  sim::World truth;
+  mapping::ScoreInput input;
+  sim::Heading heading = sim::Heading::N;  // the heading the brick's last Status told, on the grid
+};
+EmulatedMap layEmulatedMap(const emu::Brick& brick, const RadioMirror& radio, const sim::SonarNoise& sonar);
+
+// The map scored against the truth.
+mapping::MapScore scoreEmulatedMap(const EmulatedMap& map);
+
+// The map's picture against the truth (report::renderMapImage's colours), written whole to `path` or not at all;
+// false with `error` set.
+bool writeEmulatedMapPng(const std::string& path, const EmulatedMap& map, std::string& error);
 
 // The score as `nxtmap emulate --score` prints it: detected, wrong cells, aligned, lost; one line each.
 std::string scoreLines(const mapping::MapScore& m);

@@ -38,11 +38,8 @@ class RadioMirror {
   bool follow(emu::EmulatedRun& run, uint64_t cycles, bool untilExplored);
   const ExplorerStart& explorerStart() const { return start_; }
   const link::MirrorMap& map() const { return session_.map(); }
-  // The cell the brick believes it stands in, as its last Status said (none before one arrived).
-  std::optional<Cell> believedCell() const {
-    if (!session_.status()) return std::nullopt;
-    return session_.status()->pose.cell;
-  }
+  // The brick's last Status (where it believes it stands, its mode, ...); none before one arrived.
+  const std::optional<protocol::StatusMsg>& status() const { return session_.status(); }
   // The brick's last Counters (what it counts and what it learnt of its wheels), if one arrived.
   const std::optional<protocol::CountersMsg>& brickCounters() const { return session_.brickCounters(); }
   // A map change unacknowledged is sent again by the brick: this long without one, the copy is whole.

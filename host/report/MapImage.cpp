@@ -42,8 +42,8 @@ int pictureCellPx(int worldSide, int askedPx) {
   return std::clamp(std::min(askedPx, kMaxPictureSide / std::max(worldSide, 1)), 1, 64);
 }
 
-RgbImage renderMapImage(const mapping::MappingRun& run, const MapImageOptions& options) {
-  const sim::World& world = run.world();
+RgbImage renderBeliefImage(const BeliefPicture& picture, const MapImageOptions& options) {
+  const sim::World& world = *picture.world;
   const int px = pictureCellPx(std::max(world.width(), world.height()), options.cellPx);
   RgbImage img;
   img.width = world.width() * px;
@@ -52,7 +52,7 @@ RgbImage renderMapImage(const mapping::MappingRun& run, const MapImageOptions& o
   const bool lines = options.gridLines && px >= 6;
   for (int row = 0; row < world.height(); ++row) {
     for (int col = 0; col < world.width(); ++col) {
-      const CellState b = run.belief(col, row);
+      const CellState b = picture.belief(col, row);
       const bool blocked = world.blocked(col, row);
       Rgb c = b == CellState::Free ? kFree : b == CellState::Occupied ? kOccupied : kUnknown;
       if (options.overlayTruth) {
@@ -69,8 +69,7 @@ RgbImage renderMapImage(const mapping::MappingRun& run, const MapImageOptions& o
     }
   }
   // The robot: a red square in its believed cell with a notch towards its heading.
-  int rc = 0, rr = 0;
-  run.believedCell(rc, rr);
+  const int rc = picture.robotCol, rr = picture.robotRow;
   if (world.inside(rc, rr)) {
     const int inset = std::max(0, px / 5);
     const int x = rc * px, y = rr * px, s = px - 2 * inset;
@@ -78,7 +77,7 @@ RgbImage renderMapImage(const mapping::MappingRun& run, const MapImageOptions& o
     if (px >= 6) {
       const int n = std::max(1, px / 4), mid = px / 2 - n / 2;
       int nx = x + mid, ny = y + mid;
-      switch (run.believedHeading()) {
+      switch (picture.heading) {
         case sim::Heading::N: ny = y + inset; break;
         case sim::Heading::E: nx = x + px - inset - n; break;
         case sim::Heading::S: ny = y + px - inset - n; break;
@@ -88,6 +87,15 @@ RgbImage renderMapImage(const mapping::MappingRun& run, const MapImageOptions& o
     }
   }
   return img;
+}
+
+RgbImage renderMapImage(const mapping::MappingRun& run, const MapImageOptions& options) {
+  BeliefPicture p;
+  p.world = &run.world();
+  p.belief = [&run](int col, int row) { return run.belief(col, row); };
+  run.believedCell(p.robotCol, p.robotRow);
+  p.heading = run.believedHeading();
+  return renderBeliefImage(p, options);
 }
 
 bool writePng(const std::string& path, const RgbImage& image, std::string& error) {

@@ -2,11 +2,18 @@
 // optionally with the true world overlaid: missed obstacles light red, wrong cells orange.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "common/grid/CellState.hpp"
+#include "host/sim/Heading.hpp"
+
 namespace nxtmap::mapping {
 class MappingRun;
+}
+namespace nxtmap::sim {
+class World;
 }
 
 namespace nxtmap::report {
@@ -32,6 +39,17 @@ struct RgbImage {
   void pixel(int x, int y, uint8_t& r, uint8_t& g, uint8_t& b) const;
 };
 
+// A belief to draw: the state of every cell of `world` (col right, row down), and the robot's believed cell and
+// heading on it (a cell outside the world: no robot drawn).
+struct BeliefPicture {
+  const sim::World* world = nullptr;
+  std::function<CellState(int col, int row)> belief;
+  int robotCol = -1, robotRow = -1;
+  sim::Heading heading = sim::Heading::N;
+};
+
+// The picture of a belief over its world's extent.
+RgbImage renderBeliefImage(const BeliefPicture& picture, const MapImageOptions& options = {});
 // The picture of the run's belief over its world's extent.
 RgbImage renderMapImage(const mapping::MappingRun& run, const MapImageOptions& options = {});
 

@@ -36,6 +36,9 @@ TEST(EmulateCli, RejectsBadOptionsWithOneLine) {
                    "--until disconnect needs --listen");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --score --listen pty"),
                    "--score listens on the radio itself: not with --listen");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --png x.png"),
+                   "--png draws the scored map: it needs --score");
+  expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --score --png /nonexistent/dir/x.png"), "does not exist");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --firmware /nonexistent/fw.elf"), "make firmware");
   expectUsageError(runCli("emulate " + kRoom + " --start 1,20 --firmware README.md"), "not an ELF");
   expectUsageError(
@@ -89,8 +92,21 @@ TEST(EmulateCliEndToEnd, ScoreRatesTheMapThatCameOverTheRadio) {
   EXPECT_NE(r.out.find("detected         100 % of the observable occupied cells"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("wrong cells      0 (unsafe free 0, phantom occupied 0)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("lost             no"), std::string::npos) << r.out;
-  const RunOutput cut = runCli("emulate " + kRoom + " --start 1,20 --score --seconds 60 --firmware " + sim);
+  TempDir dir("emuscore");
+  const std::string png = dir.path("map.png");
+  const RunOutput cut =
+      runCli("emulate " + kRoom + " --start 1,20 --score --seconds 60 --firmware " + sim + " --png " + shellQuote(png));
   EXPECT_EQ(cut.exitCode, 0) << cut.err;
+  EXPECT_NE(cut.out.find("wrote " + png), std::string::npos) << cut.out;
+  const std::string bytes = readFile(png);
+  ASSERT_GE(bytes.size(), 24u);
+  EXPECT_EQ(bytes.substr(1, 3), "PNG");
+  const auto be32 = [&](size_t at) {
+    return (static_cast<uint8_t>(bytes[at]) << 24) | (static_cast<uint8_t>(bytes[at + 1]) << 16) |
+           (static_cast<uint8_t>(bytes[at + 2]) << 8) | static_cast<uint8_t>(bytes[at + 3]);
+  };
+  EXPECT_EQ(be32(16), 22 * 8);  // IHDR: the room's 22 x 22 cells at 8 pixels a cell
+  EXPECT_EQ(be32(20), 22 * 8);
   EXPECT_NE(cut.out.find("time limit reached"), std::string::npos) << cut.out;
   EXPECT_NE(cut.out.find("detected         "), std::string::npos) << cut.out;
   EXPECT_EQ(cut.out.find("detected         100 %"), std::string::npos) << "a minute of a room is not all of it\n"
