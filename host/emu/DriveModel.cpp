@@ -39,9 +39,15 @@ uint64_t DriveModel::nextEventAt() const {
 void DriveModel::advanceTo(uint64_t now) {
   std::array<int, 3> power{avr_.motorPower(0), avr_.motorPower(1), avr_.motorPower(2)};
   sim::WheelModel& wheels = robot_.wheels();
-  if (power != lastPower_) {  // a new stretch of motion: a new slip factor
+  if (power != lastPower_) {
     lastPower_ = power;
-    wheels.newStretch(rng_);
+    const int left = power[static_cast<size_t>(geo_.leftMotor)], right = power[static_cast<size_t>(geo_.rightMotor)];
+    if (left == 0 && right == 0) {
+      moving_ = false;
+    } else if (!moving_) {  // setting off from rest: a new stretch
+      moving_ = true;
+      wheels.newStretch((left > 0 && right < 0) || (left < 0 && right > 0), rng_);
+    }
   }
   while (last_ < now) {
     const uint64_t step = std::min(now - last_, kMaxStep);
@@ -61,7 +67,8 @@ void DriveModel::advanceTo(uint64_t now) {
     double dl = 0.0, dr = 0.0;
     wheels.arcs(d[static_cast<size_t>(geo_.leftMotor)], d[static_cast<size_t>(geo_.rightMotor)], dl, dr);
     const double ds = (dl + dr) / 2.0;
-    const double dHeading = (dl - dr) / wheels.trackCm() * 180.0 / kPi;  // clockwise positive
+    const double wheelsDeg = (dl - dr) / wheels.trackCm() * 180.0 / kPi;  // clockwise positive
+    const double dHeading = wheelsDeg + wheels.stretchTurnNoiseDeg(wheelsDeg);
     const double midHeading = robot_.headingDeg() + dHeading / 2.0;
     double dx = 0.0, dy = 0.0;
     sim::directionVector(midHeading, dx, dy);

@@ -31,9 +31,11 @@ class DriveModel : public IoDevice {
   static constexpr std::array<int, 3> kPulsePin{15, 26, 0};  // motors A, B, C
   static constexpr std::array<int, 3> kDirPin{1, 9, 8};
 
-  // Wheels: robot.wheels(), from the robot's noise profile. Each stretch of constant motor power moves the
-  // robot by the wheels' arcs times a slip factor drawn from N(1, slipSigma) by an rng of this model's own
-  // (seeded: same seed, same run).
+  // Wheels: robot.wheels(), from the robot's noise profile. A stretch is one move: it starts when the driven
+  // motors set off from rest and lasts, whatever the controller does with their power, until both are at
+  // rest again. It carries the random errors of one of the host's commands (WheelModel::newStretch): a
+  // straight one (the motors set off the same way) one slip factor, a spin (opposite ways) one turn error,
+  // drawn by an rng of this model's own (seeded: same seed, same run).
   DriveModel(Clock& clock, const AvrModel& avr, Pioa& pio, sim::SimRobot& robot, const DriveGeometry& g,
              uint64_t seed = 1);
 
@@ -63,6 +65,7 @@ class DriveModel : public IoDevice {
   double drivenCm_ = 0.0;
   std::mt19937_64 rng_;
   std::array<int, 3> lastPower_{};
+  bool moving_ = false;  // a stretch is under way (a driven motor has had power since both were at rest)
 };
 
 }  // namespace nxtmap::emu

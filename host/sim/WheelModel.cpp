@@ -104,8 +104,20 @@ void WheelModel::arcs(double leftEncDeg, double rightEncDeg, double& leftCm, dou
   rightCm = throughPlay(1, rightEncDeg) * cmPerDeg_ * diameter_[1] * slip_;
 }
 
-void WheelModel::newStretch(std::mt19937_64& rng) {
-  slip_ = noise_.slipSigma > 0.0 ? 1.0 + gaussian(noise_.slipSigma, rng) : 1.0;
+void WheelModel::newStretch(bool spin, std::mt19937_64& rng) {
+  slip_ = !spin && noise_.slipSigma > 0.0 ? 1.0 + gaussian(noise_.slipSigma, rng) : 1.0;
+  turnZ_ = spin && noise_.turnSigmaDeg > 0.0 ? gaussian(1.0, rng) : 0.0;
+  stretchTurnDeg_ = 0.0;
+  stretchNoiseDeg_ = 0.0;
+}
+
+double WheelModel::stretchTurnNoiseDeg(double nominalDeg) {
+  if (turnZ_ == 0.0 || nominalDeg == 0.0) return 0.0;
+  stretchTurnDeg_ += nominalDeg;
+  const double total = turnZ_ * noise_.turnSigmaDeg * std::max(0.25, std::abs(stretchTurnDeg_) / 90.0);
+  const double step = total - stretchNoiseDeg_;
+  stretchNoiseDeg_ = total;
+  return step;
 }
 
 }  // namespace nxtmap::sim

@@ -4,7 +4,7 @@
 // track (UMBmark Eb). The parameters and their sign conventions are WheelNoise's; the per-robot signs of
 // Ed and Eb come from a hash of the seed, so they never draw from a random stream.
 // Random draws, all through the caller's rng and only for a non-zero sigma: straight() draws one slip
-// (slipSigma), spin() and turnEighths() one turn error (turnSigmaDeg), newStretch() one slip. With only
+// (slipSigma), spin() and turnEighths() one turn error (turnSigmaDeg), newStretch() one of either. With only
 // slipSigma and turnSigmaDeg set this is exactly the `typical` model the published figures used.
 // Units: cm, degrees; heading clockwise positive; wheel 0 = left, 1 = right.
 #pragma once
@@ -44,8 +44,13 @@ class WheelModel {
   // The emulator: the motors turned the left/right encoders by these degrees in one integration step;
   // the actual ground arcs of each wheel in cm (backlash, diameters, the stretch's slip).
   void arcs(double leftEncDeg, double rightEncDeg, double& leftCm, double& rightCm);
-  // A new stretch of constant motor power: a new slip factor N(1, slipSigma) for arcs().
-  void newStretch(std::mt19937_64& rng);
+  // The emulator's stretch: one move of the motors from rest to rest (DriveModel), with the random errors of
+  // one command. A straight stretch (spin false) rolls one slip factor N(1, slipSigma) for arcs(), as
+  // straight() does; a spin carries one turn error, as spin() does: after a nominal turn of theta degrees
+  // it is z * turnSigmaDeg * max(0.25, |theta| / 90), z ~ N(0, 1) drawn here.
+  void newStretch(bool spin, std::mt19937_64& rng);
+  // The turn error (deg, + clockwise) a spin stretch gains with a further nominalDeg of turn; 0 otherwise.
+  double stretchTurnNoiseDeg(double nominalDeg);
 
   double trackCm() const { return trackCm_ * trackRatio_; }  // the actual track (Eb applied)
   double nominalTrackCm() const { return trackCm_; }
@@ -74,6 +79,9 @@ class WheelModel {
   std::array<double, 2> diameter_{};  // each wheel's diameter / nominal (1 -+ e/2)
   std::array<double, 2> play_{};      // motor minus wheel, motor degrees, within +-backlash/2
   double slip_ = 1.0;                 // the current stretch's factor (arcs())
+  double turnZ_ = 0.0;                // the current spin stretch's turn error in sigmas (0: none)
+  double stretchTurnDeg_ = 0.0;       // nominal turn of the current stretch so far, deg
+  double stretchNoiseDeg_ = 0.0;      // turn error given for it so far, deg
 };
 
 }  // namespace nxtmap::sim

@@ -126,22 +126,25 @@ TEST(Lcd, SpiBytesBecomePixelsAndAPng) {
 namespace nxtmap::emu::test {
 namespace {
 
-TEST(Drive, WheelSlipFollowsTheNoiseProfileAndTheSeed) {
-  auto runWith = [](double slip, uint64_t seed) {
+// The tacho probe spins the robot: a spin carries the host's random turn error (turnSigmaDeg) and no slip.
+TEST(Drive, ASpinsTurnErrorFollowsTheNoiseProfileAndTheSeed) {
+  auto runWith = [](double slip, double turnDeg, uint64_t seed) {
     BrickConfig c;
     c.startCol = 5;
     c.startRow = 6;
     c.noise.wheels.slipSigma = slip;
+    c.noise.wheels.turnSigmaDeg = turnDeg;
     c.seed = seed;
     ProbeRun r("tacho", c, 3.0);
     EXPECT_TRUE(r.ok) << r.fault();
     return std::make_pair(r.brick->robot().headingDeg(), r.port().values.at(0));
   };
-  const auto clean = runWith(0.0, 1), a = runWith(0.05, 1), b = runWith(0.05, 1), c = runWith(0.05, 2);
+  const auto clean = runWith(0.0, 0.0, 1), a = runWith(0.0, 2.0, 1), b = runWith(0.0, 2.0, 1), c = runWith(0.0, 2.0, 2);
   EXPECT_EQ(a.second, clean.second);  // the encoders count the same wheel turns
-  EXPECT_NE(a.first, clean.first);    // but the ground covered differs
+  EXPECT_NE(a.first, clean.first);    // but the robot turned otherwise
   EXPECT_EQ(a.first, b.first);        // same seed, same run
   EXPECT_NE(a.first, c.first);
+  EXPECT_EQ(runWith(0.05, 0.0, 1).first, clean.first);  // slip is a straight move's error
 }
 
 }  // namespace

@@ -95,7 +95,9 @@ TEST(WheelModel, SystematicFieldsDrawNoRandomNumbers) {
   for (const Command& c : kScript) run(wheels, c, rng);
   double l = 0.0, r = 0.0;
   wheels.arcs(3.0, -3.0, l, r);
-  wheels.newStretch(rng);
+  wheels.newStretch(false, rng);
+  wheels.newStretch(true, rng);
+  EXPECT_EQ(wheels.stretchTurnNoiseDeg(5.0), 0.0);
   EXPECT_EQ(rng(), untouched());
 }
 
