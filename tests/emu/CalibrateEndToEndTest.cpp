@@ -3,7 +3,7 @@
 // its turns' error, keeps it in flash, and stands where it stood. Over eight seeds (the wheels' signs and noise,
 // the sonar's draws) every error it tells lies within 0.5 % of what its wheels truly do, and one it could not
 // measure (no wall direction in a sweep) is told as none rather than as a wrong one. Not every seed measures:
-// at this spot the first sweep finds no wall direction in 3 of the 8 at 2b73c72 (an open weakness of the wall
+// at this spot the first sweep finds no wall direction in 3 of the 8 at c5110fb (an open weakness of the wall
 // direction under the `nxt` sonar, see issue 18's notes; at ce53bd9, with kinder emulated wheels, 6 of the 8
 // measured nothing and one 0.52 % off); the test asks for at least half of them.
 #include <gtest/gtest.h>
