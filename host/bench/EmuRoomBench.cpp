@@ -6,11 +6,11 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "common/motion/WheelRecord.hpp"
 #include "host/cli/EmulatedMapScore.hpp"
 #include "host/cli/RadioMirror.hpp"
 #include "host/cli/SiteFiles.hpp"
 #include "host/emu/EmulatedRun.hpp"
-#include "common/motion/WheelRecord.hpp"
 #include "host/mapping/MappingRun.hpp"
 #include "host/mapping/SimDrive.hpp"
 #include "host/sim/NoiseProfile.hpp"
