@@ -6,11 +6,11 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "common/motion/WheelRecord.hpp"
 #include "host/cli/EmulatedMapScore.hpp"
 #include "host/cli/RadioMirror.hpp"
 #include "host/cli/SiteFiles.hpp"
 #include "host/emu/EmulatedRun.hpp"
+#include "host/emu/FlashState.hpp"
 #include "host/mapping/MappingRun.hpp"
 #include "host/mapping/SimDrive.hpp"
 #include "host/sim/NoiseProfile.hpp"
@@ -54,20 +54,6 @@ Figures emulated(const emu::ElfImage& image, const sim::Site& site, const sim::R
   return f;
 }
 
-// The image with `w` in the flash page the firmware keeps its wheels in (WheelRecord), as a brick that was
-// calibrated before holds them: the brick then starts knowing its wheels as well as the host's robot does.
-emu::ElfImage withStoredWheels(const emu::ElfImage& image, const WheelCalibration& w) {
-  std::vector<uint8_t> flash = image.flash();
-  uint32_t words[WheelRecord::kWords];
-  WheelRecord::encode(w, words);
-  const size_t at = WheelRecord::kFlashAddress - emu::kFlashBase;
-  for (size_t i = 0; i < WheelRecord::kWords; ++i)
-    for (size_t b = 0; b < 4; ++b) flash[at + 4 * i + b] = static_cast<uint8_t>(words[i] >> (8 * b));
-  emu::ElfImage stored = image;
-  stored.keepPagesFrom(flash);
-  return stored;
-}
-
 Figures host(const sim::Site& site, const sim::RobotDescription& brick, const sim::NoiseProfile& noise, uint64_t seed) {
   mapping::RunConfig c;
   c.robot = brick;
@@ -104,7 +90,7 @@ int runEmuRoomBench(const std::string& scenarioDir) {
   const sim::NoiseProfile noise = *sim::noiseProfileByName("nxt");
   // Under `nxt` the robot is a calibrated one: the host's starts with mapping::storedCalibration(nxt), and so
   // does the brick, from its flash.
-  const emu::ElfImage image = withStoredWheels(*load.image, mapping::storedCalibration(noise.wheels));
+  const emu::ElfImage image = emu::withStoredWheels(*load.image, mapping::storedCalibration(noise.wheels));
   Figures sumE, sumH;
   double sumDiff2 = 0.0;  // squared per-seed differences, brick less host (aligned): the gap's spread
   std::printf("  %-5s %8s %8s %6s %5s %8s   %8s %8s %6s %5s\n", "seed", "brick %", "aligned", "wrong", "lost", "instr",

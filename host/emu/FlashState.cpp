@@ -40,6 +40,23 @@ std::optional<WheelCalibration> storedWheels(const std::vector<uint8_t>& flash) 
   return w;
 }
 
+void storeWheels(std::vector<uint8_t>& flash, const WheelCalibration& w) {
+  const uint32_t at = WheelRecord::kFlashAddress - kFlashBase;
+  if (flash.size() < at + WheelRecord::kWords * 4u) flash.resize(kFlashSize, 0xFF);
+  uint32_t words[WheelRecord::kWords];
+  WheelRecord::encode(w, words);
+  for (int i = 0; i < WheelRecord::kWords; ++i)
+    for (int b = 0; b < 4; ++b) flash[at + 4 * i + b] = static_cast<uint8_t>(words[i] >> (8 * b));
+}
+
+ElfImage withStoredWheels(const ElfImage& image, const WheelCalibration& w) {
+  std::vector<uint8_t> flash = image.flash();
+  storeWheels(flash, w);
+  ElfImage stored = image;
+  stored.keepPagesFrom(flash);
+  return stored;
+}
+
 std::string wheelsText(const WheelCalibration& w) {
   char text[64];
   std::snprintf(text, sizeof text, "drift %+.2f deg/m, turns %+.2f %%", w.driftUradPerM * 1e-6 * 57.29577951,

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/motion/PoseTracker.hpp"
+#include "host/emu/ElfImage.hpp"
 
 namespace nxtmap::emu {
 
@@ -21,6 +22,10 @@ std::optional<std::vector<uint8_t>> readFlashState(const std::string& path, std:
 bool writeFlashState(const std::string& path, const std::vector<uint8_t>& flash, std::string& error);
 // The learnt wheels our firmware keeps in `flash` (the whole 256 KiB), if a whole WheelRecord is there.
 std::optional<WheelCalibration> storedWheels(const std::vector<uint8_t>& flash);
+// Writes `w` into `flash` (the whole 256 KiB) as our firmware keeps it (WheelRecord in its page).
+void storeWheels(std::vector<uint8_t>& flash, const WheelCalibration& w);
+// `image` with `w` in the flash page the firmware keeps its wheels in: a brick that was calibrated before.
+ElfImage withStoredWheels(const ElfImage& image, const WheelCalibration& w);
 // "drift +0.12 deg/m, turns -1.50 %" (one sigma omitted): a wheel calibration as people read it.
 std::string wheelsText(const WheelCalibration& w);
 

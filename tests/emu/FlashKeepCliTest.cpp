@@ -5,10 +5,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
+#include <vector>
 
-#include "common/motion/WheelRecord.hpp"
-#include "host/emu/ElfImage.hpp"
+#include "host/emu/FlashState.hpp"
 #include "tests/cli/CliTestSupport.hpp"
 
 namespace nxtmap::cli::test {
@@ -21,14 +22,13 @@ std::string emulate(const std::string& args) {
   return "emulate " + kRoom + " --start 1,20 --firmware " + kBrick + args;
 }
 
-// The words of a WheelRecord written into a kept flash file at the record's page, as the brick would.
+// A WheelRecord written into a kept flash file at the record's page, as the brick would.
 void storeWheels(const std::string& file, const WheelCalibration& w) {
-  uint32_t words[WheelRecord::kWords];
-  WheelRecord::encode(w, words);
-  std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
-  f.seekp(WheelRecord::kFlashAddress - emu::kFlashBase);
-  for (const uint32_t word : words)
-    for (int b = 0; b < 4; ++b) f.put(static_cast<char>(word >> (8 * b)));
+  std::string error;
+  std::optional<std::vector<uint8_t>> flash = emu::readFlashState(file, error);
+  ASSERT_TRUE(flash) << file << ": " << error;
+  emu::storeWheels(*flash, w);
+  ASSERT_TRUE(emu::writeFlashState(file, *flash, error)) << error;
 }
 
 TEST(FlashKeepCli, RefusesWhatIsNoKeptFlashAndLeavesItAsItWas) {
