@@ -21,6 +21,15 @@ WheelCalibration trackerWheels(WheelCalibration w) {
   w.turnPpm = 0;
   return w;
 }
+// The calibration the run makes: the one asked for, or (PilotConfig::calibrateUnknownTurns) one unasked by a robot
+// that sweeps and knows its turns no better than an uncalibrated one.
+PilotConfig withCalibration(PilotConfig c) {
+#ifndef NXTMAP_NO_START_SQUARING
+  if (c.calibrateTurns == 0 && c.squareSweepMrad > 0 && c.wheels.turnsUnknown())
+    c.calibrateTurns = c.calibrateUnknownTurns;
+#endif
+  return c;
+}
 // The tracker's gate, at least PilotConfig::gateCellTenths of a cell.
 PoseNoise trackerNoise(PoseNoise n, int32_t cellMm, int32_t tenths) {
   const int32_t floorMm = tenths * cellMm / 10;
@@ -31,14 +40,14 @@ PoseNoise trackerNoise(PoseNoise n, int32_t cellMm, int32_t tenths) {
 
 NXTMAP_RUN_ONCE Pilot::Pilot(Explorer& explorer, const PilotConfig& config)
     : explorer_(explorer),
-      config_(config),
+      config_(withCalibration(config)),
       tracker_(trackerNoise(config.noise, static_cast<int32_t>(explorer.config().geometry.cellCm) * 10,
                             config.gateCellTenths),
                trackerWheels(config.wheels)),
 #ifndef NXTMAP_NO_START_SQUARING
       squaring_(config.squareSweepMrad, config.squareStepMrad, static_cast<int16_t>(config.approachCm + 20),
                 config.sonarConeMrad),
-      calibration_(squaring_, config.calibrateTurns),
+      calibration_(squaring_, config_.calibrateTurns),
       turnErrorPpm_(config.wheels.turnPpm),
 #endif
       cellMm_(static_cast<int32_t>(explorer.config().geometry.cellCm) * 10),

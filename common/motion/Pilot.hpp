@@ -73,6 +73,10 @@ struct PilotConfig {
   // With the sweep on: first measure how far the turns are off (TurnCalibration, this many whole turns
   // between two sweeps; 0: no calibration) and correct every turn by it for the rest of the run.
   uint8_t calibrateTurns = 0;
+  // With the sweep on and calibrateTurns 0, a robot that knows its turns no better than an uncalibrated one
+  // (WheelCalibration::turnsUnknown: nothing stored, nothing learnt) calibrates with this many turns all the
+  // same, once: what it measures is kept. 0: never unasked.
+  uint8_t calibrateUnknownTurns = 4;
   // What the wheels' systematic errors are known to be (from a calibration before, a room before; the
   // defaults: an uncalibrated robot's). Every rotation is commanded divided by (1 + turn error) and what the
   // encoders report multiplied by it; the tracker predicts the drift and steering takes it out. Both are

@@ -38,7 +38,10 @@ struct WheelCalibration {
   // How far turns are off (actual / commanded - 1, ppm, |.| < 100,000: + turns too far), and its
   // variance (ppm^2; 20,000 ppm = 2 %, 1 sigma).
   int32_t turnPpm = 0;
-  int64_t turnVariance = 20000LL * 20000;
+  int64_t turnVariance = kUnknownTurnVariance;
+  static constexpr int64_t kUnknownTurnVariance = 20000LL * 20000;
+  // Nothing better than an uncalibrated NXT's turn error is known (nothing stored, nothing measured or learnt).
+  constexpr bool turnsUnknown() const { return turnVariance >= kUnknownTurnVariance; }
 };
 
 // PoseTracker: a small Kalman filter, in integers, of where the robot really is relative to the

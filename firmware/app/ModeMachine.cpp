@@ -31,6 +31,8 @@ namespace {
 // A calibration's sweeps: a quarter turn each way, whatever a run's start does (the published-geometry image
 // does not sweep at a run's start).
 constexpr int16_t kCalibrationSweepMrad = 1571;
+// A fresh brick's unasked calibration (PilotConfig::calibrateUnknownTurns) is the PC's Calibrate.
+static_assert(PilotConfig{}.calibrateUnknownTurns == BrickConfig{}.calibrationTurns);
 
 bool isHouseCommand(const protocol::Command& c) {
   return c.kind == protocol::CommandKind::GoTo || c.kind == protocol::CommandKind::EnterRoom ||

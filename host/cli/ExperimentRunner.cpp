@@ -104,6 +104,7 @@ mapping::RunConfig scenarioConfig(const report::Scenario& s, const SuiteSettings
   c.startJitterDeg = settings.startJitterDeg;
   c.squareAtStart = settings.squareAtStart;
   c.calibrateTurns = settings.calibrateTurns;
+  c.calibrateUnknownTurns = settings.calibrateUnknownTurns;
   c.grid = settings.grid;
   return c;
 }

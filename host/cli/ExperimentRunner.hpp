@@ -38,6 +38,7 @@ struct SuiteSettings {
   double startJitterDeg = 0.0;
   bool squareAtStart = false;  // the pilot turns square to the walls before mapping
   int calibrateTurns = 0;      // > 0: and measures its turns' error first (RunConfig::calibrateTurns)
+  bool calibrateUnknownTurns = true;  // RunConfig::calibrateUnknownTurns
   mapping::GridCapacity grid = mapping::GridCapacity::brick();
   // Each run's robot first maps the suite's next layout with nothing stored (its first outing, the same seed:
   // the same wheels) and starts with the wheels it learnt there, as a brick keeps them from run to run.

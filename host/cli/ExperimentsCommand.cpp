@@ -91,10 +91,9 @@ int runExperiments(const ExperimentsOptions& o) {
   settings.robot = parseRobot(o.run.robot);
   settings.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
   settings.squareAtStart = squareAtStart(o.run.square, settings.robot);
-  if (o.run.calibrate) {
-    if (o.run.square == "no") throw CliError("--calibrate measures against the walls: it needs --square yes or auto");
-    settings.calibrateTurns = 4;
-  }
+  const CalibrationChoice calibration = calibrationOf(o.run);
+  settings.calibrateTurns = calibration.turns;
+  settings.calibrateUnknownTurns = calibration.whenUnknown;
   settings.grid = gridOf(o.run);
   settings.afterFirstOuting = o.afterFirstOuting;
   if (o.seeds < 1 || o.seeds > 1000) throw CliError("--seeds must lie in 1..1000, not " + std::to_string(o.seeds));

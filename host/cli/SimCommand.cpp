@@ -136,7 +136,7 @@ std::string squareLine(const mapping::MappingRun& run) {
   return out.str();
 }
 
-// What the start's turn calibration measured (RunConfig::calibrateTurns).
+// What the start's turn calibration measured (RunConfig::calibrateTurns, or one unasked: calibrateUnknownTurns).
 std::string calibrationLine(const mapping::MappingRun& run) {
   const TurnCalibration& c = run.pilot().calibration();
   std::ostringstream out;
@@ -147,6 +147,7 @@ std::string calibrationLine(const mapping::MappingRun& run) {
     out << "turns " << (c.errorPpm() >= 0 ? "+" : "") << report::formatNumber(c.errorPpm() / 10000.0, 2) << " % off ("
         << int{c.turns()} << " whole turns between two sweeps): every turn corrected by it";
   }
+  if (run.config().calibrateTurns == 0) out << " (unasked: nothing was known of the turns)";
   return out.str();
 }
 
@@ -189,10 +190,9 @@ int runSim(const SimOptions& o) {
   config.robot = robot;
   config.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
   config.squareAtStart = squareAtStart(o.run.square, robot);
-  if (o.run.calibrate) {
-    if (o.run.square == "no") throw CliError("--calibrate measures against the walls: it needs --square yes or auto");
-    config.calibrateTurns = 4;
-  }
+  const CalibrationChoice calibration = calibrationOf(o.run);
+  config.calibrateTurns = calibration.turns;
+  config.calibrateUnknownTurns = calibration.whenUnknown;
   config.noise = parseNoise(o.run.noise);
   config.seed = parseSeed(o.seed);
   parseHeading(o.heading);
@@ -267,7 +267,7 @@ int runSim(const SimOptions& o) {
   if (!config.grid.isBrick()) out << ", grid " << config.grid.describe();
   out << "\n";
   if (run.config().squareAtStart) out << squareLine(run) << "\n";
-  if (config.calibrateTurns > 0) out << calibrationLine(run) << "\n";
+  if (run.pilot().calibration().turns() > 0) out << calibrationLine(run) << "\n";
   if (config.storedWheels) out << "wheels stored    read from " << o.wheels << "\n";
   out << wheelsLine(run) << "\n";
   out << "end              " << endName(run.explorer().end())

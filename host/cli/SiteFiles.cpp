@@ -38,6 +38,19 @@ bool squareAtStart(const std::string& square, const sim::RobotDescription& robot
   throw CliError("--square must be auto, yes or no, not '" + square + "'");
 }
 
+CalibrationChoice calibrationOf(const WorldRunOptions& o) {
+  CalibrationChoice c;
+  if (o.calibrate == "auto") return c;
+  if (o.calibrate == "no") {
+    c.whenUnknown = false;
+    return c;
+  }
+  if (o.calibrate != "yes") throw CliError("--calibrate must be auto, yes or no, not '" + o.calibrate + "'");
+  if (o.square == "no") throw CliError("--calibrate measures against the walls: it needs --square yes or auto");
+  c.turns = 4;
+  return c;
+}
+
 namespace {
 
 // "X,Y" or "X,Y,YAW": finite numbers in metres and degrees.
@@ -115,9 +128,11 @@ void addSquareOption(CLI::App& command, WorldRunOptions& o, bool calibrate) {
                      "before mapping, sweep the sonars on the spot and turn square to the room's walls: auto (the "
                      "default: the brick does, the published robot does not, as in the paper), yes, no");
   if (!calibrate) return;
-  command.add_flag("--calibrate", o.calibrate,
+  command.add_flag("--calibrate{yes}", o.calibrate,
                    "before mapping, measure how far the robot's turns are off against the walls (two sweeps with "
-                   "4 whole turns between them) and correct every turn by it; squares to the walls as well");
+                   "4 whole turns between them) and correct every turn by it; squares to the walls as well. "
+                   "--calibrate=auto (the default) does so when the robot knows its turns no better than an "
+                   "uncalibrated NXT (nothing stored), as the brick does; --calibrate=no never");
 }
 
 void addRangeOption(CLI::App& command, WorldRunOptions& o) {

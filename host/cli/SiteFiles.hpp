@@ -47,8 +47,7 @@ struct WorldRunOptions {
   std::string robot = "published";
   double startJitterDeg = 0.0;
   std::string square = "auto";
-  bool calibrate =
-      false;  // --calibrate: measure and correct the turns' error first (sim, experiments)  // --square: auto (the brick squares, the published robot does not), yes, no
+  std::string calibrate = "auto";  // --calibrate (sim, experiments): see calibrationOf
   double rangeM = 0.0;      // --range-m (addRangeOption), when rangeGiven
   bool rangeGiven = false;  // otherwise the robot's own trusted range
   std::string grid = "64";  // --grid (addGridOption): room grid cells per side, 64 the brick's
@@ -57,6 +56,14 @@ struct WorldRunOptions {
 void addWorldRunOptions(CLI::App& command, WorldRunOptions& o, const std::string& robotNote = "default published");
 // --square (sim, experiments): the start's wall sweep, see squareAtStart.
 void addSquareOption(CLI::App& command, WorldRunOptions& o, bool calibrate = true);  // --square [, --calibrate]
+// The start's turn calibration (--calibrate, with --square): `turns` whole turns asked for (yes: 4), or none and,
+// whenUnknown, one unasked by a robot that knows its turns no better than an uncalibrated one (auto, as the brick
+// does: PilotConfig::calibrateUnknownTurns); no: never. Throws CliError for anything else, or yes with --square no.
+struct CalibrationChoice {
+  int turns = 0;
+  bool whenUnknown = true;
+};
+CalibrationChoice calibrationOf(const WorldRunOptions& o);
 // --range-m (sim, sim-house): the trusted maximum range, overriding the robot's.
 void addRangeOption(CLI::App& command, WorldRunOptions& o);
 // --grid (sim, experiments, connect sim:): the room grid the explorer maps into, cells per side.

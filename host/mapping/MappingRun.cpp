@@ -76,6 +76,7 @@ MappingRun::MappingRun(Setup setup, const RunConfig&)
   if (config_.calibrateTurns > 0) config_.squareAtStart = true;
   if (config_.squareAtStart) pilot.squareSweepMrad = 1571;
   pilot.calibrateTurns = static_cast<uint8_t>(config_.calibrateTurns);
+  if (!config_.calibrateUnknownTurns) pilot.calibrateUnknownTurns = 0;
   last_ = stack_.start(config_.strategy, pilot);
 }
 

@@ -26,6 +26,10 @@ struct RunConfig {
   bool squareAtStart = false;               // the pilot turns square to the walls before mapping (StartSquaring)
   int calibrateTurns = 0;                   // > 0: and first measures its turns' error (TurnCalibration; implies
                                             // squareAtStart), correcting every turn after it
+  // With squareAtStart and no calibrateTurns: a robot that knows its turns no better than an uncalibrated one
+  // (its wheels as stored, WheelCalibration::turnsUnknown) calibrates first all the same, as the brick does
+  // (PilotConfig::calibrateUnknownTurns). false: never unasked.
+  bool calibrateUnknownTurns = true;
   // The robot: its cell, body and sensor mounts, and the range it trusts (its minRangeM/rangeM replace the
   // two below). Empty: a point robot of the raster's own cells with the ranges below (the published set-up).
   std::optional<sim::RobotDescription> robot;

@@ -1,6 +1,6 @@
 // The honest world from the outside (issue 16): hand-made world files, the robot descriptions, the start
-// jitter and the presets through `nxtmap sim`, `experiments` and `emulate`; bad worlds and options are one
-// line and exit code 2.
+// jitter, the presets and the start's calibration through `nxtmap sim`, `experiments` and `emulate`; bad worlds
+// and options are one line and exit code 2.
 #include "tests/cli/CliTestSupport.hpp"
 
 #include <gtest/gtest.h>
@@ -47,6 +47,35 @@ TEST(HonestWorldCli, TheBrickTurnsSquareToTheWallsFirstThePublishedRobotOnlyWhen
   // The room is turned 10 degrees, the robot set down off it: the sweep finds the walls and turns onto them.
   EXPECT_NE(field(asked.out, "square").find("turned square: left "), std::string::npos) << asked.out;
   EXPECT_NE(field(asked.out, "square").find("deg off the start heading"), std::string::npos) << asked.out;
+}
+
+// --calibrate: a robot that knows nothing of its turns (nxt-uncalibrated: nothing stored) measures them unasked, as
+// the brick does; a calibrated one (nxt) only when asked; =no never.
+TEST(HonestWorldCli, TheBrickMeasuresItsTurnsFirstWhenItKnowsNothingOfThem) {
+  const std::string run = "sim " + kTurned + " --robot brick --start-jitter 10 --show none --seed 2 --noise ";
+  struct Row {
+    std::string args, calibrated;  // what the "calibrated" line says ("": no such line)
+  };
+  const Row rows[] = {
+      {"nxt-uncalibrated", "(unasked: nothing was known of the turns)"},
+      {"nxt-uncalibrated --calibrate=auto", "(unasked: nothing was known of the turns)"},
+      {"nxt-uncalibrated --calibrate=no", ""},
+      {"nxt", ""},
+      {"nxt --calibrate", "every turn corrected by it"},
+  };
+  for (const Row& row : rows) {
+    const RunOutput r = runCli(run + row.args);
+    ASSERT_EQ(r.exitCode, 0) << row.args << ": " << r.err;
+    const std::string line = field(r.out, "calibrated");
+    if (row.calibrated.empty()) {
+      EXPECT_EQ(line, "") << row.args;
+    } else {
+      EXPECT_NE(line.find("whole turns between two sweeps"), std::string::npos) << row.args << "\n" << r.out;
+      EXPECT_NE(line.find(row.calibrated), std::string::npos) << row.args << "\n" << r.out;
+    }
+  }
+  const RunOutput asked = runCli(run + "nxt --calibrate");
+  EXPECT_EQ(field(asked.out, "calibrated").find("unasked"), std::string::npos) << asked.out;
 }
 
 TEST(HonestWorldCli, SameSeedSameRunAnotherSeedAnotherStart) {
@@ -108,6 +137,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadWorldCase{"jitterTooLarge", "sim " + kTurned + " --start-jitter 60", "--start-jitter must be 0 .. 45"},
         BadWorldCase{"jitterNegative", "sim " + kTurned + " --start-jitter=-1", "--start-jitter"},
         BadWorldCase{"squareMaybe", "sim " + kTurned + " --square maybe", "--square must be auto, yes or no"},
+        BadWorldCase{"calibrateMaybe", "sim " + kTurned + " --calibrate=maybe", "--calibrate must be auto, yes or no"},
+        BadWorldCase{"calibrateUnsquared", "experiments worlds/seed-appendix-a --calibrate --square no",
+                     "--calibrate measures against the walls"},
         BadWorldCase{"unknownPreset", "sim " + kTurned + " --noise lego", "--noise must be one of ideal"},
         BadWorldCase{"noWorld", "sim --noise nxt", "sim: world is required"},
         BadWorldCase{"experimentsRobot", "experiments worlds/seed-appendix-a --robot tank", "--robot"},

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "host/mapping/MappingRun.hpp"
@@ -145,6 +146,50 @@ TEST(StartSquaringRun, ACalibrationWhoseFirstSweepSawNoWallMeasuresAfterTheAppro
     const Calibrated k = calibrateAt(site, seed);
     ASSERT_TRUE(k.found) << "seed " << seed;
     EXPECT_NEAR(k.measured, k.truth, 0.005) << "seed " << seed;
+  }
+}
+
+// Whether a run calibrates its turns unasked (PilotConfig::calibrateUnknownTurns): only a robot that sweeps and knows
+// its turns no better than an uncalibrated NXT; what it measures is right, and it is what the pilot corrects by.
+TEST(StartSquaringRun, ARobotThatKnowsNothingOfItsTurnsCalibratesUnasked) {
+  const sim::Site site = room(10);
+  WheelCalibration known;
+  known.turnVariance = 5000LL * 5000;  // 0.5 %: a calibrated robot's (what a run before learnt)
+  struct Row {
+    const char* what;
+    const char* noise;
+    bool square, whenUnknown;
+    std::optional<WheelCalibration> stored;
+    bool calibrates;
+  };
+  const Row rows[] = {
+      {"nothing known of the turns", "nxt-uncalibrated", true, true, std::nullopt, true},
+      {"the same, told never to", "nxt-uncalibrated", true, false, std::nullopt, false},
+      {"no sweep (it keeps the frame it was set down in)", "nxt-uncalibrated", false, true, std::nullopt, false},
+      {"turns known from a run before", "nxt-uncalibrated", true, true, known, false},
+      {"a calibrated robot (nxt: turns known to 0.5 %)", "nxt", true, true, std::nullopt, false},
+      {"an uncalibrated robot's defaults stored", "nxt", true, true, WheelCalibration{}, true},
+  };
+  for (const Row& r : rows) {
+    for (uint64_t seed = 1; seed <= 3; ++seed) {
+      RunConfig c;
+      c.startPose = site.start;
+      c.startJitterDeg = 10;
+      c.noise = *sim::noiseProfileByName(r.noise);
+      c.seed = seed;
+      c.squareAtStart = r.square;
+      c.calibrateUnknownTurns = r.whenUnknown;
+      c.storedWheels = r.stored;
+      MappingRun run(site, c);
+      for (int i = 0; i < 5000 && !run.pilot().explorerStarted(); ++i) run.step();
+      ASSERT_TRUE(run.pilot().explorerStarted()) << r.what;
+      const TurnCalibration& cal = run.pilot().calibration();
+      EXPECT_EQ(cal.turns() > 0, r.calibrates) << r.what << ", seed " << seed;
+      EXPECT_EQ(cal.found(), r.calibrates) << r.what << ", seed " << seed;
+      if (!r.calibrates) continue;
+      EXPECT_NEAR(cal.errorPpm() / 1e6, trueTurnError(c.noise, seed), 0.005) << r.what << ", seed " << seed;
+      EXPECT_EQ(run.pilot().turnErrorPpm(), cal.errorPpm() + (r.stored ? r.stored->turnPpm : 0)) << r.what;
+    }
   }
 }
 
