@@ -56,56 +56,6 @@ void ModeMachine::carryOut(const protocol::Command& c, uint32_t nowMs) {
   }
 }
 
-void ModeMachine::houseCommand(const protocol::Command& c, uint32_t nowMs) {
-  if constexpr (kHouseCommands) {
-    if (house_ == nullptr) return;  // refused like an unknown command
-    const Pose here = pose();
-    runner_.abort();
-    follower_.abort();
-    safety_.clear();
-    tacho_.clearFault();
-    poseFromPath_ = false;
-    DriveAction first;
-    if (c.kind == protocol::CommandKind::Explore)
-      first = house_->explore(c.explore, here, roomId_);  // a new room: the map is cleared
-    else if (c.kind == protocol::CommandKind::GoTo)
-      first = house_->goTo(c.goTo, here);
-    else if (c.kind == protocol::CommandKind::Scan)
-      first = house_->scan(c.scan, here);
-    else
-      first = house_->enterRoom(c.enterRoom, here);
-    afterHouseStep(first, nowMs);
-  }
-}
-
-void ModeMachine::afterHouseStep(const DriveAction& next, uint32_t nowMs) {
-  if constexpr (kHouseCommands) {
-    if (house_->takeMapRestart()) link_.mapRestarted();
-    roomId_ = house_->roomId();
-    mapChanged();
-    pending_ = next;
-    if (house_->running()) {
-      runner_.begin(next, wheels(), nowMs);
-      return;
-    }
-    ++finishes_;
-#if defined(NXTMAP_SIM_GEOMETRY)
-    g_mapExport.fill(grid());
-#endif
-  }
-}
-
-void ModeMachine::leaveHouse() {
-  if constexpr (kHouseCommands) {
-    if (!houseActive()) return;
-    runner_.abort();
-    house_->abort();
-    house_->deactivate();
-    mode_ = Mode::Idle;
-    restAt(house_->pose());
-  }
-}
-
 void ModeMachine::readButton(Button b, uint32_t nowMs) {
   if (b != candidate_) {
     candidate_ = b;
@@ -159,37 +109,6 @@ void ModeMachine::stepExplorer(const DriveEvent& e, uint32_t nowMs) {
     return;
   }
   runner_.begin(pending_, wheels(), nowMs);
-}
-
-void ModeMachine::driveMotors() {
-  if (safety_.tripped()) return;
-  const bool run = moving();
-  if (run) pc_.stopAll();  // the robot's own run takes the motors
-  uint8_t brake = kAllBrakes;
-  for (uint8_t p = 0; p < PcOutputs::kOutputs; ++p) {
-    int8_t v = pc_.power(p, tacho_.count(p));
-    if (run) v = p == config_.leftMotor ? runner_.power(0) : p == config_.rightMotor ? runner_.power(1) : int8_t{0};
-    motors_.pwm[p] = v;
-    if (v != 0 || (!run && !pc_.brakes(p))) brake = static_cast<uint8_t>(brake & ~(1u << p));
-  }
-  motors_.brakeMask = brake;
-}
-
-uint8_t ModeMachine::setOutput(const protocol::LegoOutputCommand& c) {
-  if (moving() || safety_.tripped() || c.port >= PcOutputs::kOutputs) return protocol::kLegoRequestFailed;
-  pc_.set(c, tacho_.count(c.port));
-  return protocol::kLegoOk;
-}
-
-uint8_t ModeMachine::resetPosition(uint8_t port, bool relative) {
-  if (moving() || port >= PcOutputs::kOutputs) return protocol::kLegoRequestFailed;
-  pc_.resetPosition(port, relative, tacho_.count(port));
-  return protocol::kLegoOk;
-}
-
-protocol::LegoOutputState ModeMachine::output(uint8_t port) const {
-  const uint8_t p = port % PcOutputs::kOutputs;
-  return pc_.state(p, tacho_.count(p), motors_.pwm[p]);
 }
 
 void ModeMachine::halt() {
