@@ -1,5 +1,7 @@
 #include "firmware/app/StatusScreen.hpp"
 
+#include "common/check/Check.hpp"
+
 namespace nxtmap::fw {
 namespace {
 // Status lines (top pixel row of each) in the right-hand column.
@@ -84,6 +86,9 @@ void StatusScreen::drawMapPages() {
     lcd_.refresh();
   }
 }
+
+// A check's condition as the brick keeps it fills one line of the screen (checktext::brief).
+static_assert(checktext::kShownChars * Font3x5::kAdvance == Screen::kWidth);
 
 void StatusScreen::showCheckFailed(const char* file, int line, const char* what) {
   screen_.clear();
