@@ -25,6 +25,10 @@ class HouseBrick {
   DriveAction step(const DriveEvent& e);
   // Stops the command (Stop, a fault, another command): the robot stands where it is believed.
   void abort();
+  // What the house's runs learnt of the wheels (the next run's start); useWheels, before the first command
+  // of a house: what the brick knows of them (stored, calibrated, learnt by its other runs).
+  const WheelCalibration& wheels() const { return session_.wheels(); }
+  void useWheels(const WheelCalibration& w) { session_.useWheels(w); }
 
   bool running() const { return session_.busy(); }
   // A house command ran since the last other command: its state is what the brick reports.

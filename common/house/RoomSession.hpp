@@ -55,6 +55,10 @@ class RoomSession {
   void abort();
   // Moves the belief to `p` (e.g. a relocalisation by the PC); only while idle.
   void setPose(const Pose& p);
+  // The wheels the next run starts from: what the last run learnt of them (Pilot::wheels at its end), or
+  // what useWheels gave. useWheels: only while idle.
+  const WheelCalibration& wheels() const { return pilot_.wheels; }
+  void useWheels(const WheelCalibration& w) { pilot_.wheels = w; }
   // After scan(): the reading of sensor s.
   const RangeReading& scanReading(Sensor s) const { return scan_[static_cast<int>(s)]; }
   // The last room's and the travels' counters, summed since construction.

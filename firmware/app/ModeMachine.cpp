@@ -152,10 +152,14 @@ ActionRunner::Wheels ModeMachine::wheels() const {
   return ActionRunner::Wheels{tacho_.count(config_.leftMotor), tacho_.count(config_.rightMotor)};
 }
 
-PilotConfig ModeMachine::pilotConfig() {
+const WheelCalibration& ModeMachine::knownWheels() {
   if (stack_.pilot() != nullptr) learnt_ = stack_.pilot()->wheels();
+  return learnt_;
+}
+
+PilotConfig ModeMachine::pilotConfig() {
   PilotConfig p;
-  p.wheels = learnt_;
+  p.wheels = knownWheels();
 #ifndef NXTMAP_NO_START_SQUARING
   // A run on an empty map may choose its frame: square to the walls, cells' edges on their faces. On a map
   // the robot already stands in (a PC's, an earlier run's) the frame is given.
@@ -236,10 +240,15 @@ void ModeMachine::stop() {
 }
 
 void ModeMachine::keepWheels() {
+  if (stack_.pilot() != nullptr) keep(stack_.pilot()->wheels());
+}
+
+void ModeMachine::keep(const WheelCalibration& w) {
 #ifndef NXTMAP_NO_START_SQUARING  // (the RAM-run image learns no wheels)
-  if (stack_.pilot() == nullptr) return;
-  learnt_ = stack_.pilot()->wheels();
+  learnt_ = w;
   if (store_ != nullptr) (void)store_->save(learnt_);
+#else
+  (void)w;
 #endif
 }
 

@@ -122,8 +122,13 @@ class ModeMachine {
   // The pilot's settings for a new run: what the runs before learnt of the wheels, and (not in the RAM-run
   // image) the start's sweep square to the walls when the map is empty (BrickConfig::squareSweepMrad).
   PilotConfig pilotConfig();
+  // What is known of the wheels: the last run's pilot's (an explorer's, a calibration's or the house's),
+  // else what the last house command or the store left in learnt_.
+  const WheelCalibration& knownWheels();
   // What the explorer run's pilot learnt of the wheels: the next run's start, and into the store (if any).
   void keepWheels();
+  // `w` is what is known of the wheels from now on (learnt_), and into the store (if any).
+  void keep(const WheelCalibration& w);
   // The PC's Calibrate: a run whose pilot sweeps, turns BrickConfig::calibrationTurns whole turns and sweeps
   // again (TurnCalibration), and ends where its explorer would begin (endCalibration): the wheels kept, the
   // robot resting where it stood, square to the walls. Reported as Exploring meanwhile.

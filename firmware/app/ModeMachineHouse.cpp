@@ -18,6 +18,7 @@ void ModeMachine::houseCommand(const protocol::Command& c, uint32_t nowMs) {
     safety_.clear();
     tacho_.clearFault();
     poseFromPath_ = false;
+    if (!house_->active()) house_->useWheels(knownWheels());  // a house starts: from what the brick knows
     DriveAction first;
     if (c.kind == protocol::CommandKind::Explore)
       first = house_->explore(c.explore, here, roomId_);  // a new room: the map is cleared
@@ -42,6 +43,7 @@ void ModeMachine::afterHouseStep(const DriveAction& next, uint32_t nowMs) {
       return;
     }
     ++finishes_;
+    keep(house_->wheels());  // what the house's runs learnt: what the brick knows, and into the store
 #if defined(NXTMAP_SIM_GEOMETRY)
     g_mapExport.fill(grid());
 #endif

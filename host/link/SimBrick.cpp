@@ -101,7 +101,8 @@ PilotConfig SimBrick::pilotConfig() const {
 }
 
 WheelCalibration SimBrick::wheels() const {
-  return stack_.pilot() != nullptr ? stack_.pilot()->wheels() : pilotConfig().wheels;
+  if (stack_.pilot() != nullptr) return stack_.pilot()->wheels();
+  return house_.active() ? house_.wheels() : pilotConfig().wheels;
 }
 
 BrickReport SimBrick::report() const {
@@ -225,6 +226,7 @@ void SimBrick::newRoomFrame(const Pose& origin) {
 void SimBrick::houseCommand(const Command& c) {
   if (mode_ == BrickMode::Following && path_.state == PathState::Following) path_.state = PathState::Aborted;
   const Pose here = pose();
+  if (!house_.active()) house_.useWheels(wheels());  // a house starts from what the brick knows
   if (c.kind == CommandKind::Explore) {
     newRoomFrame(here);
     pending_ = house_.explore(c.explore, here, roomId_);
@@ -247,6 +249,7 @@ void SimBrick::carryOut(const Command& c) {
   if (houseCommand) return this->houseCommand(c);
   if (house_.active()) {  // any other command ends the house command and its reports
     house_.abort();
+    learnt_ = house_.wheels();  // what the house's runs learnt: where the brick's next runs start
     house_.deactivate();
     restPose_ = house_.pose();
     stack_.end();

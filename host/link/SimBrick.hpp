@@ -103,8 +103,8 @@ class SimBrick {
 
   sim::World world_;  // the truth on the robot's grid
   SimBrickConfig config_;
-  // What a Calibrate learnt (none: the noise preset's stored calibration); before house_, whose construction
-  // asks pilotConfig().
+  // What a Calibrate or the last house learnt (none: the noise preset's stored calibration); before house_,
+  // whose construction asks pilotConfig().
   std::optional<WheelCalibration> learnt_;
   mapping::FrameTransform frame_;  // the brick map's frame -> world cells (changes with SetPose / new room)
   sim::SimRobot robot_;

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -115,9 +117,10 @@ TEST(EmulateCliEndToEnd, ScoreRatesTheMapThatCameOverTheRadio) {
 
 // A brick set down off its cell's centre starts its explorer off the centre of the cell it believes in (the snap on
 // the nearest walls): the map is scored on the grid the brick believed in, laid from the offset its first Status
-// told, so it needs no shift to fit the world (laid on the robot's centre instead, this seed's map needed one of half
-// a cell: 97.6 % against 99.2 % shifted). The emulated runs are a draw on the image's timing: a seed that maps well
-// with one image may not with the next (seed 9 did until the image was compiled without IPA-SRA).
+// told, so it needs no more shift to fit the world than the run's own error, under a quarter of a cell (laid on the
+// robot's centre instead, this seed's map needed one of half a cell: 97.6 % against 99.2 % shifted). The emulated
+// runs are a draw on the image's timing: with one image this seed's map fitted unshifted, with the next 0.2 cells
+// (seeds 8-12 with the same image: 0, 0, 0.2, 0.2, 0.2).
 TEST(EmulateCliEndToEnd, ScoreLaysTheGridWhereTheBrickBelievedItsStartCell) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "a whole room at emulation speed: make test runs this from the Release build";
@@ -133,8 +136,13 @@ TEST(EmulateCliEndToEnd, ScoreLaysTheGridWhereTheBrickBelievedItsStartCell) {
                ? std::string()
                : r.out.substr(at + key.size(), r.out.find_first_of(" %", at + key.size()) - at - key.size());
   };
-  EXPECT_NE(r.out.find("moved 0,0 cells to fit the world best"), std::string::npos) << r.out;
-  EXPECT_EQ(after("detected         "), after("to fit the world best: detected ")) << r.out;
+  const size_t moved = r.out.find("moved ");
+  ASSERT_NE(moved, std::string::npos) << r.out;
+  double east = 9, north = 9;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + moved, "moved %lf,%lf cells to fit the world best", &east, &north), 2) << r.out;
+  EXPECT_LT(std::abs(east), 0.25) << r.out;
+  EXPECT_LT(std::abs(north), 0.25) << r.out;
+  EXPECT_NE(after("detected         "), "") << r.out;
 }
 
 TEST(EmulateCli, RealFirmwareRunPrintsMeasurementsAndLcd) {

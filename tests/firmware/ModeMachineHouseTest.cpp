@@ -256,5 +256,37 @@ TEST(ModeMachineHouse, AnyOtherCommandButtonOrFaultAbortsTheHouseWhereItStands) 
   }
 }
 
+// The house's runs start from what the brick keeps of its wheels (stored in flash, or learnt by the runs before
+// the house) and keep what they learnt when a command is over, as an explorer run does.
+TEST(ModeMachineHouse, AHouseCommandStartsFromTheWheelsKeptAndKeepsWhatItsRunsLearnt) {
+  WheelCalibration stored;
+  stored.driftUradPerM = 21700;
+  stored.turnPpm = -9400;
+  stored.driftVariance = 9000000;
+  stored.turnVariance = 360000;
+  struct Case {
+    std::string name;
+    std::optional<WheelCalibration> kept;  // in flash when switched on (nullopt: nothing)
+    int writes;                            // flash writes by the end of the GoTo
+  };
+  const Case cases[] = {
+      {"wheels kept", stored, 0},  // an open floor teaches nothing: nothing to write
+      {"nothing kept", std::nullopt, 1},
+  };
+  for (const Case& c : cases) {
+    Brick b = c.kept ? Brick(*c.kept) : Brick();
+    b.modes.carryOut(openFloor(Bounds{-3, -3, 3, 4}), b.now);
+    b.modes.carryOut(setPose(Pose{Cell{0, 0}, Dir::North}), b.now);
+    b.modes.carryOut(goTo(7, Cell{0, 3}), b.now);
+    ASSERT_NE(b.stack.pilot(), nullptr) << c.name;
+    EXPECT_TRUE(WheelRecord::same(b.stack.pilot()->wheels(), c.kept.value_or(WheelCalibration{}))) << c.name;
+    ASSERT_TRUE(b.runUntil([&] { return !b.modes.moving(); }, kDriveLimitMs)) << c.name;
+    EXPECT_EQ(b.modes.report(7400).path.state, PathState::Reached) << c.name;
+    EXPECT_EQ(b.wheels.writes, c.writes) << c.name;
+    ASSERT_TRUE(b.wheels.kept.has_value()) << c.name;
+    EXPECT_TRUE(WheelRecord::same(*b.wheels.kept, b.stack.pilot()->wheels())) << c.name;
+  }
+}
+
 }  // namespace
 }  // namespace nxtmap::fw::test
