@@ -5,12 +5,13 @@
 // with the brick's emulated clock over an in-memory radio, so the run is repeatable. No button is
 // pressed. Nothing may be lost: the house mapped (HouseExpoHouse::expectAHouse: rooms, gateways, plan
 // rooms, a floor; compared with sim-house, printed), the last room's map on the PC equal to the brick's
-// grid; no room started twice; no command run twice. (The clean run goes through the console over TCP:
-// HouseEndToEndTest.)
+// grid; no room started twice; no command run twice; the wheels the house learnt kept in flash. (The clean run
+// goes through the console over TCP: HouseEndToEndTest.)
 #include "EmuTestSupport.hpp"
 #include "HouseExpoHouse.hpp"
 #include "host/console/HouseExploration.hpp"
 #include "host/emu/EmulatedRun.hpp"
+#include "host/emu/FlashState.hpp"
 #include "host/link/LossyPipe.hpp"
 #include "host/link/Session.hpp"
 
@@ -173,6 +174,11 @@ TEST(HouseLinkEndToEnd, FivePercentDamagedBytesAndADisconnectLoseNothingAndRunNo
   EXPECT_EQ(run, s.counters().commandsAcknowledged) << "every command run once, none twice";
   EXPECT_GT(pc.damaged(), 100u) << "the link damaged too few bytes to prove anything";
   EXPECT_GT(duplicates, 0u) << "no command was received twice: the damage proved nothing";
+  // Nothing was in flash: the first room measured the turns, and the house kept what its runs learnt.
+  const std::optional<WheelCalibration> kept = storedWheels(emulated.brick().machine().flashContents());
+  ASSERT_TRUE(kept) << "the house kept nothing of the wheels";
+  std::printf("wheels in flash after the house: %s\n", wheelsText(*kept).c_str());
+  EXPECT_FALSE(kept->turnsUnknown()) << wheelsText(*kept);
 }
 
 #endif
