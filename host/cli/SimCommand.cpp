@@ -139,31 +139,13 @@ std::string squareLine(const mapping::MappingRun& run) {
 // What the start's turn calibration measured (RunConfig::calibrateTurns, or one unasked: calibrateUnknownTurns).
 std::string calibrationLine(const mapping::MappingRun& run) {
   const TurnCalibration& c = run.pilot().calibration();
-  std::ostringstream out;
-  out << "calibrated       ";
-  if (!c.found()) {
-    out << "no straight wall in range: turns not corrected";
-  } else {
-    out << "turns " << (c.errorPpm() >= 0 ? "+" : "") << report::formatNumber(c.errorPpm() / 10000.0, 2) << " % off ("
-        << int{c.turns()} << " whole turns between two sweeps): every turn corrected by it";
-  }
-  if (run.config().calibrateTurns == 0) out << " (unasked: nothing was known of the turns)";
-  return out.str();
+  return "calibrated       " +
+         turnCalibrationText(c.found(), c.found() ? c.errorPpm() : 0, c.turns(), run.config().calibrateTurns == 0);
 }
 
 // What the pilot has learnt of the wheels (PoseTracker's drift and turn error), beside the simulated truth.
 std::string wheelsLine(const mapping::MappingRun& run) {
-  const WheelCalibration w = run.pilot().wheels();
-  const sim::WheelModel& truth = run.robot().wheels();
-  const auto signedNum = [](double v, int digits) { return (v >= 0 ? "+" : "") + report::formatNumber(v, digits); };
-  const double degPerRad = 180.0 / 3.141592653589793;
-  std::ostringstream out;
-  out << "wheels learnt    drift " << signedNum(w.driftUradPerM * 1e-6 * degPerRad, 2) << " deg/m (+-"
-      << report::formatNumber(std::sqrt(static_cast<double>(w.driftVariance)) * 1e-6 * degPerRad, 2) << ", true "
-      << signedNum(truth.systematicDriftRadPerM() * degPerRad, 2) << "), turns " << signedNum(w.turnPpm / 1e4, 2)
-      << " % (+-" << report::formatNumber(std::sqrt(static_cast<double>(w.turnVariance)) / 1e4, 2) << ", true "
-      << signedNum(truth.systematicTurnError() * 100.0, 2) << ")";
-  return out.str();
+  return "wheels learnt    " + wheelsLearntText(run.pilot().wheels(), run.robot().wheels());
 }
 
 // Where the trace went and what it shows of the belief leaving the robot's cell.

@@ -10,6 +10,7 @@
 
 #include "host/cli/Args.hpp"
 #include "host/cli/Errors.hpp"
+#include "host/cli/WheelFile.hpp"
 #include "host/fileio/AtomicFile.hpp"
 #include "host/fileio/OutputTarget.hpp"
 #include "host/house/BestFramesScore.hpp"
@@ -49,7 +50,7 @@ CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& o) {
   c->add_option("--heading", o.heading, "initial heading N, E, S or W (default N)");
   addRangeOption(*c, o.run);
   addWorldRunOptions(*c, o.run);
-  addSquareOption(*c, o.run, false);  // the first room only: every later one is entered square through its doorway
+  addSquareOption(*c, o.run);  // the first room only: every later one is entered square through its doorway
   addGridOption(*c, o.run);
   c->add_option("--seed", o.seed, "random seed of the noise (default 1)");
   c->add_option("--strategy", o.strategy,
@@ -72,6 +73,10 @@ int runSimHouse(const SimHouseOptions& o) {
   config.robot = robot;
   config.startJitterDeg = checkStartJitter(o.run.startJitterDeg);
   config.squareAtStart = squareAtStart(o.run.square, robot);
+  const CalibrationChoice calibration = calibrationOf(o.run);
+  config.calibrateTurns = calibration.turns;
+  if (calibration.turns > 0) config.squareAtStart = true;  // it measures against the walls of the sweep
+  config.calibrateUnknownTurns = calibration.whenUnknown;
   config.noise = parseNoise(o.run.noise);
   config.seed = parseSeed(o.seed);
   config.strategy = parseStrategy(o.strategy);
@@ -150,6 +155,11 @@ int runSimHouse(const SimHouseOptions& o) {
       << "relocalisations " << mapper.relocalisations() << ")\n"
       << "sensor requests  " << c.sensorRequests() << "\n"
       << "raw samples      " << c.explore.rawSamples + c.travel.rawSamples << "\n";
+  const house::HouseMapper::StartCalibration& cal = mapper.startCalibration();
+  if (cal.turns > 0)
+    out << "calibrated       first room: "
+        << turnCalibrationText(cal.found, cal.errorPpm, cal.turns, config.calibrateTurns == 0) << "\n";
+  out << "wheels learnt    " << wheelsLearntText(mapper.wheels(), mapper.robot().wheels()) << "\n";
   std::cout << out.str() << std::flush;
   if (!o.save.empty()) {
     std::string error;

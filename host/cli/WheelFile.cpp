@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "host/report/ExperimentTable.hpp"
+
 namespace nxtmap::cli {
 namespace {
 
@@ -72,6 +74,30 @@ std::string wheelFileText(const WheelCalibration& w) {
       << "drift_sigma_urad_per_m: " << sigmaOf(w.driftVariance) << "\n"
       << "turn_ppm: " << w.turnPpm << "  # turns' error: actual / commanded - 1, + too far\n"
       << "turn_sigma_ppm: " << sigmaOf(w.turnVariance) << "\n";
+  return out.str();
+}
+
+std::string wheelsLearntText(const WheelCalibration& w, const sim::WheelModel& truth) {
+  const auto signedNum = [](double v, int digits) { return (v >= 0 ? "+" : "") + report::formatNumber(v, digits); };
+  const double degPerRad = 180.0 / 3.141592653589793;
+  std::ostringstream out;
+  out << "drift " << signedNum(w.driftUradPerM * 1e-6 * degPerRad, 2) << " deg/m (+-"
+      << report::formatNumber(std::sqrt(static_cast<double>(w.driftVariance)) * 1e-6 * degPerRad, 2) << ", true "
+      << signedNum(truth.systematicDriftRadPerM() * degPerRad, 2) << "), turns " << signedNum(w.turnPpm / 1e4, 2)
+      << " % (+-" << report::formatNumber(std::sqrt(static_cast<double>(w.turnVariance)) / 1e4, 2) << ", true "
+      << signedNum(truth.systematicTurnError() * 100.0, 2) << ")";
+  return out.str();
+}
+
+std::string turnCalibrationText(bool found, int32_t errorPpm, int turns, bool unasked) {
+  std::ostringstream out;
+  if (!found) {
+    out << "no straight wall in range: turns not corrected";
+  } else {
+    out << "turns " << (errorPpm >= 0 ? "+" : "") << report::formatNumber(errorPpm / 10000.0, 2) << " % off (" << turns
+        << " whole turns between two sweeps): every turn corrected by it";
+  }
+  if (unasked) out << " (unasked: nothing was known of the turns)";
   return out.str();
 }
 

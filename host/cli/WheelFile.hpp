@@ -11,6 +11,7 @@
 #include <string>
 
 #include "common/motion/PoseTracker.hpp"
+#include "host/sim/WheelModel.hpp"
 
 namespace nxtmap::cli {
 
@@ -20,5 +21,13 @@ std::optional<WheelCalibration> readWheelFile(const std::string& path, std::stri
 
 // The file's text for `w` (variances written as their square roots, rounded up to at least 1).
 std::string wheelFileText(const WheelCalibration& w);
+
+// "drift +1.98 deg/m (+-0.17, true +2.04), turns +1.9 % (+-0.15, true +2.04)": what a simulated robot learnt of
+// its wheels beside the simulated truth, as `sim` and `sim-house` print it.
+std::string wheelsLearntText(const WheelCalibration& w, const sim::WheelModel& truth);
+
+// "turns +2.07 % off (4 whole turns between two sweeps): every turn corrected by it" or "no straight wall in
+// range: turns not corrected", and " (unasked: ...)" when `unasked`: what a start's turn calibration measured.
+std::string turnCalibrationText(bool found, int32_t errorPpm, int turns, bool unasked);
 
 }  // namespace nxtmap::cli

@@ -33,6 +33,8 @@ PilotConfig pilotFor(const HouseConfig& c) {
   p.wheels = mapping::storedCalibration(c.noise.wheels);
   p.sonarConeMrad = mapping::sonarConeMrad(c.noise.sonar);
   if (c.squareAtStart) p.squareSweepMrad = 1571;  // RoomSession: the first room's run only
+  p.calibrateTurns = static_cast<uint8_t>(c.calibrateTurns);  // (with the sweep only: the first room's)
+  if (!c.calibrateUnknownTurns) p.calibrateUnknownTurns = 0;
   return p;
 }
 
@@ -183,6 +185,8 @@ HouseTraceRow HouseMapper::traceRow(RoomSession::Phase phase, const DriveAction&
 
 void HouseMapper::layTruthSquare() {
   squared_ = true;
+  const TurnCalibration& t = stack_.pilot()->calibration();
+  startCalibration_ = StartCalibration{t.turns(), t.found(), t.found() ? t.errorPpm() : 0};
   if (!config_.squareAtStart) return;
   const mapping::SquaredGrid g =
       mapping::squaredGrid(robot_, *stack_.pilot(), stack_.explorer()->pose().heading, config_.heading, setDownCm_);

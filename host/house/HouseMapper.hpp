@@ -38,6 +38,10 @@ struct HouseConfig {
   std::optional<sim::StartPose> startPose;  // a start in the plane instead of a raster cell
   double startJitterDeg = 0.0;              // > 0: set down off the cell centre and up to this far off square
   bool squareAtStart = false;  // the first room's run sweeps square to the walls first (PilotConfig::squareSweepMrad)
+  int calibrateTurns = 0;      // > 0, with squareAtStart: and measures its turns' error there first (calibrateTurns)
+  // With squareAtStart and no calibrateTurns: a robot that knows its turns no better than an uncalibrated one
+  // measures them unasked, as the brick does (PilotConfig::calibrateUnknownTurns). false: never unasked.
+  bool calibrateUnknownTurns = true;
   // The robot (cells, body, sensor mounts, trusted range: replaces rangeM/minRangeM); empty: a point robot of
   // the raster's own cells (the published set-up).
   std::optional<sim::RobotDescription> robot;
@@ -86,6 +90,15 @@ class HouseMapper {
   int relocalisations() const { return planner_.relocalisations(); }  // beliefs moved by a standing scan
   int openingsTried() const { return planner_.openingsTried(); }      // see HouseConfig::maxOpenings
   const sim::SimRobot& robot() const { return robot_; }
+  // What the house's runs learnt of the wheels (the pilots' drift and turn error, RoomSession::wheels).
+  const WheelCalibration& wheels() const { return session_.wheels(); }
+  // The first room's turn calibration (HouseConfig::calibrateTurns, or one unasked): turns 0 when none ran.
+  struct StartCalibration {
+    int turns = 0;  // whole turns between its two sweeps
+    bool found = false;
+    int32_t errorPpm = 0;  // the turns' error it measured (found only)
+  };
+  const StartCalibration& startCalibration() const { return startCalibration_; }
   const sim::World& world() const { return world_; }
   const HouseConfig& config() const { return config_; }
   const ExplorerConfig& explorerConfig() const { return explorerConfig_; }
@@ -108,6 +121,7 @@ class HouseMapper {
   // Once the first room's sweep is over: the truth laid on the grid the robot now maps on (SquaredGrid).
   void layTruthSquare();
   bool squared_ = false;  // layTruthSquare has run (or there is no sweep)
+  StartCalibration startCalibration_{};
   sim::Vec2 setDownCm_;   // where the robot's centre was set down (plane, cm)
 
   sim::World world_;  // the truth on the robot's grid

@@ -10,6 +10,7 @@ namespace {
 
 const std::string kTurned = "worlds/rooms/square-turned.yaml";  // 3 x 3 m, turned 10 deg, a third of a cell off
 const std::string kLiving = "worlds/rooms/living-room.yaml";
+const std::string kHouse = "worlds/houseexpo/house_expo_room_0000.json";
 
 void expectUsageError(const RunOutput& r, const std::string& needle) {
   EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
@@ -78,6 +79,37 @@ TEST(HonestWorldCli, TheBrickMeasuresItsTurnsFirstWhenItKnowsNothingOfThem) {
   EXPECT_EQ(field(asked.out, "calibrated").find("unasked"), std::string::npos) << asked.out;
 }
 
+// sim-house --calibrate: the first room measures the turns as `sim` does (the brick's house mode does too); every
+// house says what its runs learnt of the wheels beside the truth.
+TEST(HonestWorldCli, TheHousesFirstRoomMeasuresTheTurnsAsTheBrickDoes) {
+  const std::string run = "sim-house " + kHouse + " --robot brick --start-jitter 10 --seed 1 --noise ";
+  struct Row {
+    std::string args, calibrated;  // what the "calibrated" line says ("": no such line)
+    std::string trueTurns;         // the simulated robot's, in the "wheels learnt" line
+  };
+  const Row rows[] = {
+      {"nxt-uncalibrated", "(unasked: nothing was known of the turns)", "true +2.04)"},
+      {"nxt-uncalibrated --calibrate=no", "", "true +2.04)"},
+      {"nxt", "", "true +0.5)"},
+      {"nxt --calibrate", "every turn corrected by it", "true +0.5)"},
+  };
+  for (const Row& row : rows) {
+    const RunOutput r = runCli(run + row.args);
+    ASSERT_EQ(r.exitCode, 0) << row.args << ": " << r.err;
+    const std::string line = field(r.out, "calibrated");
+    if (row.calibrated.empty()) {
+      EXPECT_EQ(line, "") << row.args;
+    } else {
+      EXPECT_NE(line.find("first room: turns "), std::string::npos) << row.args << "\n" << r.out;
+      EXPECT_NE(line.find(row.calibrated), std::string::npos) << row.args << "\n" << r.out;
+    }
+    const std::string wheels = field(r.out, "wheels learnt");
+    EXPECT_NE(wheels.find("turns "), std::string::npos) << row.args << "\n" << r.out;
+    EXPECT_NE(wheels.find(row.trueTurns), std::string::npos) << row.args << "\n" << r.out;
+  }
+  EXPECT_EQ(field(runCli(run + "nxt --calibrate").out, "calibrated").find("unasked"), std::string::npos);
+}
+
 TEST(HonestWorldCli, SameSeedSameRunAnotherSeedAnotherStart) {
   const std::string run = "sim " + kLiving + " --robot brick --noise nxt --start-jitter 10 --show none --seed ";
   const RunOutput a = runCli(run + "4"), b = runCli(run + "4"), c = runCli(run + "5");
@@ -139,6 +171,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadWorldCase{"squareMaybe", "sim " + kTurned + " --square maybe", "--square must be auto, yes or no"},
         BadWorldCase{"calibrateMaybe", "sim " + kTurned + " --calibrate=maybe", "--calibrate must be auto, yes or no"},
         BadWorldCase{"calibrateUnsquared", "experiments worlds/seed-appendix-a --calibrate --square no",
+                     "--calibrate measures against the walls"},
+        BadWorldCase{"houseCalibrateMaybe", "sim-house " + kHouse + " --calibrate=maybe",
+                     "--calibrate must be auto, yes or no"},
+        BadWorldCase{"houseCalibrateUnsquared", "sim-house " + kHouse + " --calibrate --square no",
                      "--calibrate measures against the walls"},
         BadWorldCase{"unknownPreset", "sim " + kTurned + " --noise lego", "--noise must be one of ideal"},
         BadWorldCase{"noWorld", "sim --noise nxt", "sim: world is required"},
