@@ -146,7 +146,14 @@ class Session {
     uint32_t sentMs = 0;
   };
   uint16_t enqueue(protocol::Op op, const protocol::Payload& payload);
-  void handle(const protocol::Telegram& t, uint32_t nowMs);
+  void handle(const protocol::Telegram& t, uint32_t nowMs);  // one frame from the brick (SessionReceive.cpp)
+  void onHelloReply(const protocol::PacketView& v);
+  void takeAcknowledgements(const protocol::PacketHeader& h);  // our commands the header acknowledges
+  void onMapDelta(const protocol::PacketView& v, size_t frameBytes, uint32_t nowMs);
+  void onStatus(const protocol::PacketView& v);
+  void onReport(const protocol::PacketView& v);  // counters, pose, path, room, exits, readings, battery
+  // A new map epoch: the copy held so far kept aside (if any) until its room is known, its room's end void.
+  void stashCopy();
   void append(std::vector<uint8_t>& out, protocol::Op op, uint16_t seq, const protocol::Payload& payload);
   void noteRoom(uint16_t id);
   void setPoseFromBrick(const Pose& p);
