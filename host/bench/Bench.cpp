@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "host/bench/BenchWorlds.hpp"
 #include "host/bench/LinkBench.hpp"
 #include "host/bench/AcceptanceBench.hpp"
 #include "host/bench/EmuBench.hpp"
@@ -42,13 +43,7 @@ constexpr int kNoisySeeds = 10;
 
 std::string scenarioDir(int argc, char** argv) {
   if (argc > 1) return argv[1];
-  const fs::path local = fs::path("worlds") / "seed-appendix-a";
-  std::error_code ec;
-  if (fs::exists(local / "scenarios.tsv", ec)) return local.string();
-  // The source tree this file was compiled from.
-  const fs::path source = fs::path(__FILE__).parent_path().parent_path().parent_path() / "worlds" / "seed-appendix-a";
-  if (fs::exists(source / "scenarios.tsv", ec)) return source.string();
-  return local.string();
+  return (nxtmap::bench::worldsRoot() / "seed-appendix-a").string();
 }
 
 struct Clean {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "host/bench/BenchWorlds.hpp"
 #include "host/house/HouseExpoPlan.hpp"
 #include "host/house/HouseMapper.hpp"
 #include "host/house/HouseScore.hpp"
@@ -25,13 +26,6 @@ constexpr int kNoisySeeds = 3;       // typical noise: seeds 1..3, every one mus
 constexpr int kGridCells = 128;      // explicit: see mapHouse
 constexpr int kBrickGridCells = 64;  // the brick's own grid, for the spread (a room larger is mapped to its edge)
 constexpr int kSpreadSeeds = 20;     // typical noise, default strategy: the spread over seeds 1..20 (info)
-
-fs::path houseDir() {
-  const fs::path local = fs::path("worlds") / "houseexpo";
-  std::error_code ec;
-  if (fs::is_directory(local, ec)) return local;
-  return fs::path(__FILE__).parent_path().parent_path().parent_path() / "worlds" / "houseexpo";
-}
 
 struct Result {
   house::HouseScore score;
@@ -69,7 +63,7 @@ std::string pad(const std::string& s, size_t w) { return s.size() >= w ? s : s +
 int runHouseBench() {
   std::vector<fs::path> files;
   std::error_code ec;
-  for (const auto& e : fs::directory_iterator(houseDir(), ec)) {
+  for (const auto& e : fs::directory_iterator(worldsRoot() / "houseexpo", ec)) {
     if (e.path().extension() == ".json") files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());

@@ -42,12 +42,6 @@ std::string pad(const std::string& s, size_t w) { return s.size() >= w ? s : s +
 
 }  // namespace
 
-fs::path worldsRoot() {
-  std::error_code ec;
-  if (fs::is_directory(fs::path("worlds") / "seed-appendix-a", ec)) return "worlds";
-  return fs::path(__FILE__).parent_path().parent_path().parent_path() / "worlds";
-}
-
 void RealismWorlds::load() {
   const fs::path root = worldsRoot();
   suite10 = cli::loadSuite((root / "seed-appendix-a").string(), 10);

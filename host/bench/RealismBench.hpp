@@ -7,15 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "host/bench/BenchWorlds.hpp"
 #include "host/bench/RealismRuns.hpp"
 #include "host/cli/ExperimentRunner.hpp"
 #include "host/cli/ProgressLine.hpp"
 #include "host/sim/Site.hpp"
 
 namespace nxtmap::bench {
-
-// The worlds/ directory: ./worlds when run from the source tree's root, else the source tree's own.
-std::filesystem::path worldsRoot();
 
 // Every world the section runs, loaded once (the sets point into the suites and `sites`).
 struct RealismWorlds {
