@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "host/bench/BenchWorlds.hpp"
+#include "host/bench/TargetRows.hpp"
 #include "host/bench/LinkBench.hpp"
 #include "host/bench/AcceptanceBench.hpp"
 #include "host/bench/EmuBench.hpp"
@@ -59,53 +60,9 @@ struct Noisy {
   double meanDetected = 0, minDetected = 100, meanWrongPct = 0, maxWrongPct = 0;
 };
 
-class Table {
- public:
-  void row(const std::string& measure, const std::string& strategy, const std::string& measured,
-           const std::string& target, const std::string& result) {
-    rows_.push_back({measure, strategy, measured, target, result});
-    if (result == "PASS") ++pass_;
-    if (result == "PASS" || result == "MISS") ++targets_;
-  }
-  void rule() { rows_.push_back({}); }
-  void print() const {
-    const std::vector<std::string> head = {"measure", "strategy", "measured", "target", "result"};
-    std::vector<size_t> w(head.size());
-    for (size_t i = 0; i < head.size(); ++i) w[i] = head[i].size();
-    for (const auto& r : rows_)
-      for (size_t i = 0; i < r.size(); ++i) w[i] = std::max(w[i], r[i].size());
-    auto line = [&](const std::vector<std::string>& r) {
-      std::string s;
-      for (size_t i = 0; i < head.size(); ++i) {
-        const std::string& c = r[i];
-        s += c + std::string(w[i] - c.size() + 2, ' ');
-      }
-      while (!s.empty() && s.back() == ' ') s.pop_back();
-      std::cout << s << '\n';
-    };
-    line(head);
-    size_t total = 0;
-    for (size_t x : w) total += x + 2;
-    const std::string dashes(total - 2, '-');
-    std::cout << dashes << '\n';
-    for (const auto& r : rows_) {
-      if (r.empty())
-        std::cout << dashes << '\n';
-      else
-        line(r);
-    }
-    std::cout << dashes << '\n' << "targets met: " << pass_ << " of " << targets_ << '\n';
-  }
-
- private:
-  std::vector<std::vector<std::string>> rows_;
-  int pass_ = 0, targets_ = 0;
-};
-
-const char* verdict(bool ok) { return ok ? "PASS" : "MISS"; }
-
 int run(int argc, char** argv) {
   using namespace nxtmap;
+  using bench::verdict;
   const std::string dir = scenarioDir(argc, argv);
   const cli::Suite suite = cli::loadSuite(dir);
   const size_t n = suite.scenarios.size();
@@ -154,24 +111,24 @@ int run(int argc, char** argv) {
     noisy.push_back(z);
   }
 
-  Table table;
+  nxtmap::bench::TargetRows table("strategy", "targets met");
   auto pct = [](double v) { return formatNumber(v, 2) + " %"; };
   for (const Clean& c : clean) {
-    table.row("median time units (no noise)", c.strategy,
+    table.add("median time units (no noise)", c.strategy,
               formatNumber(c.table.medianTimeUnits(), 1) + " = " + formatNumber(c.timeRatio, 2) + "x",
               "published " + formatNumber(report::kPublishedMedianTimeUnits), "");
   }
   for (const Clean& c : clean) {
-    table.row("median sensor requests (no noise)", c.strategy,
+    table.add("median sensor requests (no noise)", c.strategy,
               formatNumber(c.table.medianSensorReads(), 1) + " = " + formatNumber(c.sensorRatio, 2) + "x",
               "published " + formatNumber(report::kPublishedMedianSensorReads), "");
   }
   for (const Clean& c : clean) {
-    table.row("detected % of observable, every run", c.strategy, "min " + pct(c.minDetected), "100 %",
+    table.add("detected % of observable, every run", c.strategy, "min " + pct(c.minDetected), "100 %",
               verdict(c.minDetected >= 100.0 - 1e-9));
   }
   for (const Clean& c : clean) {
-    table.row("wrong cells, every run", c.strategy, "max " + formatNumber(c.maxWrong), "0", verdict(c.maxWrong == 0.0));
+    table.add("wrong cells, every run", c.strategy, "max " + formatNumber(c.maxWrong), "0", verdict(c.maxWrong == 0.0));
   }
   // The better strategy: the smaller of the two ratios' maximum, among those detecting 100 %.
   const Clean* best = nullptr;
@@ -180,28 +137,28 @@ int run(int argc, char** argv) {
     if (!full) continue;
     if (!best || std::max(c.timeRatio, c.sensorRatio) < std::max(best->timeRatio, best->sensorRatio)) best = &c;
   }
-  table.row("better strategy: time and sensors vs published", best ? best->strategy : "none",
+  table.add("better strategy: time and sensors vs published", best ? best->strategy : "none",
             best ? formatNumber(best->timeRatio, 2) + "x, " + formatNumber(best->sensorRatio, 2) + "x" : "-",
             "both <= " + formatNumber(kRatioTarget) + "x, 100 %",
             verdict(best && best->timeRatio <= kRatioTarget && best->sensorRatio <= kRatioTarget));
   table.rule();
   for (const Clean& c : clean) {
-    table.row("wall time, " + std::to_string(n) + "-run suite, 1 core", c.strategy, formatNumber(c.wallS, 3) + " s",
+    table.add("wall time, " + std::to_string(n) + "-run suite, 1 core", c.strategy, formatNumber(c.wallS, 3) + " s",
               "< " + formatNumber(kWallTargetS) + " s", verdict(c.wallS < kWallTargetS));
   }
   table.rule();
   const std::string noisyLabel = "typical noise, " + std::to_string(kNoisySeeds) + " seeds: ";
   for (size_t i = 0; i < clean.size(); ++i) {
-    table.row(noisyLabel + "mean detected %", clean[i].strategy, pct(noisy[i].meanDetected),
+    table.add(noisyLabel + "mean detected %", clean[i].strategy, pct(noisy[i].meanDetected),
               ">= " + formatNumber(kNoisyDetectTargetPct) + " %",
               verdict(noisy[i].meanDetected >= kNoisyDetectTargetPct));
-    table.row(noisyLabel + "min detected %", clean[i].strategy, pct(noisy[i].minDetected), "(info)", "");
+    table.add(noisyLabel + "min detected %", clean[i].strategy, pct(noisy[i].minDetected), "(info)", "");
   }
   for (size_t i = 0; i < clean.size(); ++i) {
-    table.row(noisyLabel + "mean wrong cells", clean[i].strategy, pct(noisy[i].meanWrongPct) + " of room",
+    table.add(noisyLabel + "mean wrong cells", clean[i].strategy, pct(noisy[i].meanWrongPct) + " of room",
               "<= " + formatNumber(kNoisyWrongTargetPct) + " %",
               verdict(noisy[i].meanWrongPct <= kNoisyWrongTargetPct));
-    table.row(noisyLabel + "max wrong cells", clean[i].strategy, pct(noisy[i].maxWrongPct) + " of room", "(info)", "");
+    table.add(noisyLabel + "max wrong cells", clean[i].strategy, pct(noisy[i].maxWrongPct) + " of room", "(info)", "");
   }
   table.print();
   bench::printLinkBench(dir + "/occupancy-120.map", 1, 20);

@@ -207,7 +207,7 @@ int runPlanBench() {
   const fs::path peerDir = fs::path(std::getenv("NXTMAP_PEER_DIR") ? std::getenv("NXTMAP_PEER_DIR") : "build/peer");
   const std::string peerProblem = preparePeer(peerDir);
   if (!peerProblem.empty()) std::cout << "PathFinding.js peer: NOT RUN - " << peerProblem << "\n";
-  TargetRows rows;
+  TargetRows rows("map / algorithm", "path search targets met");
   std::vector<MapRun> runs;
   for (const char* rel : kMaps) {
     if (std::optional<MapRun> run = timeMap(worldsRoot() / "movingai" / rel, peerDir, peerProblem, rows))

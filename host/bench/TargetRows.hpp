@@ -5,43 +5,55 @@
 #include <algorithm>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace nxtmap::bench {
 
 inline const char* verdict(bool ok) { return ok ? "PASS" : "MISS"; }
 
-// `result`: "PASS", "MISS" or "" (information, no target).
+// `whatColumn`: the second column's heading ("strategy", "map / algorithm"); `summary`: what the last line counts
+// ("targets met"). A row's `result`: "PASS", "MISS" or "" (information, no target).
 class TargetRows {
  public:
+  TargetRows(std::string whatColumn, std::string summary)
+      : head_{"measure", std::move(whatColumn), "measured", "target", "result"}, summary_(std::move(summary)) {}
   void add(const std::string& measure, const std::string& what, const std::string& measured, const std::string& target,
            const std::string& result) {
     rows_.push_back({measure, what, measured, target, result});
     if (result == "PASS") ++pass_;
     if (result == "PASS" || result == "MISS") ++targets_;
   }
+  void rule() { rows_.push_back({}); }  // a line of dashes between groups of rows
   void print() const {
-    const std::vector<std::string> head = {"measure", "map / algorithm", "measured", "target", "result"};
-    std::vector<size_t> w(head.size());
-    for (size_t i = 0; i < head.size(); ++i) w[i] = head[i].size();
+    std::vector<size_t> w(head_.size());
+    for (size_t i = 0; i < head_.size(); ++i) w[i] = head_[i].size();
     for (const auto& r : rows_)
       for (size_t i = 0; i < r.size(); ++i) w[i] = std::max(w[i], r[i].size());
-    auto line = [&](const std::vector<std::string>& r) {
-      std::string s;
-      for (size_t i = 0; i < r.size(); ++i) s += r[i] + std::string(w[i] - r[i].size() + 2, ' ');
-      while (!s.empty() && s.back() == ' ') s.pop_back();
-      std::cout << s << '\n';
-    };
-    line(head);
     size_t total = 0;
     for (size_t x : w) total += x + 2;
-    std::cout << std::string(total - 2, '-') << '\n';
-    for (const auto& r : rows_) line(r);
-    std::cout << std::string(total - 2, '-') << '\n'
-              << "path search targets met: " << pass_ << " of " << targets_ << '\n';
+    const std::string dashes(total - 2, '-');
+    printLine(head_, w);
+    std::cout << dashes << '\n';
+    for (const auto& r : rows_) {
+      if (r.empty())
+        std::cout << dashes << '\n';
+      else
+        printLine(r, w);
+    }
+    std::cout << dashes << '\n' << summary_ << ": " << pass_ << " of " << targets_ << '\n';
   }
 
  private:
+  static void printLine(const std::vector<std::string>& r, const std::vector<size_t>& w) {
+    std::string s;
+    for (size_t i = 0; i < r.size(); ++i) s += r[i] + std::string(w[i] - r[i].size() + 2, ' ');
+    while (!s.empty() && s.back() == ' ') s.pop_back();
+    std::cout << s << '\n';
+  }
+
+  std::vector<std::string> head_;
+  std::string summary_;
   std::vector<std::vector<std::string>> rows_;
   int pass_ = 0, targets_ = 0;
 };

@@ -50,6 +50,18 @@ TEST(HonestWorldCli, TheBrickTurnsSquareToTheWallsFirstThePublishedRobotOnlyWhen
   EXPECT_NE(field(asked.out, "square").find("deg off the start heading"), std::string::npos) << asked.out;
 }
 
+// The "calibrated" line of `out`: none when `calibrated` is empty, else one holding `always` and `calibrated`.
+void expectCalibratedLine(const std::string& out, const std::string& always, const std::string& calibrated,
+                          const std::string& args) {
+  const std::string line = field(out, "calibrated");
+  if (calibrated.empty()) {
+    EXPECT_EQ(line, "") << args;
+    return;
+  }
+  EXPECT_NE(line.find(always), std::string::npos) << args << "\n" << out;
+  EXPECT_NE(line.find(calibrated), std::string::npos) << args << "\n" << out;
+}
+
 // --calibrate: a robot that knows nothing of its turns (nxt-uncalibrated: nothing stored) measures them unasked, as
 // the brick does; a calibrated one (nxt) only when asked; =no never.
 TEST(HonestWorldCli, TheBrickMeasuresItsTurnsFirstWhenItKnowsNothingOfThem) {
@@ -67,13 +79,7 @@ TEST(HonestWorldCli, TheBrickMeasuresItsTurnsFirstWhenItKnowsNothingOfThem) {
   for (const Row& row : rows) {
     const RunOutput r = runCli(run + row.args);
     ASSERT_EQ(r.exitCode, 0) << row.args << ": " << r.err;
-    const std::string line = field(r.out, "calibrated");
-    if (row.calibrated.empty()) {
-      EXPECT_EQ(line, "") << row.args;
-    } else {
-      EXPECT_NE(line.find("whole turns between two sweeps"), std::string::npos) << row.args << "\n" << r.out;
-      EXPECT_NE(line.find(row.calibrated), std::string::npos) << row.args << "\n" << r.out;
-    }
+    expectCalibratedLine(r.out, "whole turns between two sweeps", row.calibrated, row.args);
   }
   const RunOutput asked = runCli(run + "nxt --calibrate");
   EXPECT_EQ(field(asked.out, "calibrated").find("unasked"), std::string::npos) << asked.out;
@@ -96,13 +102,7 @@ TEST(HonestWorldCli, TheHousesFirstRoomMeasuresTheTurnsAsTheBrickDoes) {
   for (const Row& row : rows) {
     const RunOutput r = runCli(run + row.args);
     ASSERT_EQ(r.exitCode, 0) << row.args << ": " << r.err;
-    const std::string line = field(r.out, "calibrated");
-    if (row.calibrated.empty()) {
-      EXPECT_EQ(line, "") << row.args;
-    } else {
-      EXPECT_NE(line.find("first room: turns "), std::string::npos) << row.args << "\n" << r.out;
-      EXPECT_NE(line.find(row.calibrated), std::string::npos) << row.args << "\n" << r.out;
-    }
+    expectCalibratedLine(r.out, "first room: turns ", row.calibrated, row.args);
     const std::string wheels = field(r.out, "wheels learnt");
     EXPECT_NE(wheels.find("turns "), std::string::npos) << row.args << "\n" << r.out;
     EXPECT_NE(wheels.find(row.trueTurns), std::string::npos) << row.args << "\n" << r.out;
