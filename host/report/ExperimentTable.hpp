@@ -1,9 +1,11 @@
-// ExperimentTable: the Appendix-A scenario list and the results of running it, side by side with
-// the published figures; writers for CSV, Markdown and the console.
+// ExperimentTable: the results of running the Appendix-A scenario list (Scenario), side by side with the
+// published figures; writers for CSV, Markdown and the console.
 #pragma once
 #include <ostream>
 #include <string>
 #include <vector>
+
+#include "host/report/Scenario.hpp"
 
 namespace nxtmap::report {
 
@@ -16,31 +18,6 @@ constexpr const char* kPoseColumns = "heading_off_pct,position_off_pct";
 // The thesis's medians over the 18 runs (Chapter 5).
 constexpr double kPublishedMedianTimeUnits = 350.5;
 constexpr double kPublishedMedianSensorReads = 1143.5;
-
-// One line of scenarios.tsv.
-struct Scenario {
-  std::string id;
-  std::string map;      // as written in the table
-  std::string mapPath;  // resolved against the table's directory
-  int line = 0;         // line number in the table (1 = first line)
-  int startCol = 0, startRow = 0;
-  double seedXM = 0, seedZM = 0;
-  int occupiedCells = 0;
-  int seedUnknowns = 0;
-  double seedTimeUnits = 0;
-  int seedSensorCount = 0;
-  double seedDetectedPct = 0;
-  bool isOccupancyRun() const { return id.rfind("occ", 0) == 0; }
-  bool isStartRun() const { return id.rfind("start", 0) == 0; }
-};
-
-struct ScenarioLoad {
-  std::vector<Scenario> scenarios;
-  std::string error;  // empty on success; names the file and line otherwise
-};
-
-// Reads a tab-separated scenario table ('#' lines are comments, blank lines skipped).
-ScenarioLoad loadScenarios(const std::string& tsvPath);
 
 // The figures of one mapping run.
 struct RunResult {
