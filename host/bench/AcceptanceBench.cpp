@@ -37,6 +37,7 @@ constexpr double kJitterDeg = 10.0;
 struct RoomFigures {
   double detected = 0, worst = 100, wrongPct = 0, unsafePct = 0;
   double headingOffPct = 0, positionOffPct = 0;  // means over the runs (mapping::PoseErrorShare)
+  report::ExperimentTable::Squaring squaring;    // how square the start's sweep left the runs that found walls
   int runs = 0, lost = 0;
 };
 
@@ -74,12 +75,18 @@ RoomFigures brickRooms(const cli::Suite& suite, const std::string& noise, mappin
       f.positionOffPct += r.positionOffPct;
     }
   }
+  f.squaring = t.squaring();
   f.detected /= std::max(1, f.runs);
   f.headingOffPct /= std::max(1, f.runs);
   f.positionOffPct /= std::max(1, f.runs);
   f.wrongPct = room > 0 ? 100.0 * wrong / room : 0;
   f.unsafePct = occupied > 0 ? 100.0 * unsafe / occupied : 0;
   return f;
+}
+
+// "mean / rms" of the squared heading over the runs whose sweep found the walls.
+std::string squaredText(const report::ExperimentTable::Squaring& s) {
+  return s.squared == 0 ? "-" : formatNumber(s.meanDeg, 2) + " / " + formatNumber(s.rmsDeg, 2);
 }
 
 // Houses: the brick under `nxt`, jitter 10, one strategy; mean and worst agreement, and at the rooms' best frames.
@@ -170,6 +177,8 @@ int runAcceptanceBench() {
        formatNumber(fr.headingOffPct, 1), "(info)", "measured"},
       {"brick rooms, nxt: % of actions with the centre > 1/4 cell off", formatNumber(p.positionOffPct, 1),
        formatNumber(fr.positionOffPct, 1), "(info)", "measured"},
+      {"brick rooms, nxt: squared heading, deg clockwise (mean / rms)", squaredText(p.squaring),
+       squaredText(fr.squaring), "(info)", "measured"},
       {"brick rooms, nxt-uncalibrated: mean detected %", formatNumber(up.detected, 1), formatNumber(uf.detected, 1),
        "(info)", "measured"},
       {"uncalibrated: points under nxt (the better of each)", "", formatNumber(gap, 1), "<= 2",

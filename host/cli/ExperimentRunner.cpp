@@ -78,6 +78,10 @@ report::RunResult resultOf(const mapping::MappingRun& run, const mapping::PoseEr
   r.wrongCellsAligned = s.wrongCellsAligned;
   r.headingOffPct = pose.headingOffPct();
   r.positionOffPct = pose.positionOffPct();
+  if (const std::optional<double> turned = run.squaredTurnedDeg()) {
+    r.squared = true;
+    r.squaredDeg = *turned;
+  }
   return r;
 }
 }  // namespace

@@ -105,6 +105,7 @@ void MappingRun::layTruthSquare() {
   squared_ = true;
   const SquaredGrid g = squaredGrid(robot_, *stack_.pilot(), explorer().pose().heading, config_.heading, setDownCm_);
   squaredOffDeg_ = g.offDeg;
+  if (g.found) squaredTurnedDeg_ = g.turnedDeg;
   if (!g.moved) return;  // as laid
   const sim::Placement& p = g.placement;
   truth_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, truth_.name());

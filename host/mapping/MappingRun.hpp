@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "common/explore/ExplorerStack.hpp"
@@ -95,6 +96,9 @@ class MappingRun {
   // Once the sweep found the walls (RunConfig::squareAtStart): how far, degrees (>= 0), the robot was left
   // off their nearest axis, the error its map is scored with.
   double squaredOffDeg() const { return squaredOffDeg_; }
+  // The same with its sign, + the robot clockwise of the walls' axis (-45..45); empty when the sweep found no wall
+  // or there was no sweep.
+  std::optional<double> squaredTurnedDeg() const { return squaredTurnedDeg_; }
 
   // Whether the room met the grid's edge: the run ended GridFull (a reading or a move beyond the grid), or
   // it left open space unmapped where the grid ends (the frontier explorer stops there and ends Complete).
@@ -122,6 +126,7 @@ class MappingRun {
   double setDownFrameDeg_ = 0;  // the grid's turn as the robot was set down (sim::GridFrame::headingDeg)
   sim::Vec2 setDownCm_;         // where the robot's centre was set down (plane, cm)
   double squaredOffDeg_ = 0;    // after the sweep: degrees from the robot's heading to the walls' nearest axis
+  std::optional<double> squaredTurnedDeg_;  // the same, signed; found walls only
   sim::World truth_;
   FrameTransform frame_;
   sim::SimRobot robot_;

@@ -19,7 +19,10 @@ SquaredGrid squaredGrid(const sim::SimRobot& robot, const Pilot& pilot, Dir expl
   const double off = std::remainder(heading - sim::sceneAxesDeg(robot.scene()), 90.0);
   g.found = pilot.squaring().result().found;
   const double axis = g.found ? heading - off : robot.frame().headingDeg + 90.0 * static_cast<int>(setDownHeading);
-  if (g.found) g.offDeg = std::fabs(off);
+  if (g.found) {
+    g.offDeg = std::fabs(off);
+    g.turnedDeg = off;
+  }
   g.heading = static_cast<sim::Heading>(sim::squareQuarter(axis));
   const double turn = sim::squareRemainderDeg(axis);
   // The cell's centre where the pilot believes it: off the robot by the offset the nearest walls gave it.

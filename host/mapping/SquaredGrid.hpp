@@ -15,6 +15,7 @@ struct SquaredGrid {
   bool moved = false;       // false: the grid as laid when the robot was set down (nothing to re-lay)
   bool found = false;       // the sweep saw the walls
   double offDeg = 0.0;      // found: degrees from the robot's heading to the walls' nearest axis (0..45)
+  double turnedDeg = 0.0;   // found: the same with its sign, + the robot clockwise of that axis (-45..45)
   sim::Placement placement;  // moved: the grid over the scene, the start cell the robot's believed cell
   sim::Heading heading = sim::Heading::N;  // moved: the explorer's heading in that grid's terms
 };

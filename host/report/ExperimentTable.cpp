@@ -24,7 +24,12 @@ void ExperimentRow::summarize() {
   minDetectedPct = perSeed.front().detectedPct;
   maxWrongCells = perSeed.front().wrongCells;
   mean.complete = true;
+  int squared = 0;
   for (const RunResult& r : perSeed) {
+    if (r.squared) {
+      mean.squaredDeg += r.squaredDeg;
+      ++squared;
+    }
     mean.actualFree += r.actualFree / n;
     mean.foundFree += r.foundFree / n;
     mean.actualOccupied += r.actualOccupied / n;
@@ -48,6 +53,8 @@ void ExperimentRow::summarize() {
     minDetectedPct = std::min(minDetectedPct, r.detectedPct);
     maxWrongCells = std::max(maxWrongCells, r.wrongCells);
   }
+  mean.squared = squared > 0;
+  if (mean.squared) mean.squaredDeg /= squared;
 }
 
 double median(std::vector<double> values) {
@@ -99,11 +106,12 @@ double ExperimentTable::publishedMedianUnknowns() const {
 }
 
 namespace {
-// The values of kSafetyColumns and kPoseColumns, each after a comma.
+// The values of kSafetyColumns, kPoseColumns and kStartColumns, each after a comma.
 std::string safetyFields(const RunResult& m) {
   return "," + formatNumber(m.unsafeFree) + "," + formatNumber(m.phantomOccupied) + "," + formatNumber(m.lost) + "," +
          formatNumber(m.detectedPctAligned) + "," + formatNumber(m.wrongCellsAligned) + "," +
-         formatNumber(m.headingOffPct) + "," + formatNumber(m.positionOffPct);
+         formatNumber(m.headingOffPct) + "," + formatNumber(m.positionOffPct) + "," +
+         (m.squared ? formatNumber(m.squaredDeg) : "");
 }
 }  // namespace
 
@@ -112,7 +120,7 @@ const char* ExperimentTable::csvHeader() {
       std::string(
           "id,actual_free,found_free,actual_occupied,found_occupied,unknown,wrong_cells,detected_pct,"
           "time_units,sensor_reads,seed_time_units,seed_sensor_count,seed_detected_pct,") +
-      kSafetyColumns + "," + kPoseColumns;
+      kSafetyColumns + "," + kPoseColumns + "," + kStartColumns;
   return header.c_str();
 }
 
@@ -133,7 +141,7 @@ void ExperimentTable::writeSeedCsv(std::ostream& out, bool header) const {
   if (header) {
     out << "id,strategy,noise,seed,actual_free,found_free,actual_occupied,found_occupied,unknown,"
            "unknown_observable,wrong_cells,detected_pct,performance_pct,time_units,sensor_reads,complete,"
-        << kSafetyColumns << ',' << kPoseColumns << '\n';
+        << kSafetyColumns << ',' << kPoseColumns << ',' << kStartColumns << '\n';
   }
   for (const ExperimentRow& r : rows) {
     for (size_t i = 0; i < r.perSeed.size(); ++i) {
@@ -203,6 +211,31 @@ void ExperimentTable::writeConsole(std::ostream& out) const {
         formatNumber(medianUnknown(), 1), formatNumber(publishedMedianUnknowns(), 1), "", "", ""});
   out << "ours/published medians: time " << ratio(medianTimeUnits(), publishedMedianTimeUnits()) << ", sensor reads "
       << ratio(medianSensorReads(), publishedMedianSensorReads()) << '\n';
+  const Squaring s = squaring();
+  if (s.squared > 0) {
+    out << "squared to the walls in " << s.squared << " of " << s.runs << " runs: left "
+        << formatNumber(std::fabs(s.meanDeg), 2) << " deg " << (s.meanDeg < 0 ? "anticlockwise" : "clockwise")
+        << " of them on average, " << formatNumber(s.rmsDeg, 2) << " deg rms\n";
+  }
+}
+
+ExperimentTable::Squaring ExperimentTable::squaring() const {
+  Squaring s;
+  double sum = 0, squares = 0;
+  for (const ExperimentRow& row : rows) {
+    for (const RunResult& r : row.perSeed) {
+      ++s.runs;
+      if (!r.squared) continue;
+      ++s.squared;
+      sum += r.squaredDeg;
+      squares += r.squaredDeg * r.squaredDeg;
+    }
+  }
+  if (s.squared > 0) {
+    s.meanDeg = sum / s.squared;
+    s.rmsDeg = std::sqrt(squares / s.squared);
+  }
+  return s;
 }
 
 }  // namespace nxtmap::report

@@ -14,6 +14,10 @@ constexpr const char* kSafetyColumns = "unsafe_free,phantom_occupied,lost,detect
 // The localisation (mapping::PoseErrorShare): % of the explorer's actions with the heading over 40 mrad off, and
 // with the centre over a quarter of a cell off the believed one.
 constexpr const char* kPoseColumns = "heading_off_pct,position_off_pct";
+// The start's sweep (mapping::MappingRun::squaredTurnedDeg): how far the robot was left off the walls' axis,
+// degrees, + clockwise; empty for a run whose sweep found no wall or that had none (a scenario's row: the mean
+// over its seeds that found them).
+constexpr const char* kStartColumns = "squared_deg";
 
 // The thesis's medians over the 18 runs (Chapter 5).
 constexpr double kPublishedMedianTimeUnits = 350.5;
@@ -32,6 +36,8 @@ struct RunResult {
   double unsafeFree = 0, phantomOccupied = 0, lost = 0;
   double detectedPctAligned = 0, wrongCellsAligned = 0;  // after the best rigid alignment to the world
   double headingOffPct = 0, positionOffPct = 0;          // mapping::PoseErrorShare
+  bool squared = false;                                  // the start's sweep found the walls (kStartColumns)
+  double squaredDeg = 0;                                 // then: the heading left off their axis, deg, + clockwise
 };
 
 // One scenario's results: the mean over the seeds plus the spread.
@@ -63,8 +69,8 @@ struct ExperimentTable {
   double publishedMedianSensorReads() const;
   double publishedMedianUnknowns() const;
 
-  // CSV header: the published comparison columns, then the safety columns (kSafetyColumns) and the localisation's
-  // (kPoseColumns).
+  // CSV header: the published comparison columns, then the safety columns (kSafetyColumns), the localisation's
+  // (kPoseColumns) and the start's (kStartColumns).
   static const char* csvHeader();
   // One row per scenario (means over the seeds).
   void writeCsv(std::ostream& out) const;
@@ -72,8 +78,14 @@ struct ExperimentTable {
   void writeSeedCsv(std::ostream& out, bool header = true) const;
   // A Markdown table: ours beside the published figures, a medians row at the bottom.
   void writeMarkdown(std::ostream& out) const;
-  // An aligned plain-text table for the console.
+  // An aligned plain-text table for the console, and how square the runs that swept started (when any did).
   void writeConsole(std::ostream& out) const;
+  // Over every run that squared to the walls: how many, of how many runs, the mean and rms of squaredDeg.
+  struct Squaring {
+    int squared = 0, runs = 0;
+    double meanDeg = 0, rmsDeg = 0;
+  };
+  Squaring squaring() const;
 };
 
 }  // namespace nxtmap::report

@@ -16,7 +16,7 @@ const std::string kDir = "worlds/seed-appendix-a";
 const std::string kHeader =
     "id,actual_free,found_free,actual_occupied,found_occupied,unknown,wrong_cells,detected_pct,time_units,"
     "sensor_reads,seed_time_units,seed_sensor_count,seed_detected_pct,unsafe_free,phantom_occupied,lost,"
-    "detected_pct_aligned,wrong_cells_aligned,heading_off_pct,position_off_pct";
+    "detected_pct_aligned,wrong_cells_aligned,heading_off_pct,position_off_pct,squared_deg";
 
 // A scenario directory holding `tsv` as scenarios.tsv plus a copy-free link to the real maps.
 std::string scenarioDir(const TempDir& tmp, const std::string& name, const std::string& tsv) {
@@ -158,8 +158,10 @@ TEST(CliExperiments, CsvAndMarkdown) {
   ASSERT_EQ(rows.size(), 19u);
   EXPECT_EQ(rows[0], kHeader);
   for (size_t i = 1; i < rows.size(); ++i) {
-    EXPECT_EQ(std::count(rows[i].begin(), rows[i].end(), ','), 19) << rows[i];
+    EXPECT_EQ(std::count(rows[i].begin(), rows[i].end(), ','), 20) << rows[i];
+    EXPECT_EQ(rows[i].back(), ',') << "the published robot does not sweep: no squared_deg: " << rows[i];
   }
+  EXPECT_EQ(r.out.find("squared to the walls"), std::string::npos) << r.out;
   EXPECT_EQ(rows[1].rfind("occ089,", 0), 0u);
   const std::string markdown = readFile(md);
   EXPECT_NE(markdown.find("| occ089 |"), std::string::npos);

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace nxtmap::cli::test {
 namespace {
 
@@ -128,8 +130,22 @@ TEST(HonestWorldCli, NoiseListPrintsEveryPresetWithUnits) {
 }
 
 TEST(HonestWorldCli, ExperimentsRunTheLayoutsAtTheBricksCells) {
-  const RunOutput r = runCli("experiments worlds/seed-appendix-a --robot brick --noise nxt --start-jitter 3");
+  TempDir tmp("brick_layouts");
+  const RunOutput r = runCli("experiments worlds/seed-appendix-a --robot brick --noise nxt --start-jitter 3 --csv " +
+                             tmp.path("r.csv"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
+  // The brick sweeps square first: each run that found the walls says how far off them it was left.
+  EXPECT_NE(r.out.find(" of 18 runs: left "), std::string::npos) << r.out;
+  const std::vector<std::string> rows = lines(readFile(tmp.path("r.csv")));  // one seed: each row is one run
+  ASSERT_EQ(rows.size(), 19u);
+  int squared = 0;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const std::string last = rows[i].substr(rows[i].rfind(',') + 1);
+    if (last.empty()) continue;
+    ++squared;
+    EXPECT_LT(std::fabs(std::stod(last)), 10.0) << rows[i];  // 3 deg jitter: square to within a few degrees
+  }
+  EXPECT_GE(squared, 15) << "the 18 layouts' walls are in reach of the sweep";
   EXPECT_NE(r.out.find("robot brick (20 cm cells), set down up to 3 deg off square"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("noise nxt"), std::string::npos) << r.out;
 }

@@ -1,6 +1,8 @@
 // Unit tests of the report library: the console map, the PNG map and the experiment table.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <sstream>
 #include <string>
 #include <vector>
@@ -188,6 +190,8 @@ TEST(ExperimentTable, CsvColumnsAndMeans) {
   b.headingOffPct = 7;
   a.positionOffPct = 10;
   b.positionOffPct = 40.5;
+  b.squared = true;  // a's sweep found no wall: its squared_deg is empty and the mean is b's alone
+  b.squaredDeg = -1.5;
   row.perSeed = {a, b};
   row.summarize();
   EXPECT_DOUBLE_EQ(row.mean.timeUnits, 100.5);
@@ -199,15 +203,15 @@ TEST(ExperimentTable, CsvColumnsAndMeans) {
   const std::vector<std::string> rows = cli::test::lines(csv.str());
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0], ExperimentTable::csvHeader());
-  EXPECT_EQ(rows[1], "occ1,0,0,0,0,0,1.5,95,100.5,0,294,1189,100,1,0.5,0.5,98.5,0.5,4.5,25.25");
-  // The older columns keep their places; the safety columns follow them, then the localisation's.
+  EXPECT_EQ(rows[1], "occ1,0,0,0,0,0,1.5,95,100.5,0,294,1189,100,1,0.5,0.5,98.5,0.5,4.5,25.25,-1.5");
+  // The older columns keep their places; the safety columns follow them, then the localisation's and the start's.
   EXPECT_EQ(
       std::string(ExperimentTable::csvHeader())
           .rfind("id,actual_free,found_free,actual_occupied,found_occupied,unknown,wrong_cells,detected_pct,time_units,"
                  "sensor_reads,seed_time_units,seed_sensor_count,seed_detected_pct,",
                  0),
       0u);
-  const std::string tail = std::string(kSafetyColumns) + "," + kPoseColumns;
+  const std::string tail = std::string(kSafetyColumns) + "," + kPoseColumns + "," + kStartColumns;
   EXPECT_EQ(rows[0].substr(rows[0].size() - tail.size()), tail);
 
   t.strategy = "propagation";
@@ -219,10 +223,74 @@ TEST(ExperimentTable, CsvColumnsAndMeans) {
   EXPECT_EQ(seedRows[0],
             "id,strategy,noise,seed,actual_free,found_free,actual_occupied,found_occupied,unknown,unknown_observable,"
             "wrong_cells,detected_pct,performance_pct,time_units,sensor_reads,complete,unsafe_free,phantom_occupied,"
-            "lost,detected_pct_aligned,wrong_cells_aligned,heading_off_pct,position_off_pct");
-  EXPECT_EQ(seedRows[1], "occ1,propagation,typical,1,0,0,0,0,0,0,0,100,0,100,0,1,0,0,0,100,0,2,10");
-  EXPECT_EQ(seedRows[2], "occ1,propagation,typical,2,0,0,0,0,0,0,3,90,0,101,0,1,2,1,1,97,1,7,40.5");
+            "lost,detected_pct_aligned,wrong_cells_aligned,heading_off_pct,position_off_pct,squared_deg");
+  EXPECT_EQ(seedRows[1], "occ1,propagation,typical,1,0,0,0,0,0,0,0,100,0,100,0,1,0,0,0,100,0,2,10,");
+  EXPECT_EQ(seedRows[2], "occ1,propagation,typical,2,0,0,0,0,0,0,3,90,0,101,0,1,2,1,1,97,1,7,40.5,-1.5");
 }
+
+// How square the runs started, over those whose sweep found the walls: (squared?, degrees) per run.
+struct SquaringCase {
+  const char* name;
+  std::vector<std::pair<bool, double>> runs;
+  int squared;
+  double meanDeg, rmsDeg;
+  const char* line;  // what the console prints after the table ("" for nothing)
+};
+
+void PrintTo(const SquaringCase& c, std::ostream* os) { *os << c.name; }
+
+class ExperimentSquaring : public ::testing::TestWithParam<SquaringCase> {};
+
+TEST_P(ExperimentSquaring, CountsMeanAndRmsOverTheRunsThatFoundTheWalls) {
+  const SquaringCase& c = GetParam();
+  ExperimentTable t;
+  ExperimentRow row;
+  row.scenario.id = "occ1";
+  for (const auto& [found, deg] : c.runs) {
+    RunResult r;
+    r.squared = found;
+    r.squaredDeg = deg;
+    row.perSeed.push_back(r);
+  }
+  row.summarize();
+  t.rows = {row, row};  // two scenarios: every run counts once
+  const ExperimentTable::Squaring s = t.squaring();
+  EXPECT_EQ(s.runs, 2 * static_cast<int>(c.runs.size()));
+  EXPECT_EQ(s.squared, 2 * c.squared);
+  EXPECT_NEAR(s.meanDeg, c.meanDeg, 1e-9);
+  EXPECT_NEAR(s.rmsDeg, c.rmsDeg, 1e-9);
+  EXPECT_EQ(row.mean.squared, c.squared > 0);
+  if (c.squared > 0) {
+    EXPECT_NEAR(row.mean.squaredDeg, c.meanDeg, 1e-9);
+  }
+  std::ostringstream console;
+  t.writeConsole(console);
+  const std::string out = console.str();
+  if (*c.line == '\0') {
+    EXPECT_EQ(out.find("squared to the walls"), std::string::npos) << out;
+  } else {
+    EXPECT_NE(out.find(c.line), std::string::npos) << out;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Table, ExperimentSquaring,
+    ::testing::Values(
+        SquaringCase{"noSweep", {{false, 0}, {false, 0}}, 0, 0, 0, ""},
+        SquaringCase{"allSquared",
+                     {{true, 3}, {true, -1}},
+                     2,
+                     1,
+                     std::sqrt(5.0),
+                     "squared to the walls in 4 of 4 runs: left 1 deg clockwise of them on average, 2.24 deg rms"},
+        SquaringCase{
+            "oneFoundNoWall",
+            {{true, -2}, {false, 9}, {true, -0.5}},
+            2,
+            -1.25,
+            std::sqrt(2.125),
+            "squared to the walls in 4 of 6 runs: left 1.25 deg anticlockwise of them on average, 1.46 deg rms"}),
+    [](const ::testing::TestParamInfo<SquaringCase>& i) { return std::string(i.param.name); });
 
 TEST(ExperimentTable, MalformedLinesAreNamed) {
   cli::test::TempDir tmp("tsv");
