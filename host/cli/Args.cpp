@@ -2,15 +2,14 @@
 
 #include <unistd.h>
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <limits>
 
 #include "host/cli/Errors.hpp"
 #include "host/mapping/SimDrive.hpp"
+#include "host/report/NumberText.hpp"
 #include "host/report/TerminalText.hpp"
 
 namespace nxtmap::cli {
@@ -20,18 +19,6 @@ std::string trim(const std::string& s) {
   if (a == std::string::npos) return "";
   const auto b = s.find_last_not_of(" \t");
   return s.substr(a, b - a + 1);
-}
-
-bool parseInt(const std::string& text, int& value) {
-  const std::string t = trim(text);
-  if (t.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(t.c_str(), &end, 10);
-  if (errno != 0 || *end != '\0' || v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
-    return false;
-  value = static_cast<int>(v);
-  return true;
 }
 }  // namespace
 
@@ -46,7 +33,8 @@ CellArg parseCell(const std::string& text, const std::string& option) {
   const auto comma = text.find(',');
   CellArg c;
   if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos ||
-      !parseInt(text.substr(0, comma), c.col) || !parseInt(text.substr(comma + 1), c.row)) {
+      !report::parseWholeInt(trim(text.substr(0, comma)), c.col) ||
+      !report::parseWholeInt(trim(text.substr(comma + 1)), c.row)) {
     throw CliError(option + " must be COL,ROW with two integers (e.g. 1,20), not '" + text + "'");
   }
   return c;

@@ -1,11 +1,9 @@
 #include "host/report/Scenario.hpp"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
+#include "host/report/NumberText.hpp"
+
 #include <filesystem>
 #include <fstream>
-#include <limits>
 
 namespace nxtmap::report {
 namespace {
@@ -32,25 +30,6 @@ std::vector<std::string> splitTabs(const std::string& line) {
     from = tab + 1;
   }
   return out;
-}
-
-bool parseInt(const std::string& s, int& v) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  const long x = std::strtol(s.c_str(), &end, 10);
-  if (errno != 0 || *end != '\0' || x < std::numeric_limits<int>::min() || x > std::numeric_limits<int>::max())
-    return false;
-  v = static_cast<int>(x);
-  return true;
-}
-
-bool parseDouble(const std::string& s, double& v) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  v = std::strtod(s.c_str(), &end);
-  return errno == 0 && *end == '\0' && std::isfinite(v);
 }
 }  // namespace
 
@@ -83,14 +62,14 @@ ScenarioLoad loadScenarios(const std::string& tsvPath) {
     s.map = f[1];
     if (s.id.empty()) return fail("empty id");
     if (s.map.empty()) return fail("empty map");
-    bool ok = parseInt(f[2], s.startCol) && parseInt(f[3], s.startRow);
+    bool ok = parseWholeInt(f[2], s.startCol) && parseWholeInt(f[3], s.startRow);
     if (!ok) return fail("start_col/start_row must be integers, found '" + f[2] + "', '" + f[3] + "'");
     const struct {
       int index;
       double* target;
     } doubles[] = {{4, &s.seedXM}, {5, &s.seedZM}, {8, &s.seedTimeUnits}, {10, &s.seedDetectedPct}};
     for (const auto& d : doubles) {
-      if (!parseDouble(f[static_cast<size_t>(d.index)], *d.target))
+      if (!parseFiniteDouble(f[static_cast<size_t>(d.index)], *d.target))
         return fail(std::string(kColumnNames[d.index]) + " must be a number, found '" +
                     f[static_cast<size_t>(d.index)] + "'");
     }
@@ -99,7 +78,7 @@ ScenarioLoad loadScenarios(const std::string& tsvPath) {
       int* target;
     } ints[] = {{6, &s.occupiedCells}, {7, &s.seedUnknowns}, {9, &s.seedSensorCount}};
     for (const auto& d : ints) {
-      if (!parseInt(f[static_cast<size_t>(d.index)], *d.target))
+      if (!parseWholeInt(f[static_cast<size_t>(d.index)], *d.target))
         return fail(std::string(kColumnNames[d.index]) + " must be an integer, found '" +
                     f[static_cast<size_t>(d.index)] + "'");
     }
