@@ -158,7 +158,8 @@ std::string traceLine(const mapping::RunTrace& t, const std::string& file) {
     out << "the believed cell first left the robot's after action " << t.firstLostStep() << " (" << t.lostSteps()
         << " actions lost in all)";
   out << "; worst error " << report::formatNumber(t.worstErrorMm(), 0) << " mm, "
-      << report::formatNumber(t.worstErrorMrad() * 0.18 / 3.141592653589793, 1) << " deg";
+      << report::formatNumber(t.worstErrorMrad() * 0.18 / 3.141592653589793, 1) << " deg; outside the tracker's "
+      << "3 sigma after " << t.outsideSteps() << " of " << t.mappingSteps() << " actions while mapping";
   return out.str();
 }
 

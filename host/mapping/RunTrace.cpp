@@ -61,6 +61,11 @@ TracePose tracePose(const MappingRun& run) {
   t.estXMm = tracker.xMm();
   t.estYMm = tracker.yMm();
   t.estThetaMrad = tracker.thetaMrad();
+  const auto sd = [](int64_t variance) { return std::sqrt(static_cast<double>(std::max<int64_t>(variance, 0))); };
+  t.sdXMm = sd(tracker.varianceAlong(Dir::East));
+  t.sdYMm = sd(tracker.varianceAlong(Dir::North));
+  t.sdThetaMrad = sd(tracker.thetaVariance());
+  t.mapping = run.pilot().explorerStarted();
 
   t.trueThetaMrad = std::remainder(trueDeg - 90.0 * t.headingQuarters, 360.0) * kPi / 0.18;
   t.errXMm = t.trueXMm - (t.cellX * cellMm + t.estXMm);
@@ -77,7 +82,7 @@ RunTrace::RunTrace(std::ostream& out) : out_(out) {
   out_ << "step,action,value,sensor,reading_cm,reading,"
           "true_x_mm,true_y_mm,true_theta_mrad,"
           "cell_x,cell_y,heading,est_x_mm,est_y_mm,est_theta_mrad,"
-          "err_x_mm,err_y_mm,err_theta_mrad,lost\n";
+          "err_x_mm,err_y_mm,err_theta_mrad,lost,sd_x_mm,sd_y_mm,sd_theta_mrad\n";
 }
 
 void RunTrace::record(const MappingRun& run, uint64_t step, const DriveAction& done) {
@@ -92,10 +97,16 @@ void RunTrace::record(const MappingRun& run, uint64_t step, const DriveAction& d
   out_ << ',' << whole(t.trueXMm) << ',' << whole(t.trueYMm) << ',' << whole(t.trueThetaMrad) << ',' << t.cellX << ','
        << t.cellY << ',' << "NESW"[t.headingQuarters & 3] << ',' << t.estXMm << ',' << t.estYMm << ',' << t.estThetaMrad
        << ',' << whole(t.errXMm) << ',' << whole(t.errYMm) << ',' << whole(t.errThetaMrad) << ',' << (t.lost ? 1 : 0)
-       << '\n';
+       << ',' << whole(t.sdXMm) << ',' << whole(t.sdYMm) << ',' << whole(t.sdThetaMrad) << '\n';
   if (t.lost) {
     ++lostSteps_;
     if (firstLost_ == 0) firstLost_ = step;
+  }
+  if (t.mapping) {
+    ++mappingSteps_;
+    const auto outside = [](double err, double sd) { return std::fabs(err) > 3.0 * sd + 1.0; };
+    if (outside(t.errXMm, t.sdXMm) || outside(t.errYMm, t.sdYMm) || outside(t.errThetaMrad, t.sdThetaMrad))
+      ++outsideSteps_;
   }
   worstMm_ = std::max(worstMm_, std::hypot(t.errXMm, t.errYMm));
   worstMrad_ = std::max(worstMrad_, std::fabs(t.errThetaMrad));

@@ -22,6 +22,8 @@ struct TracePose {
   int cellX = 0, cellY = 0, headingQuarters = 0;       // the explorer's cell and heading (0 N, 1 E, 2 S, 3 W)
   int32_t estXMm = 0, estYMm = 0, estThetaMrad = 0;    // the tracker's offset from the cell's centre and axis
   double errXMm = 0, errYMm = 0, errThetaMrad = 0;     // truth minus belief
+  double sdXMm = 0, sdYMm = 0, sdThetaMrad = 0;        // the tracker's own 1 sigma of its offset and heading
+  bool mapping = false;                                // the explorer has started (the start's sweep is over)
   bool lost = false;                                   // the centre lies in another cell than the believed one
 };
 
@@ -34,7 +36,8 @@ const char* statusName(RangeStatus s);
 TracePose tracePose(const MappingRun& run);
 
 // Writes one CSV row per action (for a reading also its sensor, F R B L, its cm and its status) and, at the
-// end, a summary of where the belief first left the robot's cell.
+// end, a summary of where the belief first left the robot's cell and how often the error was larger than the
+// tracker believed it could be (a consistent filter: about 1 action in 100 outside its 3 sigma).
 class RunTrace {
  public:
   explicit RunTrace(std::ostream& out);
@@ -43,13 +46,17 @@ class RunTrace {
   // Actions recorded while the believed cell was not the robot's; the first such step (0: never).
   uint64_t lostSteps() const { return lostSteps_; }
   uint64_t firstLostStep() const { return firstLost_; }
+  // Actions since the explorer started, and of them those whose error along x, y or in heading exceeded 3 of the
+  // tracker's sigma (and the whole mm or mrad the columns are rounded to).
+  uint64_t mappingSteps() const { return mappingSteps_; }
+  uint64_t outsideSteps() const { return outsideSteps_; }
   // The largest position error seen, mm (Euclidean), and heading error, mrad (absolute).
   double worstErrorMm() const { return worstMm_; }
   double worstErrorMrad() const { return worstMrad_; }
 
  private:
   std::ostream& out_;
-  uint64_t lostSteps_ = 0, firstLost_ = 0;
+  uint64_t lostSteps_ = 0, firstLost_ = 0, mappingSteps_ = 0, outsideSteps_ = 0;
   double worstMm_ = 0, worstMrad_ = 0;
 };
 

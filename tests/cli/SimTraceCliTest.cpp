@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
@@ -17,7 +18,7 @@ namespace {
 const std::string kHeader =
     "step,action,value,sensor,reading_cm,reading,true_x_mm,true_y_mm,true_theta_mrad,cell_x,cell_y,heading,est_x_mm,"
     "est_y_mm,est_theta_mrad,"
-    "err_x_mm,err_y_mm,err_theta_mrad,lost";
+    "err_x_mm,err_y_mm,err_theta_mrad,lost,sd_x_mm,sd_y_mm,sd_theta_mrad";
 
 long num(const std::string& f) { return std::strtol(f.c_str(), nullptr, 10); }
 
@@ -27,6 +28,7 @@ TEST(SimTrace, AnIdealRunNeverLeavesItsCellAndTracesEveryAction) {
   const RunOutput r = runCli("sim worlds/seed-appendix-a/occupancy-089.map --start 1,20 --show none --trace " + csv);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("the believed cell was the robot's after every action"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("outside the tracker's 3 sigma after 0 of "), std::string::npos) << r.out;
   const std::vector<std::string> rows = lines(readFile(csv));
   ASSERT_GT(rows.size(), 100u);
   EXPECT_EQ(rows[0], kHeader);
@@ -34,7 +36,7 @@ TEST(SimTrace, AnIdealRunNeverLeavesItsCellAndTracesEveryAction) {
   // it a few tenths of a mm off after each move, 2 mm at most over a run), square, after every action.
   for (size_t i = 1; i < rows.size(); ++i) {
     const std::vector<std::string> f = csvFields(rows[i]);
-    ASSERT_EQ(f.size(), 19u) << rows[i];
+    ASSERT_EQ(f.size(), 22u) << rows[i];
     EXPECT_EQ(num(f[0]), static_cast<long>(i)) << "one row per action, numbered from 1";
     EXPECT_EQ(f[1] == "read", !f[3].empty()) << "a sensor for readings only: " << rows[i];
     EXPECT_NEAR(num(f[6]), 100 * num(f[9]), 3) << rows[i];
@@ -63,7 +65,7 @@ TEST(SimTrace, TheErrorIsTheTruthLessTheBeliefAndLostMeansAnotherCell) {
   long firstLost = 0, lostRows = 0;
   for (size_t i = 1; i < rows.size(); ++i) {
     const std::vector<std::string> f = csvFields(rows[i]);
-    ASSERT_EQ(f.size(), 19u) << rows[i];
+    ASSERT_EQ(f.size(), 22u) << rows[i];
     // 20 cm cells; each column is rounded to whole mm or mrad on its own, so the sum may be 1 off.
     EXPECT_NEAR(num(f[15]), num(f[6]) - (200 * num(f[9]) + num(f[12])), 1) << rows[i];
     EXPECT_NEAR(num(f[16]), num(f[7]) - (200 * num(f[10]) + num(f[13])), 1) << rows[i];
@@ -80,6 +82,23 @@ TEST(SimTrace, TheErrorIsTheTruthLessTheBeliefAndLostMeansAnotherCell) {
     }
   }
   EXPECT_NE(r.out.find(lostSummary(firstLost, lostRows)), std::string::npos) << r.out;
+  // The consistency count: the last `mapping` rows (the explorer's), those whose error exceeds 3 of the tracker's
+  // sigma and the rounding on x, y or heading; recounted from the rounded columns, so within a few of it.
+  long outside = 0, mapping = 0;
+  ASSERT_EQ(
+      std::sscanf(r.out.substr(r.out.find("3 sigma after ")).c_str(), "3 sigma after %ld of %ld", &outside, &mapping),
+      2)
+      << r.out;
+  ASSERT_GT(mapping, 100);
+  ASSERT_LT(mapping, static_cast<long>(rows.size()));
+  long recount = 0;
+  for (size_t i = rows.size() - static_cast<size_t>(mapping); i < rows.size(); ++i) {
+    const std::vector<std::string> f = csvFields(rows[i]);
+    bool out = false;
+    for (int k = 0; k < 3; ++k) out = out || std::labs(num(f[15 + k])) > 3 * num(f[19 + k]) + 1;
+    if (out) ++recount;
+  }
+  EXPECT_NEAR(outside, recount, mapping / 50) << r.out;
 }
 
 TEST(SimTrace, ABadTraceFileIsRefusedBeforeTheRun) {
