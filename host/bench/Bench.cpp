@@ -4,6 +4,7 @@
 //   nxtmap-bench plan             the path-search section alone (host/bench/PlanBench.cpp)
 //   nxtmap-bench house            the house section alone (host/bench/HouseBench.cpp)
 //   nxtmap-bench realism          the realism section alone (host/bench/RealismBench.cpp)
+//   nxtmap-bench less-one         its table 3 alone: the acceptance's brick less one fact (RealismLessOne.cpp)
 //   nxtmap-bench acceptance       the real-room acceptance section alone (host/bench/AcceptanceBench.cpp)
 //   nxtmap-bench lego             the LEGO round trip alone (host/bench/LegoRoundTripBench.cpp)
 #include <algorithm>
@@ -30,6 +31,7 @@ namespace nxtmap::bench {
 int runPlanBench();     // host/bench/PlanBench.cpp: the path-search section
 int runHouseBench();    // host/bench/HouseBench.cpp: the house section
 int runRealismBench();  // host/bench/RealismBench.cpp: the realism section
+int runLessOneBench();  // host/bench/RealismBench.cpp: its table 3 alone
 }  // namespace nxtmap::bench
 
 namespace {
@@ -179,6 +181,7 @@ int main(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "plan") return nxtmap::bench::runPlanBench();        // that section alone
     if (argc > 1 && std::string(argv[1]) == "house") return nxtmap::bench::runHouseBench();      // that section alone
     if (argc > 1 && std::string(argv[1]) == "realism") return nxtmap::bench::runRealismBench();  // that section alone
+    if (argc > 1 && std::string(argv[1]) == "less-one") return nxtmap::bench::runLessOneBench();
     if (argc > 1 && std::string(argv[1]) == "acceptance") return nxtmap::bench::runAcceptanceBench();
     if (argc > 1 && std::string(argv[1]) == "emu") return nxtmap::bench::runEmuBench(scenarioDir(1, argv));
     if (argc > 1 && std::string(argv[1]) == "emu-room") return nxtmap::bench::runEmuRoomBench(scenarioDir(1, argv));

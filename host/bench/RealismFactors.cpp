@@ -172,11 +172,6 @@ std::vector<Factor> factors(const RealismSet& published, const RealismSet& brick
   return f;
 }
 
-std::string withDelta(double v, double base, int decimals, bool isBase) {
-  const std::string s = formatNumber(v, decimals);
-  return isBase ? s : s + " (" + formatDelta(v - base, decimals) + ")";
-}
-
 std::vector<std::string> rowOf(const Factor& f, const std::string& strategy, const Tally& t, const Tally* base) {
   const bool isBase = base == nullptr;
   const Tally& b = isBase ? t : *base;

@@ -80,6 +80,22 @@ SonarModel::PoseKey SonarModel::keyOf(const Vec2& face, double axisDeg, int sens
   return PoseKey{h};
 }
 
+double SonarModel::poseError(const Echo& echo, int sensor, const PoseKey& key, std::mt19937_64& rng) const {
+  const double sigma = noise_.poseErrorSigmaCm;
+  switch (noise_.poseErrorDraw) {
+    case PoseErrorDraw::PerPing: return gaussian(sigma, rng);
+    case PoseErrorDraw::PerGeometry: {
+      uint64_t h = mix(seed_ ^ 0x5bd1e995ULL);
+      h = mix(h ^ static_cast<uint64_t>(std::llround(echo.valueCm)));
+      h = mix(h ^ static_cast<uint64_t>(std::llround(echo.incidenceDeg)));
+      h = mix(h ^ static_cast<uint64_t>(sensor));
+      return sigma * normalOf(h, kSaltError);
+    }
+    case PoseErrorDraw::PerPose: break;
+  }
+  return sigma * normalOf(key.hash, kSaltError);
+}
+
 bool SonarModel::heardOthers(int sensor, double atMs, bool othersFiring) {
   bool heard = othersFiring;
   for (int k = 0; k < kSensors; ++k) {
@@ -109,7 +125,7 @@ int SonarModel::ping(const Scene& scene, const Vec2& face, double axisDeg, int s
   if (best.incidenceDeg > noise_.specularAngleDeg && chance(noise_.specularMissProb, rng)) return kNoEcho;
 
   double reading = best.valueCm;
-  if (noise_.poseErrorSigmaCm > 0.0) reading += noise_.poseErrorSigmaCm * normalOf(key.hash, kSaltError);
+  if (noise_.poseErrorSigmaCm > 0.0) reading += poseError(best, sensor, key, rng);
   if (noise_.pingJitterCm > 0.0) {
     reading += std::uniform_real_distribution<double>(-noise_.pingJitterCm, noise_.pingJitterCm)(rng);
   }

@@ -58,6 +58,8 @@ class SonarModel {
 
   PoseKey keyOf(const Vec2& face, double axisDeg, int sensor) const;
   bool heardOthers(int sensor, double atMs, bool othersFiring);
+  // The error fixed per pose (cm) as SonarNoise::poseErrorDraw says it is drawn.
+  double poseError(const Echo& echo, int sensor, const PoseKey& key, std::mt19937_64& rng) const;
   Echo firstEcho(const Scene& scene, const Vec2& face, double axisDeg, const PoseKey& key) const;
   Echo echoOf(const Scene& scene, const Vec2& face, double axisDeg, double rayDeg, const SceneHit& hit,
               const PoseKey& key) const;

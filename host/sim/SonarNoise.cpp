@@ -107,6 +107,8 @@ std::vector<std::string> describeSonar(const SonarNoise& s) {
       line("rangeScale", s.rangeScale, "", "slope of the linear error"),
       line("poseErrorSigmaCm", s.poseErrorSigmaCm, "cm", "error fixed per pose (repeat pings agree), sigma"),
       line("pingJitterCm", s.pingJitterCm, "cm", "per-ping error, uniform within +-"),
+      line("poseErrorDraw", static_cast<double>(s.poseErrorDraw), "",
+           "the pose error is fixed by 0 the pose, 1 the echo's range and incidence, 2 nothing (per ping)"),
       line("nearFieldCm", s.nearFieldCm, "cm", "echoes nearer than this are masked (0 = none)"),
       line("nearFieldReadsHigh", high ? 1.0 : 0.0, "", "1: near echoes read high instead of nothing"),
       line("nearFieldHighCm", s.nearFieldHighCm, "cm", "how much too far a near echo reads (variant 1)"),

@@ -15,6 +15,16 @@ enum class NearField {
   ReadsHigh  // reads nearFieldHighCm too far (below kNearFieldBlindCm still nothing)
 };
 
+// What the error fixed per pose (SonarNoise::poseErrorSigmaCm) is drawn by. The presets keep PerPose, the
+// harshest reading of the sources (a robot moving along a wall meets a new error at every stop); the others are
+// what-ifs for the bench (bench::lessOneTable).
+enum class PoseErrorDraw : uint8_t {
+  PerPose,      // the face to ~1 cm and the axis to ~1 degree, per sensor: repeat pings agree, any move redraws it
+  PerGeometry,  // the echo's range to ~1 cm and its incidence to ~1 degree, per sensor: the same wall at the same
+                // distance reads the same error wherever along it
+  PerPing,      // drawn afresh at every ping (it averages out over repeats)
+};
+
 struct SonarNoise {
   // --- the `typical` model (kept so the published figures reproduce) ---
   double rangeSigmaCm = 0.0;      // gaussian range noise drawn per ping, cm (>= 0)
@@ -32,6 +42,7 @@ struct SonarNoise {
   double poseErrorSigmaCm = 0.0;  // error fixed per pose (face to ~1 cm, axis to ~1 degree), gaussian, cm
   double pingJitterCm = 0.0;      // per-ping error, uniform in +-pingJitterCm, cm (0..0.5 keeps repeats
                                   // within 1 cm)
+  PoseErrorDraw poseErrorDraw = PoseErrorDraw::PerPose;  // what poseErrorSigmaCm is fixed by (what-ifs aside: pose)
   double nearFieldCm = 0.0;       // echoes nearer than this are affected (nearFieldMode), cm; 0 = none
   NearField nearFieldMode = NearField::NoEcho;
   double nearFieldHighCm = 2.0;        // ReadsHigh: how much too far a near echo reads, cm

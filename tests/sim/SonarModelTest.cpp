@@ -1,6 +1,8 @@
 // SonarModel against the measurements it was built from (nxt-sonar-and-odometry.md), as tables.
 #include "host/sim/SonarModel.hpp"
 
+#include "tests/sim/SonarScenes.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,38 +14,13 @@
 namespace nxtmap::sim {
 namespace {
 
-constexpr double kReach = 255.0;
+using test::flatWall;
+using test::kReach;
+using test::nxtClean;
+using test::openRoom;
+using test::pingWall;
+
 constexpr double kPi = 3.14159265358979323846;
-
-// The measured sensor without its wild readings (tested on their own): jasonatwood's fit is of mean readings.
-SonarNoise nxtClean() {
-  SonarNoise s = sonarPreset("nxt");
-  s.wildProb = 0.0;
-  return s;
-}
-
-// A room whose walls lie beyond the sensor's reach, holding what the test adds.
-Scene openRoom() {
-  Scene scene;
-  scene.addRing(Ring{{Vec2(-1000, -1000), Vec2(1000, -1000), Vec2(1000, 1000), Vec2(-1000, 1000)}, Surface::Hard});
-  return scene;
-}
-
-// A long straight target along y = 0 (a face at (x, d) pointing north is d cm from it).
-Scene flatWall(Surface surface) {
-  Scene scene = openRoom();
-  scene.addWall(Edge{Vec2(-800, 0), Vec2(800, 0), surface});
-  scene.finish();
-  return scene;
-}
-
-// One ping of sensor 0 at (x, d) turned turnDeg from the wall's normal, with a fresh model (no cross-talk
-// state) of the run's seed; rng is the robot's generator, shared by the poses of a test.
-int pingWall(const Scene& scene, const SonarNoise& noise, double x, double d, double turnDeg, uint64_t seed,
-             std::mt19937_64& rng) {
-  SonarModel model(noise, kReach, seed);
-  return model.ping(scene, Vec2(x, d), turnDeg, 0, 0.0, false, rng);
-}
 
 TEST(SonarModel, LinearFitOnAFlatWallFrom8To64CmReproducesJasonatwood) {
   const Scene scene = flatWall(Surface::Hard);
@@ -102,31 +79,6 @@ TEST(SonarModel, NearFieldMasksOrReadsHigh) {
       EXPECT_NEAR(sum / echoes, row.meanCm, 0.3) << what;
     }
   }
-}
-
-TEST(SonarModel, RepeatPingsAtAPoseAgreeToOneCmButPosesDiffer) {
-  const Scene scene = flatWall(Surface::Hard);
-  std::mt19937_64 poses(3);
-  std::vector<double> fixedErrors;
-  for (int p = 0; p < 60; ++p) {
-    const double d = std::uniform_real_distribution<double>(10.0, 150.0)(poses);
-    const double turn = std::uniform_real_distribution<double>(-25.0, 25.0)(poses);
-    const Vec2 face(std::uniform_real_distribution<double>(-300.0, 300.0)(poses), d);
-    SonarModel model(nxtClean(), kReach, 5);
-    std::mt19937_64 rng(static_cast<uint64_t>(p));
-    std::vector<int> readings;
-    for (int k = 0; k < 40; ++k) readings.push_back(model.ping(scene, face, turn, 0, k * 55.0, false, rng));
-    const auto [lo, hi] = std::minmax_element(readings.begin(), readings.end());
-    ASSERT_NE(*hi, SonarModel::kNoEcho);
-    EXPECT_LE(*hi - *lo, 1) << "pose " << p;
-    double mean = 0;
-    for (int r : readings) mean += r;
-    fixedErrors.push_back(mean / 40.0 - (0.9757 * d + 1.88));
-  }
-  // Averaging repeats leaves each pose's own error: it spreads over poses (sigma 1 cm in nxt).
-  double ss = 0;
-  for (double e : fixedErrors) ss += e * e;
-  EXPECT_GT(std::sqrt(ss / 60.0), 0.6);
 }
 
 TEST(SonarModel, WildReadingsAreRareZerosNoEchoesAndShortOnes) {
