@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -130,8 +131,10 @@ std::string squareLine(const mapping::MappingRun& run) {
     out << "no straight wall in range (" << int{e.dips} << " dips): mapped as set down";
   } else {
     out << "walls " << report::formatNumber(e.mrad * 0.18 / 3.141592653589793, 1) << " deg off the start heading ("
-        << int{e.agreeing} << " of " << int{e.dips} << " dips agree), turned square: left "
-        << report::formatNumber(run.squaredOffDeg(), 1) << " deg off them";
+        << int{e.agreeing} << " of " << int{e.dips} << " dips agree), turned square: left ";
+    const double turned = run.squaredTurnedDeg().value_or(0.0);  // + clockwise
+    out << report::formatNumber(std::fabs(turned), 1) << " deg " << (turned < 0 ? "anticlockwise" : "clockwise")
+        << " of them";
   }
   return out.str();
 }

@@ -99,6 +99,17 @@ TEST(SimTrace, TheErrorIsTheTruthLessTheBeliefAndLostMeansAnotherCell) {
     if (out) ++recount;
   }
   EXPECT_NEAR(outside, recount, mapping / 50) << r.out;
+  // The sweep's line gives the heading it left, signed: the first mapping row's heading error, the belief then
+  // being square (+ clockwise; 0.1 deg is 1.7 mrad).
+  const size_t at = r.out.find("turned square: left ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  double deg = 0;
+  char way[16] = {};
+  ASSERT_EQ(std::sscanf(r.out.c_str() + at, "turned square: left %lf deg %15s of them", &deg, way), 2) << r.out;
+  ASSERT_TRUE(std::string(way) == "clockwise" || std::string(way) == "anticlockwise") << way;
+  const double signedMrad = (std::string(way) == "clockwise" ? 1 : -1) * deg * 17.4533;
+  const std::vector<std::string> first = csvFields(rows[rows.size() - static_cast<size_t>(mapping)]);
+  EXPECT_NEAR(num(first[17]), signedMrad, 2.0) << rows[rows.size() - static_cast<size_t>(mapping)];
 }
 
 TEST(SimTrace, ABadTraceFileIsRefusedBeforeTheRun) {
