@@ -56,8 +56,10 @@ struct PilotConfig {
   // After the sweep (square to the walls, or as set down when it saw no straight wall), the nearest wall no
   // farther than this (cm) across and along lays the cells' edges where its face should lie
   // (RangeGeometry::faceMm): the robot starts off its cell's centre by what that takes (walls in the honest
-  // world are not on a cell edge where the robot was set down).
-  int16_t snapRangeCm = 100;
+  // world are not on a cell edge where the robot was set down). An axis left unlaid maps a wall whose face
+  // lies within faceMarginCm past an edge a cell too near (one start in five): every good reading lays it, up
+  // to the brick's mapping range (RangeGeometry::maxCm, 120 cm).
+  int16_t snapRangeCm = 120;
   // A sweep that saw no straight wall (all of them too far, over 160 cm, in the middle of a large room): the
   // robot drives towards an echo of the sweep beyond approachCm + 20 cm until approachCm from it (at most
   // approachMaxCm), turns back to the heading it was set down on and sweeps again, up to approaches times (a
