@@ -28,13 +28,6 @@ struct LessOne {
   double jitterDeg = kJitterDeg;
 };
 
-// Sums over the runs of one row and strategy.
-struct RowTally {
-  int runs = 0, lost = 0;
-  double detected = 0.0, worst = 100.0, unsafeFree = 0.0;
-  double mean(double sum) const { return runs == 0 ? 0.0 : sum / runs; }
-};
-
 std::vector<LessOne> lessOneRows() {
   const sim::NoiseProfile nxt = *sim::noiseProfileByName("nxt");
   std::vector<LessOne> rows;
@@ -72,13 +65,13 @@ std::vector<LessOne> lessOneRows() {
   return rows;
 }
 
-RowTally runRow(const cli::Suite& suite, const LessOne& row, mapping::Strategy strategy, cli::ProgressLine& progress) {
+Tally runRow(const cli::Suite& suite, const LessOne& row, mapping::Strategy strategy, cli::ProgressLine& progress) {
   cli::SuiteSettings s;
   s.strategy = strategy;
   s.noise = "nxt";
   s.robot = *sim::robotByName("brick");
   s.squareAtStart = true;
-  RowTally t;
+  Tally t;
   for (const report::Scenario& sc : suite.scenarios) {
     for (int seed = 1; seed <= kLessOneSeeds; ++seed) {
       mapping::RunConfig c = cli::scenarioConfig(sc, s, static_cast<uint64_t>(seed));
@@ -87,7 +80,7 @@ RowTally runRow(const cli::Suite& suite, const LessOne& row, mapping::Strategy s
       const report::RunResult r = cli::runOnce(suite.site(sc), c);
       ++t.runs;
       t.detected += r.detectedPct;
-      t.worst = std::min(t.worst, r.detectedPct);
+      t.worstDetected = std::min(t.worstDetected, r.detectedPct);
       t.unsafeFree += r.unsafeFree;
       t.lost += r.lost > 0.5 ? 1 : 0;
       progress.tick();
@@ -101,7 +94,7 @@ RowTally runRow(const cli::Suite& suite, const LessOne& row, mapping::Strategy s
 void lessOneTable(const RealismWorlds& w) {
   const std::vector<LessOne> list = lessOneRows();
   const size_t total = list.size() * 2 * w.suite20.scenarios.size() * kLessOneSeeds;
-  std::vector<RowTally> measured(list.size() * 2);
+  std::vector<Tally> measured(list.size() * 2);
   {
     cli::ProgressLine progress(std::cerr, cli::stderrIsTerminal(), progressLabel("realism", "less one fact at a time"),
                                total);
@@ -116,15 +109,16 @@ void lessOneTable(const RealismWorlds& w) {
   std::vector<std::vector<std::string>> rows;
   for (size_t i = 0; i < list.size(); ++i) {
     for (size_t k = 0; k < 2; ++k) {
-      const RowTally& t = measured[2 * i + k];
-      const RowTally& b = measured[k];
+      const Tally& t = measured[2 * i + k];
+      const Tally& b = measured[k];
       const bool isBase = i == 0;
-      rows.push_back(
-          {list[i].name, mapping::strategyNames()[k], withDelta(t.mean(t.detected), b.mean(b.detected), 1, isBase),
-           withDelta(t.worst, b.worst, 1, isBase), withDelta(t.mean(t.unsafeFree), b.mean(b.unsafeFree), 1, isBase),
-           std::to_string(t.lost) + "/" + std::to_string(t.runs) +
-               (isBase ? "" : " (" + formatDelta(t.lost - b.lost, 0) + ")"),
-           isBase ? "base" : "measured"});
+      rows.push_back({list[i].name, mapping::strategyNames()[k],
+                      withDelta(t.mean(t.detected), b.mean(b.detected), 1, isBase),
+                      withDelta(t.worstDetected, b.worstDetected, 1, isBase),
+                      withDelta(t.mean(t.unsafeFree), b.mean(b.unsafeFree), 1, isBase),
+                      std::to_string(t.lost) + "/" + std::to_string(t.runs) +
+                          (isBase ? "" : " (" + formatDelta(t.lost - b.lost, 0) + ")"),
+                      isBase ? "base" : "measured"});
     }
   }
   printColumns({"less", "strategy", "detected %", "worst %", "unsafe free", "lost", "result"}, rows);
