@@ -12,6 +12,29 @@
 #include "host/log/Log.hpp"
 
 namespace nxtmap::house {
+namespace {
+
+// How far (cells) a room's map is followed straight on from a doorway: past any room the brick maps.
+constexpr int16_t kRoomRayCells = 64;
+
+// Room `room`'s map, followed straight on along `out` from each of a doorway's cells (house frame), ends at one
+// of its walls for most of them: the doorway opens into that room as mapped. Rays that run into unknown cells
+// cross space the room only glimpsed from afar (through another opening, at the end of its range): not a room.
+bool opensIntoMappedRoom(const network::RoomNode& room, const std::vector<Cell>& doorHouse, Dir out) {
+  const network::RoomTransform toRoom = room.toHouse.inverse();
+  int walled = 0;
+  for (const Cell d : doorHouse) {
+    for (int16_t k = 1; k <= kRoomRayCells; ++k) {
+      const CellState s = room.map.at(toRoom.apply(advance(d, out, k)));
+      if (s == CellState::Free) continue;
+      if (s == CellState::Occupied) ++walled;
+      break;
+    }
+  }
+  return 2 * walled > static_cast<int>(doorHouse.size());
+}
+
+}  // namespace
 
 void HousePlanner::recordRoom(const HouseReport& r, int fromRoom, const RoomExit* via,
                               const std::vector<Cell>& entranceHouse) {
@@ -98,12 +121,13 @@ bool HousePlanner::leadsToMappedRoom(const Pending& p) {
       if (static_cast<int>(j) == p.room) continue;
       const network::RoomTransform toJ = rooms[j].toHouse.inverse();
       if (!rooms[j].map.isFree(toJ.apply(beyond))) continue;
-      // A gateway to a mapped room; skip it when that doorway is already a gateway of the two.
       std::vector<Cell> house, inJ;
       for (const Cell c : cells) {
         house.push_back(owner.toHouse.apply(c));
         inJ.push_back(toJ.apply(house.back()));
       }
+      if (!opensIntoMappedRoom(rooms[j], house, out)) continue;
+      // A gateway to a mapped room; skip it when that doorway is already a gateway of the two.
       // The same doorway seen from the other room may be found a cell wider or shifted.
       bool known = false;
       for (const int gi : network_.gatewaysBetween(p.room, static_cast<int>(j))) {

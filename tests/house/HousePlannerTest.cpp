@@ -1,6 +1,7 @@
 // HousePlanner, as reports in and orders out: an exit a travel could not pass is tried once more after the
 // others, from wherever the robot is then, and only a second failure leaves it unreached; a room is cut from its
-// run's map by where the robot started and where it stood.
+// run's map by where the robot started and where it stood; an exit into space a mapped room only glimpsed is
+// explored, one into a mapped room joins the two.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -118,6 +119,66 @@ TEST(HousePlanner, TheRoomKeptIsWhereTheRobotStartedAndWhereItStood) {
     EXPECT_TRUE(room.isFree(Cell{-1, 0}));
     EXPECT_EQ(room.isFree(Cell{-5, 0}), withStood) << (withStood ? "with" : "without") << " the cells stood in";
   }
+}
+
+// The first room (house frame) with a doorway north into a second room, and west of that doorway a wide opening
+// the run did not take for a doorway: through it the robot saw 3 rows of the space beyond (x 0..4, y 6..8), up to
+// its range; `farSide` is what it saw at x = -1 beyond them (' ' nothing, '#' a wall: the space is closed).
+std::vector<std::string> firstRoomWithAGlimpse(char farSide) {
+  const std::string glimpse = std::string(1, farSide) + ".....        ";
+  return {glimpse,          glimpse,          glimpse,          "#.....##..####", "#............#",
+          "#............#", "#............#", "#............#", "#............#", "##############"};
+}
+
+// Maps the first room, travels to its north doorway, crosses it and maps the second room (x 5..11, y 5..10 of the
+// house), whose west doorway (x 5, y 7..8) opens onto the space glimpsed from the first. The order then.
+HouseOrder afterTheSecondRoom(HousePlanner& p, char farSide) {
+  HouseOrder o = p.start();
+  HouseReport first;
+  first.kind = HouseReport::Kind::RoomMapped;
+  first.map = drawMap(firstRoomWithAGlimpse(farSide), -1, -1);
+  first.pose = Pose{Cell{1, 1}, Dir::North};
+  first.exits = {RoomExit{Doorway{true, Cell{7, 5}, 2, 1}, Cell{7, 4}, Dir::North}};
+  o = p.on(first);
+  EXPECT_EQ(o.kind, HouseOrder::Kind::Travel);
+  HouseReport arrived;
+  arrived.kind = HouseReport::Kind::Arrived;
+  arrived.pose = Pose{o.target, Dir::North};
+  o = p.on(arrived);
+  EXPECT_EQ(o.kind, HouseOrder::Kind::Cross);
+  // The second room in its own frame: the crossing at house 7,6, facing north.
+  HouseReport second;
+  second.kind = HouseReport::Kind::RoomMapped;
+  second.map = drawMap({"#######", "#.....#", "......#", "......#", "#.....#", "##..###"}, -2, -1);
+  second.pose = Pose{Cell{0, 1}, Dir::North};
+  second.crossedAt = Pose{advance(o.at.cell, o.at.heading, 2), o.at.heading};
+  second.exits = {RoomExit{Doorway{false, Cell{-2, 1}, 2, 1}, Cell{-1, 1}, Dir::West}};
+  return p.on(second);
+}
+
+TEST(HousePlanner, AnExitIntoSpaceAMappedRoomOnlyGlimpsedIsExplored) {
+  RangeGeometry g;
+  g.cellCm = 20;
+  HousePlannerConfig c = config();
+  c.registerCells = 0;
+  HousePlanner p(c, g);
+  const HouseOrder o = afterTheSecondRoom(p, ' ');
+  ASSERT_EQ(o.kind, HouseOrder::Kind::Travel);
+  EXPECT_EQ(p.brickToHouse().apply(o.target), (Cell{6, 7}));  // the west doorway's inside cell
+  EXPECT_EQ(p.network().gateways().size(), 1u);               // the north doorway only
+}
+
+TEST(HousePlanner, AnExitIntoAMappedRoomJoinsTheTwoWithoutARun) {
+  RangeGeometry g;
+  g.cellCm = 20;
+  HousePlannerConfig c = config();
+  c.registerCells = 0;
+  HousePlanner p(c, g);
+  const HouseOrder o = afterTheSecondRoom(p, '#');  // the space beyond the opening is the first room's own
+  EXPECT_EQ(o.kind, HouseOrder::Kind::Finished);
+  ASSERT_EQ(p.network().gateways().size(), 2u);
+  EXPECT_EQ(p.network().gateways()[1].roomA, 1);
+  EXPECT_EQ(p.network().gateways()[1].roomB, 0);
 }
 
 }  // namespace
