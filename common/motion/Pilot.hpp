@@ -53,6 +53,10 @@ struct PilotConfig {
   int16_t sonarConeMrad = 262;  // the sonar's widest beam half-angle (the NXT's 15 deg): how wide a wall's dip is
   // How well the squared heading is known (1 sigma, mrad): the estimate's spread plus the final turn's.
   int16_t squaredHeadingMrad = 20;
+  // How well the heading is known when the sweeps saw no straight wall (1 sigma, mrad): set down within 10 deg
+  // of square, turned back by the encoders after every sweep and approach. The walls seen while mapping square
+  // it then (PoseTracker::measureHeading through the side walls' slopes).
+  int16_t unsquaredHeadingMrad = 175;
   // After the sweep (square to the walls, or as set down when it saw no straight wall), the nearest wall no
   // farther than this (cm) across and along lays the cells' edges where its face should lie
   // (RangeGeometry::faceMm): the robot starts off its cell's centre by what that takes (walls in the honest

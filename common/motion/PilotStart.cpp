@@ -92,7 +92,7 @@ DriveAction Pilot::snap(const DriveEvent& e) {
   }
   const int next = static_cast<int>(e.sensor) + 1;
   if (next < kSensorCount) return DriveAction::read(static_cast<Sensor>(next));
-  const int64_t sigma = squaring_.result().found ? config_.squaredHeadingMrad : 0;
+  const int64_t sigma = squaring_.result().found ? config_.squaredHeadingMrad : config_.unsquaredHeadingMrad;
   const int64_t residual = squaring_.residualMrad();  // as set down, when no wall was seen
   snapVarianceMrad2_ = config_.startHeadingVarianceMrad2 + sigma * sigma + residual * residual;
   return DriveAction::think();  // the explorer starts on the Thought (Pilot::stepCorrected)

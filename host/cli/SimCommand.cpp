@@ -128,7 +128,8 @@ std::string squareLine(const mapping::MappingRun& run) {
   std::ostringstream out;
   out << "square           ";
   if (!e.found) {
-    out << "no straight wall in range (" << int{e.dips} << " dips): mapped as set down";
+    out << "no straight wall in range (" << int{e.dips} << " dips): mapped as set down"
+        << (run.squaredLate() ? " until the walls it mapped squared it" : "");
   } else {
     out << "walls " << report::formatNumber(e.mrad * 0.18 / 3.141592653589793, 1) << " deg off the start heading ("
         << int{e.agreeing} << " of " << int{e.dips} << " dips agree), turned square: left ";

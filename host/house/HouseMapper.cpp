@@ -136,7 +136,15 @@ void HouseMapper::drive(DriveAction a) {
     const DriveEvent answer = mapping::carryOutOnRobot(robot_, a, explorerConfig_.geometry);
     a = session_.step(answer);
     noteWhereItStands();
-    if (!squared_ && stack_.pilot() != nullptr && stack_.pilot()->explorerStarted()) layTruthSquare();
+    if (!squared_ && stack_.pilot() != nullptr && stack_.pilot()->explorerStarted()) {
+      layTruthSquare();
+    } else if (squareLate_) {
+      const int64_t known = 2 * static_cast<int64_t>(PilotConfig{}.squaredHeadingMrad);
+      if (!network().rooms().empty() || stack_.pilot() == nullptr)
+        squareLate_ = false;  // the first room is over
+      else if (stack_.pilot()->tracker().thetaVariance() <= known * known)
+        layTruthLate();
+    }
     if (trace_ != nullptr) trace_->record(traceRow(phase, done, answer));
   }
 }
@@ -190,6 +198,7 @@ void HouseMapper::layTruthSquare() {
   if (!config_.squareAtStart) return;
   const mapping::SquaredGrid g =
       mapping::squaredGrid(robot_, *stack_.pilot(), stack_.explorer()->pose().heading, config_.heading, setDownCm_);
+  squareLate_ = !g.found;
   if (!g.moved) return;
   const sim::Placement& p = g.placement;
   world_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, world_.name());
@@ -197,6 +206,18 @@ void HouseMapper::layTruthSquare() {
   config_.startRow = p.startRow;
   config_.heading = g.heading;
   frame_ = mapping::FrameTransform(p.startCol, p.startRow, g.heading);
+  robot_.setFrame(p.frame);
+}
+
+void HouseMapper::layTruthLate() {
+  squareLate_ = false;
+  const mapping::BelievedGrid g = mapping::believedGrid(robot_, *stack_.pilot(), stack_.explorer()->pose());
+  const sim::Placement& p = g.placement;
+  world_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, world_.name());
+  config_.startCol = g.originCol;
+  config_.startRow = g.originRow;
+  config_.heading = g.heading;
+  frame_ = mapping::FrameTransform(g.originCol, g.originRow, g.heading);
   robot_.setFrame(p.frame);
 }
 

@@ -120,7 +120,11 @@ class HouseMapper {
   HouseTraceRow traceRow(RoomSession::Phase phase, const DriveAction& done, const DriveEvent& answer) const;
   // Once the first room's sweep is over: the truth laid on the grid the robot now maps on (SquaredGrid).
   void layTruthSquare();
-  bool squared_ = false;  // layTruthSquare has run (or there is no sweep)
+  // The sweeps saw no straight wall: once the heading is known from the first room's walls, the truth laid again
+  // where the robot's belief holds (mapping::believedGrid; as MappingRun).
+  void layTruthLate();
+  bool squared_ = false;     // layTruthSquare has run (or there is no sweep)
+  bool squareLate_ = false;  // layTruthLate is due (the first room's run, heading not yet known)
   StartCalibration startCalibration_{};
   sim::Vec2 setDownCm_;   // where the robot's centre was set down (plane, cm)
 

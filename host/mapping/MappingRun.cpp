@@ -92,6 +92,8 @@ bool MappingRun::step() {
   lastEvent_ = carryOut(last_);
   last_ = stack_.step(lastEvent_);
   if (squaring && stack_.pilot() != nullptr && stack_.pilot()->explorerStarted()) layTruthSquare();
+  const int64_t known = 2 * static_cast<int64_t>(PilotConfig{}.squaredHeadingMrad);
+  if (squareLate_ && !squaring && stack_.pilot()->tracker().thetaVariance() <= known * known) layTruthLate();
   return !stack_.finished();
 }
 
@@ -106,6 +108,7 @@ void MappingRun::layTruthSquare() {
   const SquaredGrid g = squaredGrid(robot_, *stack_.pilot(), explorer().pose().heading, config_.heading, setDownCm_);
   squaredOffDeg_ = g.offDeg;
   if (g.found) squaredTurnedDeg_ = g.turnedDeg;
+  squareLate_ = !g.found;
   if (!g.moved) return;  // as laid
   const sim::Placement& p = g.placement;
   truth_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, truth_.name());
@@ -113,6 +116,19 @@ void MappingRun::layTruthSquare() {
   config_.startRow = p.startRow;
   config_.heading = g.heading;
   frame_ = FrameTransform(p.startCol, p.startRow, g.heading);
+  robot_.setFrame(p.frame);
+}
+
+void MappingRun::layTruthLate() {
+  squareLate_ = false;
+  squaredLate_ = true;
+  const BelievedGrid g = believedGrid(robot_, *stack_.pilot(), explorer().pose());
+  const sim::Placement& p = g.placement;
+  truth_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, truth_.name());
+  config_.startCol = g.originCol;
+  config_.startRow = g.originRow;
+  config_.heading = g.heading;
+  frame_ = FrameTransform(g.originCol, g.originRow, g.heading);
   robot_.setFrame(p.frame);
 }
 

@@ -99,6 +99,9 @@ class MappingRun {
   // The same with its sign, + the robot clockwise of the walls' axis (-45..45); empty when the sweep found no wall
   // or there was no sweep.
   std::optional<double> squaredTurnedDeg() const { return squaredTurnedDeg_; }
+  // The sweeps saw no straight wall and the truth was laid again once the walls it mapped had squared the robot
+  // (layTruthLate).
+  bool squaredLate() const { return squaredLate_; }
 
   // Whether the room met the grid's edge: the run ended GridFull (a reading or a move beyond the grid), or
   // it left open space unmapped where the grid ends (the frontier explorer stops there and ends Complete).
@@ -119,9 +122,15 @@ class MappingRun {
   // the robot now maps in, turned to the scene's walls nearest its heading (sim::sceneAxesDeg), centred where
   // it stands; what is left of its heading error counts against it.
   void layTruthSquare();
+  // A robot whose sweeps saw no straight wall squares against the walls while mapping: once its heading is known
+  // as well as a squared start's (twice PilotConfig::squaredHeadingMrad, 1 sigma), the truth is laid again where
+  // its belief holds (believedGrid); the cells it mapped before are scored on that grid too.
+  void layTruthLate();
 
   RunConfig config_;
   bool squared_ = false;  // layTruthSquare has run
+  bool squareLate_ = false;   // the sweeps saw no wall: layTruthLate is due once the heading is known
+  bool squaredLate_ = false;  // layTruthLate has run
   double startMovedCm_ = 0;
   double setDownFrameDeg_ = 0;  // the grid's turn as the robot was set down (sim::GridFrame::headingDeg)
   sim::Vec2 setDownCm_;         // where the robot's centre was set down (plane, cm)

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "host/mapping/FrameTransform.hpp"
 #include "host/sim/SceneAxes.hpp"
 #include "host/sim/StartJitter.hpp"
 
@@ -35,6 +36,24 @@ SquaredGrid squaredGrid(const sim::SimRobot& robot, const Pilot& pilot, Dir expl
   g.moved = !(g.heading == setDownHeading && std::fabs(turn - robot.frame().headingDeg) < 1e-6 && forwardCm == 0.0 &&
               rightCm == 0.0 && !droveOff);
   if (g.moved) g.placement = sim::placeOnGrid(robot.scene(), centre, turn, robot.frame().cellCm);
+  return g;
+}
+
+BelievedGrid believedGrid(const sim::SimRobot& robot, const Pilot& pilot, const Pose& explorer) {
+  const PoseTracker& tracker = pilot.tracker();
+  // The compass heading the robot believes it faces along the explorer's heading, and that of the explorer's north.
+  const double facingDeg = robot.headingDeg() - tracker.thetaMrad() * 0.18 / 3.14159265358979323846;
+  const double northDeg = facingDeg - 90.0 * static_cast<int>(explorer.heading);
+  const double forwardCm = tracker.along(explorer.heading) / 10.0;
+  const double rightCm = tracker.along(rotate(explorer.heading, 1)) / 10.0;
+  const sim::Vec2 centre = believedCellCentre(sim::Vec2(robot.xCm(), robot.yCm()), facingDeg, forwardCm, rightCm);
+  BelievedGrid g;
+  g.heading = static_cast<sim::Heading>(sim::squareQuarter(northDeg));
+  g.placement = sim::placeOnGrid(robot.scene(), centre, sim::squareRemainderDeg(northDeg), robot.frame().cellCm);
+  int col = 0, row = 0;
+  FrameTransform(0, 0, g.heading).toWorld(explorer.cell, col, row);
+  g.originCol = g.placement.startCol - col;
+  g.originRow = g.placement.startRow - row;
   return g;
 }
 

@@ -26,6 +26,18 @@ struct SquaredGrid {
 SquaredGrid squaredGrid(const sim::SimRobot& robot, const Pilot& pilot, Dir explorerHeading,
                         sim::Heading setDownHeading, const sim::Vec2& setDownCm);
 
+// The grid on which the robot's belief is right as it stands: turned to the axis it believes it faces (its true
+// heading less the tracker's theta) and laid with `explorer`'s cell where it believes it stands; `origin` is then
+// the world cell of the explorer's origin on it. For a robot whose sweeps saw no straight wall: mapping, it turns
+// square to the walls it reads (the tracker's heading, learnt from them), and its grid is laid where its belief
+// holds once that heading is known (MappingRun).
+struct BelievedGrid {
+  sim::Placement placement;                // the grid over the scene
+  sim::Heading heading = sim::Heading::N;  // the world heading of the explorer's north on it
+  int originCol = 0, originRow = 0;        // the explorer's cell 0,0 on it
+};
+BelievedGrid believedGrid(const sim::SimRobot& robot, const Pilot& pilot, const Pose& explorer);
+
 // The centre of the cell a robot at `robotCm` (plane cm) believes it stands `forwardCm` ahead of and `rightCm` to
 // the right of, on a grid whose explorer heading is the compass heading `axisDeg`.
 sim::Vec2 believedCellCentre(const sim::Vec2& robotCm, double axisDeg, double forwardCm, double rightCm);
