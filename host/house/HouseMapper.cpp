@@ -200,24 +200,21 @@ void HouseMapper::layTruthSquare() {
       mapping::squaredGrid(robot_, *stack_.pilot(), stack_.explorer()->pose().heading, config_.heading, setDownCm_);
   squareLate_ = !g.found;
   if (!g.moved) return;
-  const sim::Placement& p = g.placement;
-  world_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, world_.name());
-  config_.startCol = p.startCol;
-  config_.startRow = p.startRow;
-  config_.heading = g.heading;
-  frame_ = mapping::FrameTransform(p.startCol, p.startRow, g.heading);
-  robot_.setFrame(p.frame);
+  layTruthOn(g.placement, g.placement.startCol, g.placement.startRow, g.heading);
 }
 
 void HouseMapper::layTruthLate() {
   squareLate_ = false;
   const mapping::BelievedGrid g = mapping::believedGrid(robot_, *stack_.pilot(), stack_.explorer()->pose());
-  const sim::Placement& p = g.placement;
+  layTruthOn(g.placement, g.originCol, g.originRow, g.heading);
+}
+
+void HouseMapper::layTruthOn(const sim::Placement& p, int originCol, int originRow, sim::Heading heading) {
   world_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, world_.name());
-  config_.startCol = g.originCol;
-  config_.startRow = g.originRow;
-  config_.heading = g.heading;
-  frame_ = mapping::FrameTransform(g.originCol, g.originRow, g.heading);
+  config_.startCol = originCol;
+  config_.startRow = originRow;
+  config_.heading = heading;
+  frame_ = mapping::FrameTransform(originCol, originRow, heading);
   robot_.setFrame(p.frame);
 }
 

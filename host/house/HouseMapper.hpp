@@ -23,6 +23,7 @@
 #include "host/network/HouseNetwork.hpp"
 #include "host/sim/NoiseProfile.hpp"
 #include "host/sim/RobotPlacement.hpp"
+#include "host/sim/TruthRaster.hpp"
 #include "host/sim/SimRobot.hpp"
 #include "host/sim/Site.hpp"
 #include "host/sim/World.hpp"
@@ -123,6 +124,8 @@ class HouseMapper {
   // The sweeps saw no straight wall: once the heading is known from the first room's walls, the truth laid again
   // where the robot's belief holds (mapping::believedGrid; as MappingRun).
   void layTruthLate();
+  // The truth drawn on grid p, the first room's origin at cell originCol, originRow and its north `heading` there.
+  void layTruthOn(const sim::Placement& p, int originCol, int originRow, sim::Heading heading);
   bool squared_ = false;     // layTruthSquare has run (or there is no sweep)
   bool squareLate_ = false;  // layTruthLate is due (the first room's run, heading not yet known)
   StartCalibration startCalibration_{};

@@ -110,25 +110,22 @@ void MappingRun::layTruthSquare() {
   if (g.found) squaredTurnedDeg_ = g.turnedDeg;
   squareLate_ = !g.found;
   if (!g.moved) return;  // as laid
-  const sim::Placement& p = g.placement;
-  truth_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, truth_.name());
-  config_.startCol = p.startCol;
-  config_.startRow = p.startRow;
-  config_.heading = g.heading;
-  frame_ = FrameTransform(p.startCol, p.startRow, g.heading);
-  robot_.setFrame(p.frame);
+  layTruthOn(g.placement, g.placement.startCol, g.placement.startRow, g.heading);
 }
 
 void MappingRun::layTruthLate() {
   squareLate_ = false;
   squaredLate_ = true;
   const BelievedGrid g = believedGrid(robot_, *stack_.pilot(), explorer().pose());
-  const sim::Placement& p = g.placement;
+  layTruthOn(g.placement, g.originCol, g.originRow, g.heading);
+}
+
+void MappingRun::layTruthOn(const sim::Placement& p, int originCol, int originRow, sim::Heading heading) {
   truth_ = sim::rasterizeScene(robot_.scene(), p.frame, p.width, p.height, truth_.name());
-  config_.startCol = g.originCol;
-  config_.startRow = g.originRow;
-  config_.heading = g.heading;
-  frame_ = FrameTransform(g.originCol, g.originRow, g.heading);
+  config_.startCol = originCol;
+  config_.startRow = originRow;
+  config_.heading = heading;
+  frame_ = FrameTransform(originCol, originRow, heading);
   robot_.setFrame(p.frame);
 }
 

@@ -12,6 +12,7 @@
 #include "host/sim/RobotDescription.hpp"
 #include "host/sim/SimRobot.hpp"
 #include "host/sim/Site.hpp"
+#include "host/sim/TruthRaster.hpp"
 #include "host/sim/World.hpp"
 
 #include <optional>
@@ -126,6 +127,8 @@ class MappingRun {
   // as well as a squared start's (twice PilotConfig::squaredHeadingMrad, 1 sigma), the truth is laid again where
   // its belief holds (believedGrid); the cells it mapped before are scored on that grid too.
   void layTruthLate();
+  // The truth drawn on grid p, the explorer's origin at cell originCol, originRow and its north `heading` there.
+  void layTruthOn(const sim::Placement& p, int originCol, int originRow, sim::Heading heading);
 
   RunConfig config_;
   bool squared_ = false;  // layTruthSquare has run

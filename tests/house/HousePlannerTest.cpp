@@ -156,12 +156,21 @@ HouseOrder afterTheSecondRoom(HousePlanner& p, char farSide) {
   return p.on(second);
 }
 
-TEST(HousePlanner, AnExitIntoSpaceAMappedRoomOnlyGlimpsedIsExplored) {
+RangeGeometry brickCells() {
   RangeGeometry g;
   g.cellCm = 20;
+  return g;
+}
+
+// A new room's frame as the crossing put it (no registration on the rooms mapped).
+HousePlannerConfig unregistered() {
   HousePlannerConfig c = config();
   c.registerCells = 0;
-  HousePlanner p(c, g);
+  return c;
+}
+
+TEST(HousePlanner, AnExitIntoSpaceAMappedRoomOnlyGlimpsedIsExplored) {
+  HousePlanner p(unregistered(), brickCells());
   const HouseOrder o = afterTheSecondRoom(p, ' ');
   ASSERT_EQ(o.kind, HouseOrder::Kind::Travel);
   EXPECT_EQ(p.brickToHouse().apply(o.target), (Cell{6, 7}));  // the west doorway's inside cell
@@ -169,11 +178,7 @@ TEST(HousePlanner, AnExitIntoSpaceAMappedRoomOnlyGlimpsedIsExplored) {
 }
 
 TEST(HousePlanner, AnExitIntoAMappedRoomJoinsTheTwoWithoutARun) {
-  RangeGeometry g;
-  g.cellCm = 20;
-  HousePlannerConfig c = config();
-  c.registerCells = 0;
-  HousePlanner p(c, g);
+  HousePlanner p(unregistered(), brickCells());
   const HouseOrder o = afterTheSecondRoom(p, '#');  // the space beyond the opening is the first room's own
   EXPECT_EQ(o.kind, HouseOrder::Kind::Finished);
   ASSERT_EQ(p.network().gateways().size(), 2u);
