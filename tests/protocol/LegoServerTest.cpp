@@ -7,62 +7,16 @@
 
 #include "common/protocol/LegoCommands.hpp"
 #include "common/protocol/LegoServer.hpp"
+#include "tests/protocol/FakeLegoBrick.hpp"
 
 namespace nxtmap::protocol {
 namespace {
 
-using Bytes = std::vector<uint8_t>;
-
-Telegram telegramOf(const Bytes& b) {
-  Telegram t;
-  for (size_t i = 0; i < b.size(); ++i) t.bytes[i] = b[i];
-  t.size = static_cast<uint8_t>(b.size());
-  return t;
-}
-
-// A brick whose outputs, inputs and speaker are recorded.
-class FakeBrick final : public LegoBrick {
- public:
-  LegoOutputState output(uint8_t port) const override {
-    LegoOutputState s;
-    s.power = static_cast<int8_t>(-10 * port);
-    s.mode = kLegoMotorOn;
-    s.runState = kLegoRunRunning;
-    s.tachoLimit = 360;
-    s.tachoCount = 1000 + port;
-    s.blockTachoCount = -2;
-    s.rotationCount = 0x01020304;
-    return s;
-  }
-  LegoInputValues input(uint8_t port) const override {
-    LegoInputValues v;
-    if (port == 3) return v;  // no reading yet
-    v.valid = true;
-    v.sensorType = kLegoLowSpeed9V;
-    v.scaled = v.calibrated = static_cast<int16_t>(40 + port);
-    return v;
-  }
-  uint8_t setOutput(const LegoOutputCommand& c) override {
-    set.push_back(c);
-    return kLegoOk;
-  }
-  uint8_t resetPosition(uint8_t port, bool relative) override {
-    resets.push_back(port * 2 + (relative ? 1 : 0));
-    return kLegoOk;
-  }
-  void playTone(uint16_t hz, uint16_t ms) override { tones.push_back({hz, ms}); }
-  void stopSound() override { ++stops; }
-  void address(uint8_t (&a)[6]) const override {
-    const uint8_t mine[6] = {0x00, 0x16, 0x53, 0x0A, 0x0B, 0x0C};
-    for (int i = 0; i < 6; ++i) a[i] = mine[i];
-  }
-  uint32_t freeFlashBytes() const override { return 0x00030000; }
-
-  std::vector<LegoOutputCommand> set;
-  std::vector<int> resets;
-  std::vector<std::pair<uint16_t, uint16_t>> tones;
-  int stops = 0;
-};
+using test::Bytes;
+using test::cat;
+using test::FakeBrick;
+using test::idle;
+using test::telegramOf;
 
 // Every reply the server gives for `commands` sent back to back, as telegrams.
 std::vector<Bytes> answers(LegoServer& s, LegoBrick& brick, const std::vector<Bytes>& commands,
@@ -77,19 +31,7 @@ std::vector<Bytes> answers(LegoServer& s, LegoBrick& brick, const std::vector<By
   return out;
 }
 
-LegoContext idle() {
-  LegoContext c;
-  c.batteryMillivolts = 7980;
-  c.sleepLimitMs = 60000;
-  c.firmwareMinor = 4;
-  return c;
-}
-
 Bytes zeros(size_t n) { return Bytes(n, 0); }
-Bytes cat(Bytes a, const Bytes& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
 
 TEST(LegoServer, AnswersEachServedCommandWithLegosLayout) {
   struct Case {
@@ -205,107 +147,6 @@ TEST(LegoServer, MotorCommandsAreRefusedWhileTheRobotMoves) {
   EXPECT_EQ(idleGot[0], (Bytes{0x02, 0x04, 0x00}));
   ASSERT_EQ(brick.set.size(), 3u);
   EXPECT_EQ(brick.set[2].port, 2);
-}
-
-TEST(LegoServer, BackToBackRequestsAreAnsweredInOrder) {
-  LegoServer s;
-  FakeBrick brick;
-  std::vector<Bytes> requests;
-  std::vector<uint8_t> expected;  // the opcode of each reply, in order
-  for (int i = 0; i < 40; ++i) {
-    const uint8_t ops[] = {0x0B, 0x0D, 0x11, 0x0C, 0x01};
-    const uint8_t op = ops[i % 5];
-    requests.push_back({0x00, op});
-    expected.push_back(op);
-    if (i % 3 == 0) requests.push_back({0x80, 0x05, 0x00, 0x0B, 0x00});        // no reply, unknown: no trace
-    if (i % 4 == 0) requests.push_back({0x80, 0x03, 0x00, 0x01, 0x10, 0x00});  // no reply, served
-  }
-  std::vector<uint8_t> got;
-  Frame f;
-  for (const Bytes& r : requests) {
-    s.take(telegramOf(r));
-    if (!s.hasRoom()) {
-      while (s.next(idle(), brick, f)) got.push_back(f.bytes[3]);
-    }
-  }
-  while (s.next(idle(), brick, f)) got.push_back(f.bytes[3]);
-  EXPECT_EQ(got, expected);
-  EXPECT_EQ(brick.tones.size(), 10u);
-  EXPECT_EQ(s.dropped(), 0u);
-}
-
-TEST(LegoServer, AFullQueueDropsAndCounts) {
-  LegoServer s;
-  FakeBrick brick;
-  const Bytes write = cat({0x00, 0x09, 0, 59}, cat(Bytes(58, 'a'), {0}));
-  size_t taken = 0;
-  while (s.hasRoom()) {
-    s.take(telegramOf(write));
-    ++taken;
-  }
-  s.take(telegramOf(write));
-  s.take(telegramOf(write));
-  EXPECT_EQ(taken, LegoServer::kQueueBytes / 64);
-  EXPECT_EQ(s.dropped(), 2u);
-}
-
-TEST(Mailboxes, KeepFiveAndDropTheOldestAsLegoDoes) {
-  Mailboxes m;
-  auto text = [](char c) { return Bytes{static_cast<uint8_t>(c), 0}; };
-  for (char c = 'a'; c <= 'g'; ++c) ASSERT_EQ(m.write(4, text(c).data(), 2), kLegoOk);
-  EXPECT_EQ(m.count(4), kLegoMessagesPerBox);
-  Mailboxes::Message out;
-  std::string order;
-  while (m.read(4, true, out) == kLegoOk) order += static_cast<char>(out.bytes[0]);
-  EXPECT_EQ(order, "cdefg");
-  EXPECT_EQ(m.used(), 0u);
-  // The shared pool: full messages in several queues until it is full.
-  const Bytes full = cat(Bytes(58, 'x'), {0});
-  uint8_t st = kLegoOk;
-  int written = 0;
-  for (uint8_t box = 0; box < kLegoMailboxes && st == kLegoOk; ++box) {
-    st = m.write(box, full.data(), 59);
-    written += st == kLegoOk ? 1 : 0;
-  }
-  EXPECT_EQ(st, kLegoNoMemory);
-  EXPECT_EQ(written, static_cast<int>(Mailboxes::kPoolBytes / 61));
-  // Reading without removing leaves it; the other queues are untouched.
-  ASSERT_EQ(m.read(1, false, out), kLegoOk);
-  EXPECT_EQ(m.count(1), 1);
-  EXPECT_EQ(m.read(19, true, out), kLegoMailboxEmpty);
-  EXPECT_EQ(m.write(2, text('z').data(), 1), kLegoOutOfRange);  // size 1 must be the NUL alone
-}
-
-TEST(LegoCommands, PcSideEncodersAndReplyDecodersRoundTrip) {
-  LegoServer s;
-  FakeBrick brick;
-  Frame req, rep;
-  auto ask = [&](const Frame& q) {
-    s.take(telegramOf(Bytes(q.bytes + 2, q.bytes + q.size)));
-    EXPECT_TRUE(s.next(idle(), brick, rep));
-    return telegramOf(Bytes(rep.bytes + 2, rep.bytes + rep.size));
-  };
-  ASSERT_TRUE(encodeMessageWrite(2, "explore", req));
-  uint8_t status = 0xFF;
-  ASSERT_TRUE(decodeMessageWriteReply(ask(req), status));
-  EXPECT_EQ(status, kLegoOk);
-  ASSERT_TRUE(encodeMessageRead(2, 0, true, req));
-  char text[kLegoMaxMessage + 1];
-  uint8_t box = 9;
-  ASSERT_TRUE(decodeMessageReadReply(ask(req), status, box, text));
-  EXPECT_EQ(status, kLegoOk);
-  EXPECT_EQ(box, 0);
-  EXPECT_STREQ(text, "explore");
-  ASSERT_TRUE(encodeGetBatteryLevel(req));
-  uint16_t mv = 0;
-  ASSERT_TRUE(decodeBatteryReply(ask(req), status, mv));
-  EXPECT_EQ(mv, 7980);
-  ASSERT_TRUE(encodeKeepAlive(req));
-  uint32_t sleep = 0;
-  ASSERT_TRUE(decodeKeepAliveReply(ask(req), status, sleep));
-  EXPECT_EQ(sleep, 60000u);
-  EXPECT_FALSE(encodeMessageWrite(0, std::string(59, 'a').c_str(), req));  // 59 + NUL is too long
-  EXPECT_TRUE(encodeMessageWrite(0, std::string(58, 'a').c_str(), req));
 }
 
 TEST(LegoTelegrams, OnlyExactLayoutsAreKnownToTheByte) {
