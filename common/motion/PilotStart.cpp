@@ -6,6 +6,9 @@ namespace nxtmap {
 namespace {
 // How well a turn calibration measures the turn error (1 sigma, ppm; TurnCalibration: about 0.2 %).
 constexpr int64_t kCalibratedTurnPpm = 3000;
+// How well the heading is known after a calibration turned its whole turns back (1 sigma, mrad): the first sweep's
+// squaring, then the random error of 8 N quarter turns and the gears' play at the reversals.
+constexpr int64_t kTurnedBackHeadingMrad = 50;
 }  // namespace
 
 DriveAction Pilot::startExplorer(int64_t headingVarianceMrad2) {
@@ -92,7 +95,9 @@ DriveAction Pilot::snap(const DriveEvent& e) {
   }
   const int next = static_cast<int>(e.sensor) + 1;
   if (next < kSensorCount) return DriveAction::read(static_cast<Sensor>(next));
-  const int64_t sigma = squaring_.result().found ? config_.squaredHeadingMrad : config_.unsquaredHeadingMrad;
+  const int64_t sigma = squaring_.result().found    ? config_.squaredHeadingMrad
+                        : calibration_.turnedBack() ? kTurnedBackHeadingMrad
+                                                    : config_.unsquaredHeadingMrad;
   const int64_t residual = squaring_.residualMrad();  // as set down, when no wall was seen
   snapVarianceMrad2_ = config_.startHeadingVarianceMrad2 + sigma * sigma + residual * residual;
   return DriveAction::think();  // the explorer starts on the Thought (Pilot::stepCorrected)

@@ -10,7 +10,8 @@ TurnCalibration::TurnCalibration(StartSquaring& squaring, uint8_t turns) : squar
 
 DriveAction TurnCalibration::begin(int approachesLeft) {
   NXTMAP_CHECK(turns_ >= 1);
-  found_ = false;
+  found_ = turnedBack_ = false;
+  lastTry_ = approachesLeft <= 0;
   errorPpm_ = 0;
   readings_ = samples_ = turnedMrad_ = 0;
   countedMrad_ = 0;
@@ -52,10 +53,15 @@ DriveAction TurnCalibration::step(const DriveEvent& e) {
       return squaring_.finished() ? afterFirstSweep() : a;
     }
     case Phase::Turning:
+    case Phase::TurningBack:  // (counted as well, after the measurement: no matter)
       NXTMAP_CHECK(e.kind == DriveEvent::Kind::Rotated);
       turnedMrad_ += kQuarterMrad;
       countedMrad_ += e.measured ? -e.achieved : kQuarterMrad;
-      if (--quartersLeft_ > 0) return DriveAction::rotate(-kQuarterMrad);
+      if (--quartersLeft_ > 0) return DriveAction::rotate(phase_ == Phase::Turning ? -kQuarterMrad : kQuarterMrad);
+      if (phase_ == Phase::TurningBack) {
+        turnedBack_ = true;
+        break;
+      }
       phase_ = Phase::SecondSweep;
       sweeping_ = true;
       return squaring_.begin(0);  // the walls the first sweep saw are there: the widest dip alone rather than none
@@ -63,13 +69,17 @@ DriveAction TurnCalibration::step(const DriveEvent& e) {
       const DriveAction a = squaring_.step(e);
       if (!squaring_.finished()) return a;
       measure();
-      phase_ = Phase::Done;
-      return DriveAction::done();
+      if (!found_ && lastTry_) {  // the sweep ended where it began, the whole turns past square: turn them back
+        phase_ = Phase::TurningBack;
+        quartersLeft_ = static_cast<uint8_t>(4 * turns_);
+        return DriveAction::rotate(kQuarterMrad);
+      }
+      break;
     }
     case Phase::Idle:
-    case Phase::Done: break;
+    case Phase::Done: NXTMAP_CHECK(false);  // an event that does not answer the action in progress: a caller's mistake
   }
-  NXTMAP_CHECK(false);  // an event that does not answer the action in progress: a caller's mistake
+  phase_ = Phase::Done;
   return DriveAction::done();
 }
 

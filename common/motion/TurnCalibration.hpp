@@ -16,7 +16,11 @@ namespace nxtmap {
 // quarter turn a little off; with T counted, e = (the second sweep's estimate - (T - 2 pi N)) / T).
 // Resolution: in a plain room the sweeps agree to about a degree, so 4 turns give e to about 0.1 %; from a
 // cluttered spot they differ more (the brick rooms under nxt-uncalibrated: 0.27 % rms). |e| must stay under
-// 1 / (8 N) (the walls repeat every quarter turn). The sweep object is the caller's (the pilot's).
+// 1 / (8 N) (the walls repeat every quarter turn). A second sweep that finds no wall where the first found them
+// (from the same spot, N whole turns later: a lone wall's dip seen at another angle merged with a corner's) leaves
+// the robot as far past square as the turns are off, up to 30 degrees for an uncalibrated NXT: with no approach
+// left to try elsewhere, it turns the whole turns back (the same error the other way), to stand square as the first
+// sweep left it (turnedBack()). The sweep object is the caller's (the pilot's).
 class TurnCalibration {
  public:
   // The whole turns are made in quarter turns (a turn's random error grows with its size), of
@@ -37,9 +41,12 @@ class TurnCalibration {
   // Actual turn / commanded turn - 1, parts per million (+: the robot turns too far). 0 when not found.
   int32_t errorPpm() const { return errorPpm_; }
   uint8_t turns() const { return turns_; }
+  // Not found, but the first sweep squared the robot and the whole turns were turned back: square to it, off by
+  // the turns' random error and the gears' play at the reversals (a few degrees).
+  bool turnedBack() const { return turnedBack_; }
 
  private:
-  enum class Phase : uint8_t { Idle, FirstSweep, Turning, SecondSweep, Done };
+  enum class Phase : uint8_t { Idle, FirstSweep, Turning, SecondSweep, TurningBack, Done };
 
   DriveAction afterFirstSweep();
   void measure();
@@ -49,6 +56,8 @@ class TurnCalibration {
   uint8_t quartersLeft_ = 0;
   Phase phase_ = Phase::Idle;
   bool found_ = false;
+  bool lastTry_ = false;  // begin() was told no approach is left
+  bool turnedBack_ = false;
   int32_t errorPpm_ = 0;
   // Spent before the sweep in progress (the first sweep once done, and the whole turns).
   uint32_t readings_ = 0, samples_ = 0, turnedMrad_ = 0;

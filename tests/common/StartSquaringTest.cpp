@@ -8,43 +8,14 @@
 #include <cstdint>
 
 #include "common/motion/StartSquaring.hpp"
-#include "common/motion/TurnCalibration.hpp"
 #include "common/sensing/WallDirection.hpp"
+#include "tests/common/SweptWalls.hpp"
 
 namespace nxtmap {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kConeDeg = 12.0;
-
-// One straight wall seen by one sensor: its normal `normalDeg` off the sweep's zero (+ clockwise, in the sensor's
-// own frame), `cm` from the sensor along it.
-struct Wall {
-  double normalDeg;
-  double cm;
-};
-
-// A sensor facing `facingDeg` reads the wall's distance while the wall's normal lies in its cone, d / cos(off -
-// cone) beyond it, whole cm; nothing 60 degrees or more off the normal (the echo glances off) or past 160 cm.
-int16_t wallReading(const Wall& w, double facingDeg) {
-  double off = std::fabs(std::remainder(facingDeg - w.normalDeg, 360.0));
-  if (off >= 60.0) return 0;
-  off = off > kConeDeg ? off - kConeDeg : 0.0;
-  const double cm = w.cm / std::cos(off * kPi / 180.0);
-  return cm > 160.0 ? 0 : static_cast<int16_t>(std::lround(cm));
-}
-
-// Front sees a wall 25 cm off with its normal at +3 degrees of the sweep; the right sensor one 80 cm off (`rightCm`)
-// facing its normal at +9 degrees (the two walls are 6 degrees off square to each other); back and left see nothing.
-struct TwoWalls {
-  double rightCm = 80.0;
-  int16_t read(Sensor s, int32_t headingMrad) const {
-    const double deg = headingMrad * 180.0 / (1000.0 * kPi);
-    if (s == Sensor::Front) return wallReading(Wall{3.0, 25.0}, deg);
-    if (s == Sensor::Right) return wallReading(Wall{9.0, rightCm}, deg);
-    return 0;
-  }
-};
+using sweptwalls::kPi;
+using sweptwalls::TwoWalls;
 
 WallDirection sweep(const TwoWalls& room) {
   WallDirection w;
@@ -222,63 +193,6 @@ TEST(StartSquaring, ASweepHearsNothingOnlyWhenNoReadingHadAnEcho) {
   for (const Row& row : rows) {
     EXPECT_EQ(heardNothingWhenTheBackReads(row.status, row.cm), row.heardNothing)
         << static_cast<int>(row.status) << " at " << row.cm << " cm";
-  }
-}
-
-// A turn calibration of 4 whole turns in TwoWalls with the right wall 40 cm away, begun as the pilot's last
-// sweep (no approach left), the wheels turning (1 + errorPpm / 10^6) times what the encoders count and the
-// motors stopping pastMrad past each rotation asked for (counted so).
-struct CalibrationOutcome {
-  bool finished = false, found = false;
-  int32_t errorPpm = 0;
-};
-CalibrationOutcome calibrateBetweenTwoWalls(int32_t errorPpm, int32_t pastMrad) {
-  TwoWalls room;
-  room.rightCm = 40;
-  StartSquaring squaring;
-  TurnCalibration calibration(squaring, 4);
-  int64_t countedMrad = 0;  // every turn as counted, summed; the robot has truly turned (1 + e) times that
-  DriveAction a = calibration.begin(0);
-  for (int i = 0; i < 2000 && !calibration.finished(); ++i) {
-    if (a.kind == DriveAction::Kind::Rotate) {
-      const int32_t counted = a.value + (a.value < 0 ? -pastMrad : pastMrad);
-      countedMrad += counted;
-      a = calibration.step(DriveEvent::rotatedBy(counted));
-      continue;
-    }
-    EXPECT_EQ(a.kind, DriveAction::Kind::Read);
-    if (a.kind != DriveAction::Kind::Read) break;
-    RangeReading r;
-    r.cm = room.read(a.sensor, static_cast<int32_t>(countedMrad * (1000000 + errorPpm) / 1000000));
-    r.status = r.cm > 0 ? RangeStatus::Good : RangeStatus::NoEcho;
-    r.samples = 1;
-    a = calibration.step(DriveEvent::range(a.sensor, r));
-  }
-  return CalibrationOutcome{calibration.finished(), calibration.found(), calibration.errorPpm()};
-}
-
-// A turn calibration where only the widest dip names the walls (the two walls 6 degrees apart, nothing 70 cm away
-// to approach): its first sweep is the pilot's last (no approach left) and takes that dip; the second sweep, after
-// the whole turns, stands where the first did and takes it too (begun as a sweep that never takes it, it found no
-// wall and the turns went unmeasured). The wheels turn 1 % too far and the encoders count what was told.
-TEST(TurnCalibration, TheSecondSweepTakesTheWidestDipWhereTheFirstDid) {
-  constexpr int32_t kErrorPpm = 10000;
-  const CalibrationOutcome c = calibrateBetweenTwoWalls(kErrorPpm, 0);
-  ASSERT_TRUE(c.finished);
-  ASSERT_TRUE(c.found);
-  EXPECT_NEAR(c.errorPpm, kErrorPpm, 2000);  // measured 1.11 %: the two sweeps place the dip 27 mrad apart
-}
-
-// The motors stop each quarter turn a little past or short of it, and the encoders count where they stopped:
-// that is no turn error. The whole turns are taken as counted (told alone, 8 mrad past each of 16 quarters
-// would read as 0.5 % more).
-TEST(TurnCalibration, TheTurnsAreTakenAsTheEncodersCountedThem) {
-  constexpr int32_t kErrorPpm = 10000;
-  for (const int32_t pastMrad : {0, 8, -8}) {
-    const CalibrationOutcome c = calibrateBetweenTwoWalls(kErrorPpm, pastMrad);
-    ASSERT_TRUE(c.finished) << pastMrad;
-    ASSERT_TRUE(c.found) << pastMrad;
-    EXPECT_NEAR(c.errorPpm, kErrorPpm, 2000) << "stopping " << pastMrad << " mrad past each quarter";
   }
 }
 
