@@ -158,7 +158,7 @@ int runSimHouse(const SimHouseOptions& o) {
   const house::HouseMapper::StartCalibration& cal = mapper.startCalibration();
   if (cal.turns > 0)
     out << "calibrated       first room: "
-        << turnCalibrationText(cal.found, cal.errorPpm, cal.turns, config.calibrateTurns == 0) << "\n";
+        << turnCalibrationText(cal.found, cal.errorPpm, cal.turns, config.calibrateTurns == 0, cal.turnedBack) << "\n";
   out << "wheels learnt    " << wheelsLearntText(mapper.wheels(), mapper.robot().wheels()) << "\n";
   std::cout << out.str() << std::flush;
   if (!o.save.empty()) {

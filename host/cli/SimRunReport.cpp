@@ -27,7 +27,10 @@ std::string squareLine(const mapping::MappingRun& run) {
   const WallDirectionEstimate& e = run.pilot().squaring().result();
   std::ostringstream out;
   out << "square           ";
-  if (!e.found) {
+  if (!e.found && run.pilot().calibration().turnedBack()) {
+    out << "as the calibration's first sweep squared it (its second sweep, " << int{e.dips}
+        << " dips, found no wall; the whole turns turned back)";
+  } else if (!e.found) {
     out << "no straight wall in range (" << int{e.dips} << " dips): mapped as set down"
         << (run.squaredLate() ? " until the walls it mapped squared it" : "");
   } else {
@@ -43,8 +46,8 @@ std::string squareLine(const mapping::MappingRun& run) {
 // What the start's turn calibration measured (RunConfig::calibrateTurns, or one unasked: calibrateUnknownTurns).
 std::string calibrationLine(const mapping::MappingRun& run) {
   const TurnCalibration& c = run.pilot().calibration();
-  return "calibrated       " +
-         turnCalibrationText(c.found(), c.found() ? c.errorPpm() : 0, c.turns(), run.config().calibrateTurns == 0);
+  return "calibrated       " + turnCalibrationText(c.found(), c.found() ? c.errorPpm() : 0, c.turns(),
+                                                   run.config().calibrateTurns == 0, c.turnedBack());
 }
 
 // What the pilot has learnt of the wheels (PoseTracker's drift and turn error), beside the simulated truth.

@@ -89,9 +89,12 @@ std::string wheelsLearntText(const WheelCalibration& w, const sim::WheelModel& t
   return out.str();
 }
 
-std::string turnCalibrationText(bool found, int32_t errorPpm, int turns, bool unasked) {
+std::string turnCalibrationText(bool found, int32_t errorPpm, int turns, bool unasked, bool turnedBack) {
   std::ostringstream out;
-  if (!found) {
+  if (!found && turnedBack) {
+    out << "the second sweep lost the walls the first found: the " << turns
+        << " whole turns turned back, turns not corrected";
+  } else if (!found) {
     out << "no straight wall in range: turns not corrected";
   } else {
     out << "turns " << (errorPpm >= 0 ? "+" : "") << report::formatNumber(errorPpm / 10000.0, 2) << " % off (" << turns

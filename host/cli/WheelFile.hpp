@@ -26,8 +26,9 @@ std::string wheelFileText(const WheelCalibration& w);
 // its wheels beside the simulated truth, as `sim` and `sim-house` print it.
 std::string wheelsLearntText(const WheelCalibration& w, const sim::WheelModel& truth);
 
-// "turns +2.07 % off (4 whole turns between two sweeps): every turn corrected by it" or "no straight wall in
-// range: turns not corrected", and " (unasked: ...)" when `unasked`: what a start's turn calibration measured.
-std::string turnCalibrationText(bool found, int32_t errorPpm, int turns, bool unasked);
+// "turns +2.07 % off (4 whole turns between two sweeps): every turn corrected by it", "no straight wall in
+// range: turns not corrected" or (`turnedBack`, TurnCalibration::turnedBack) that the second sweep lost the walls,
+// and " (unasked: ...)" when `unasked`: what a start's turn calibration measured.
+std::string turnCalibrationText(bool found, int32_t errorPpm, int turns, bool unasked, bool turnedBack = false);
 
 }  // namespace nxtmap::cli

@@ -194,7 +194,7 @@ HouseTraceRow HouseMapper::traceRow(RoomSession::Phase phase, const DriveAction&
 void HouseMapper::layTruthSquare() {
   squared_ = true;
   const TurnCalibration& t = stack_.pilot()->calibration();
-  startCalibration_ = StartCalibration{t.turns(), t.found(), t.found() ? t.errorPpm() : 0};
+  startCalibration_ = StartCalibration{t.turns(), t.found(), t.found() ? t.errorPpm() : 0, t.turnedBack()};
   if (!config_.squareAtStart) return;
   const mapping::SquaredGrid g =
       mapping::squaredGrid(robot_, *stack_.pilot(), stack_.explorer()->pose().heading, config_.heading, setDownCm_);

@@ -98,6 +98,7 @@ class HouseMapper {
     int turns = 0;  // whole turns between its two sweeps
     bool found = false;
     int32_t errorPpm = 0;  // the turns' error it measured (found only)
+    bool turnedBack = false;  // not found: the second sweep lost the walls and the whole turns were turned back
   };
   const StartCalibration& startCalibration() const { return startCalibration_; }
   const sim::World& world() const { return world_; }

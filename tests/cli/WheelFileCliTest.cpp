@@ -67,10 +67,9 @@ TEST(WheelFileCli, ABadFileIsOneLineExitTwoAndLeftAsItWas) {
       {"not yaml", "drift_urad_per_m: [1,\n", "not a wheels file"},
       {"a list", "- 1\n- 2\n", "not a wheels file"},
       {"a word", "drift_urad_per_m: x\n", "drift_urad_per_m must be a whole number"},
-      {"a missing field",
-       "drift_urad_per_m: 0\ndrift_sigma_urad_per_m: 5\nturn_ppm: 0\n", "turn_sigma_ppm must be a whole number"},
-      {"turns 30 % off",
-       "drift_urad_per_m: 0\ndrift_sigma_urad_per_m: 5\nturn_ppm: 300000\nturn_sigma_ppm: 4\n",
+      {"a missing field", "drift_urad_per_m: 0\ndrift_sigma_urad_per_m: 5\nturn_ppm: 0\n",
+       "turn_sigma_ppm must be a whole number"},
+      {"turns 30 % off", "drift_urad_per_m: 0\ndrift_sigma_urad_per_m: 5\nturn_ppm: 300000\nturn_sigma_ppm: 4\n",
        "turn_ppm must lie in -99999..99999"},
       {"a sigma of 0", "drift_urad_per_m: 0\ndrift_sigma_urad_per_m: 0\nturn_ppm: 0\nturn_sigma_ppm: 4\n",
        "drift_sigma_urad_per_m must lie in 1..1000000"},
@@ -85,6 +84,28 @@ TEST(WheelFileCli, ABadFileIsOneLineExitTwoAndLeftAsItWas) {
     EXPECT_EQ(lines(r.err).size(), 1u) << c.name << ": " << r.err;
     EXPECT_EQ(readFile(file), c.text) << c.name;
   }
+}
+
+// What `sim` and `sim-house` print of the start's turn calibration, one line whatever it found.
+TEST(WheelFileText, TheTurnCalibrationIsOneLineWhateverItFound) {
+  struct Row {
+    bool found;
+    int32_t errorPpm;
+    bool unasked, turnedBack;
+    const char* text;
+  };
+  const Row rows[] = {
+      {true, 20700, false, false, "turns +2.07 % off (4 whole turns between two sweeps): every turn corrected by it"},
+      {true, -4800, true, false,
+       "turns -0.48 % off (4 whole turns between two sweeps): every turn corrected by it (unasked: nothing was known "
+       "of the turns)"},
+      {false, 0, false, false, "no straight wall in range: turns not corrected"},
+      {false, 0, true, true,
+       "the second sweep lost the walls the first found: the 4 whole turns turned back, turns not corrected "
+       "(unasked: nothing was known of the turns)"},
+  };
+  for (const Row& row : rows)
+    EXPECT_EQ(turnCalibrationText(row.found, row.errorPpm, 4, row.unasked, row.turnedBack), row.text);
 }
 
 }  // namespace
