@@ -93,7 +93,8 @@ CLI::App* addEmulateCommand(CLI::App& app, EmulateOptions& o) {
               "map is scored against the world: detected, wrong cells, unsafe free (not with --listen)");
   c->add_option("--png", o.png,
                 "with --score: write a PNG of the map that came over the radio, laid on the world as the score lays "
-                "it (missed obstacles light red, wrong cells orange, the robot where it believes it stands)");
+                "it (missed obstacles light red, obstacles mapped free orange, walls mapped on open floor blue, the "
+                "robot where it believes it stands)");
   c->add_option("--flash-keep", o.flashKeep,
                 "keep the brick's flash in FILE from run to run, as a brick keeps it while switched off (what it "
                 "learnt of its wheels); read at the start if it exists, written at the end");

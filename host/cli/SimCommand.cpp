@@ -99,7 +99,10 @@ CLI::App* addSimCommand(CLI::App& app, SimOptions& o) {
   sim->add_option("--show", o.show, "display: live, final, none (default final)");
   sim->add_option("--delay-ms", o.delayMs, "live mode: delay per frame in ms (default 30)");
   sim->add_option("--save", o.save, "save the explored map as ROS map_server FILE.yaml + FILE.pgm (world frame)");
-  sim->add_option("--png", o.png, "write a PNG of the final map (missed obstacles light red, wrong cells orange)");
+  sim->add_option(
+      "--png", o.png,
+      "write a PNG of the final map (missed obstacles light red, obstacles mapped free orange, walls mapped on "
+      "open floor blue)");
   sim->add_option("--trace", o.trace,
                   "write a CSV of the pose the robot believes and the pose it truly has after every action "
                   "(explorer frame, mm and mrad), to see where a lost run went astray");

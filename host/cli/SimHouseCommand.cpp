@@ -20,11 +20,28 @@
 #include "host/house/HouseTrace.hpp"
 #include "host/network/HouseFiles.hpp"
 #include "host/report/ExperimentTable.hpp"
+#include "host/report/MapImage.hpp"
 
 namespace nxtmap::cli {
 namespace {
 bool endsWith(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// The merged map of the house on its world's raster, against the world, with the robot where it truly ended.
+report::RgbImage housePicture(const house::HouseMapper& mapper) {
+  const house::HouseInWorld h = house::houseInWorld(mapper);
+  const network::RoomMap merged = h.network->merged();
+  report::BeliefPicture p;
+  p.world = h.world;
+  p.belief = [&](int col, int row) { return merged.at(h.houseFrame.toExplorer(col, row)); };
+  const sim::SimRobot& robot = mapper.robot();
+  const sim::Vec2 at = robot.frame().toGrid(sim::Vec2(robot.xCm(), robot.yCm()));
+  p.robotCol = static_cast<int>(std::lround(at.x()));
+  p.robotRow = static_cast<int>(std::lround(at.y()));
+  report::MapImageOptions options;
+  options.cellPx = report::pictureCellPx(std::max(h.world->width(), h.world->height()), 8);
+  return report::renderBeliefImage(p, options);
 }
 
 // Where the trace went and what it shows of the belief leaving the robot's cell.
@@ -61,6 +78,9 @@ CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& o) {
                 "write every action's believed and true pose, on the world's raster, to this .csv (which room or "
                 "travel it belonged to, readings, the pose tracker's offset, whether the belief left the robot's "
                 "cell)");
+  c->add_option("--png", o.png,
+                "write a PNG of the merged map on the world's raster (missed obstacles light red, obstacles mapped "
+                "free orange, walls mapped on open floor blue, the robot red where it truly ended)");
   return c;
 }
 
@@ -98,6 +118,8 @@ int runSimHouse(const SimHouseOptions& o) {
     std::string traceError;
     if (!fileio::resolveOutputTarget(o.trace, traceError)) throw CliError(traceError);
   }
+  std::string pngError;
+  if (!o.png.empty() && !fileio::resolveOutputTarget(o.png, pngError)) throw CliError(pngError);
 
   house::HouseMapper mapper(site, config);
   const sim::World& world = mapper.world();
@@ -171,6 +193,11 @@ int runSimHouse(const SimHouseOptions& o) {
     std::string error;
     if (!fileio::writeFileAtomically(o.trace, traceText.str(), error)) throw CliError(error);
     std::cout << traceLine(*trace, o.trace) << "\n";
+  }
+  if (!o.png.empty()) {
+    std::string error;
+    if (!report::writePng(o.png, housePicture(mapper), error)) throw CliError(error);
+    std::cout << "wrote            " << o.png << "\n";
   }
   return kExitOk;
 }

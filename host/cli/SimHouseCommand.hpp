@@ -1,7 +1,7 @@
-// `nxtmap sim-house WORLD [--start C,R] [--noise P] [--seed N] [--save DIR] [--trace FILE.csv]`: maps a house in the
-// simulator room by room (host/house/HouseMapper), prints the rooms, gateways, counters and the
-// merged map's agreement with the world, and optionally saves the house (one ROS map per room
-// and a house file) and the run's trace.
+// `nxtmap sim-house WORLD [--start C,R] [--noise P] [--seed N] [--save DIR] [--trace FILE.csv] [--png FILE.png]`:
+// maps a house in the simulator room by room (host/house/HouseMapper), prints the rooms, gateways, counters and the
+// merged map's agreement with the world, and optionally saves the house (one ROS map per room and a house file),
+// the run's trace and a picture of the merged map on the world (wrong cells marked).
 #pragma once
 #include <optional>
 #include <string>
@@ -23,6 +23,7 @@ struct SimHouseOptions {
   std::string strategy = "frontier";
   std::string save;   // directory to write the house to
   std::string trace;  // CSV of every action's belief and truth (house/HouseTrace)
+  std::string png;    // picture of the merged map on the world's raster (report/MapImage)
 };
 
 CLI::App* addSimHouseCommand(CLI::App& app, SimHouseOptions& options);

@@ -15,7 +15,8 @@ constexpr Rgb kUnknown{160, 160, 160};
 constexpr Rgb kOccupied{0, 0, 0};
 constexpr Rgb kRobot{220, 0, 0};
 constexpr Rgb kMissed{255, 170, 170};  // obstacle in the world, still unknown in the map
-constexpr Rgb kWrong{255, 140, 0};     // map disagrees with the world
+constexpr Rgb kWrong{255, 140, 0};     // free in the map where the world has an obstacle
+constexpr Rgb kFalseWall{40, 90, 255};  // occupied in the map where the world is open floor
 constexpr Rgb kGrid{215, 215, 215};
 }  // namespace
 
@@ -57,7 +58,8 @@ RgbImage renderBeliefImage(const BeliefPicture& picture, const MapImageOptions& 
       Rgb c = b == CellState::Free ? kFree : b == CellState::Occupied ? kOccupied : kUnknown;
       if (options.overlayTruth) {
         if (b == CellState::Unknown && blocked) c = kMissed;
-        if ((b == CellState::Free && blocked) || (b == CellState::Occupied && !blocked)) c = kWrong;
+        if (b == CellState::Free && blocked) c = kWrong;
+        if (b == CellState::Occupied && !blocked) c = kFalseWall;
       }
       const int x = col * px, y = row * px;
       if (lines) {

@@ -1,5 +1,6 @@
 // MapImage: a PNG picture of a run's belief (free white, unknown grey, occupied black, robot red),
-// optionally with the true world overlaid: missed obstacles light red, wrong cells orange.
+// optionally with the true world overlaid: missed obstacles light red, obstacles mapped free orange, walls mapped on
+// open floor blue.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -27,7 +28,7 @@ int pictureCellPx(int worldSide, int askedPx);
 
 struct MapImageOptions {
   int cellPx = 8;            // pixels per cell side (1..64; fewer when the world is too large for it)
-  bool overlayTruth = true;  // mark missed obstacles and wrong cells against the world
+  bool overlayTruth = true;  // mark missed obstacles and both kinds of wrong cell against the world
   bool gridLines = true;     // thin lines between cells (when cellPx >= 6)
 };
 

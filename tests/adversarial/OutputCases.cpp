@@ -49,6 +49,9 @@ std::vector<AdversarialCase> outputCases() {
     };
     out.push_back(refused("sim_png" + tag, with(sim, "--png", ".png"), makeFolder));
     out.push_back(refused("sim_save" + tag, with(sim, "--save", ".yaml"), makeFolder));
+    out.push_back(refused("simHouse_png" + tag,
+                          with({"sim-house", "{src}/worlds/houses/three-rooms.map", "--start", "8,8"}, "--png", ".png"),
+                          makeFolder));
     out.push_back(refused("experiments_csv" + tag,
                           with({"experiments", "{src}/worlds/seed-appendix-a"}, "--csv", ".csv"), makeFolder));
     out.back().timeoutS = 120;
@@ -69,6 +72,9 @@ std::vector<AdversarialCase> outputCases() {
             {"out/house/house.yaml"}, [](const CaseDirs& d) { d.write("out/keep", ""); }));
   out.push_back(refused("simHouse_saveMissingParent", {"sim-house", "{src}/worlds/houses/three-rooms.map", "--start",
                                                        "8,8", "--save", "{dir}/no/such/house"}));
+  out.push_back(works("simHouse_png",
+                      {"sim-house", "{src}/worlds/houses/three-rooms.map", "--start", "8,8", "--png", "{dir}/h.png"},
+                      {"h.png"}));
   // A staging folder of a save that was killed is removed by the next save of the same house.
   AdversarialCase stale =
       works("simHouse_saveCleansStaleStaging",

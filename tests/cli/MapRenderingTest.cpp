@@ -136,8 +136,8 @@ TEST(MapText, RenderedRunShowsRobotAndFrame) {
 // Any belief on a world (the emulated brick's radio map): each cell's colour from the belief against the world, the
 // robot in its believed cell; a robot outside the world is not drawn.
 TEST(MapImage, BeliefPictureColoursEachCellAgainstTheWorld) {
-  const sim::World world = sim::World::fromRows({"#.#", "..."});
-  const std::vector<std::string> belief = {"X~ ", "X.."};  // X occupied, . free, ~ or space unknown
+  const sim::World world = sim::World::fromRows({"#.##", "...."});
+  const std::vector<std::string> belief = {"X~ .", "X.. "};  // X occupied, . free, ~ or space unknown
   BeliefPicture p;
   p.world = &world;
   p.belief = [&](int col, int row) {
@@ -154,19 +154,21 @@ TEST(MapImage, BeliefPictureColoursEachCellAgainstTheWorld) {
       {0, 0, 0, 0, 0},        // occupied, a wall: black
       {1, 0, 160, 160, 160},  // unknown, nothing there: grey
       {2, 0, 255, 170, 170},  // unknown, a wall there: missed, light red
-      {0, 1, 255, 140, 0},    // occupied, nothing there: wrong, orange
+      {3, 0, 255, 140, 0},    // free, a wall there: wrong, orange
+      {0, 1, 40, 90, 255},    // occupied, nothing there: wrong, blue
+      {3, 1, 160, 160, 160},  // unknown, nothing there: grey
       {1, 1, 255, 255, 255},  // free: white
       {2, 1, 220, 0, 0},      // the robot
   };
   const RgbImage img = renderBeliefImage(p, MapImageOptions{4, true, false});
-  ASSERT_EQ(img.width, 12);
+  ASSERT_EQ(img.width, 16);
   ASSERT_EQ(img.height, 8);
   for (const Row& r : rows) {
     uint8_t red = 0, green = 0, blue = 0;
     img.pixel(r.col * 4 + 2, r.row * 4 + 2, red, green, blue);
     EXPECT_EQ(std::vector<int>({red, green, blue}), std::vector<int>({r.r, r.g, r.b})) << r.col << "," << r.row;
   }
-  p.robotCol = 3;  // outside: the cell keeps its own colour
+  p.robotCol = 4;  // outside: the cell keeps its own colour
   uint8_t red = 0, green = 0, blue = 0;
   renderBeliefImage(p, MapImageOptions{4, true, false}).pixel(2 * 4 + 2, 1 * 4 + 2, red, green, blue);
   EXPECT_EQ(red + green + blue, 3 * 255);
