@@ -169,7 +169,8 @@ int runSimHouse(const SimHouseOptions& o) {
   out << "\ngateways         " << s.gateways << " (exits found " << mapper.exitsFound() << ", not passed "
       << mapper.exitsUnreached() << ", openings onto unmapped space explored " << mapper.openingsTried() << ")\n"
       << "agreement        " << num(s.agreementPct()) << " % of " << s.observable << " observable cells (unknown "
-      << s.unknown << ", wrong " << s.wrong << "; wrong elsewhere " << s.wrongElsewhere << ")\n"
+      << s.unknown << ", wrong " << s.wrong << " of which " << s.wallsOnFloor
+      << " occupied on open floor; wrong elsewhere " << s.wrongElsewhere << ")\n"
       << "best frames      " << num(best.score.agreementPct()) << " % with each room at its best whole-cell frame "
       << "(within 2 cells: the maps apart from their joining; the frames cost "
       << num(best.score.agreementPct() - s.agreementPct()) << " points)\n"

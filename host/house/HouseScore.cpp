@@ -71,6 +71,7 @@ HouseScore scoreHouse(const HouseInWorld& h, const sim::Observability& obs) {
         ++s.unknown;
       } else if (disagree) {
         ++s.wrong;
+        if (b == CellState::Occupied) ++s.wallsOnFloor;
       } else {
         ++s.agree;
       }

@@ -14,6 +14,7 @@ struct HouseScore {
   int agree = 0;           // ... that the merged map holds in the world's state
   int unknown = 0;         // ... that the merged map holds as unknown
   int wrong = 0;           // ... that the merged map holds in the other state
+  int wallsOnFloor = 0;    // ... of them: occupied in the map, open floor in the world (the rest: obstacles held free)
   int wrongElsewhere = 0;  // known map cells outside the observable set that disagree with the world
   int rooms = 0;           // room maps in the network
   int gateways = 0;
