@@ -50,7 +50,7 @@ void Pilot::learnFace(Dir d, const RangeReading& r) {
   const int64_t var = tracker_.varianceAlong(d) + tracker_.readingVariance();
   if (!g.facesAnywhere() || r.status != RangeStatus::Good || var > sure) return;
   const int32_t fromCentre = (r.cm + g.mountCm) * 10 + tracker_.along(d);
-  const int32_t k = (2 * (fromCentre - g.faceMarginCm * 10) + cellMm_) / (2 * cellMm_);
+  const int32_t k = (2 * (fromCentre - g.echoMarginCm * 10) + cellMm_) / (2 * cellMm_);
   Cell wall{};
   int16_t first = 0;
   if (k < 1 || !firstWall(d, wall, first) || first != k) return;  // not the map's first wall along d
@@ -71,7 +71,7 @@ bool Pilot::straightFace(Cell c, Dir d) const {
 int16_t Pilot::wallLine(Dir d, int32_t rangeMm) const {
   // The echo's cell along d: its face lies (k - 1/2) cells from the believed cell's centre.
   const RangeGeometry& g = explorer_.config().geometry;
-  const int32_t fromCentre = rangeMm + (g.mountCm - (g.facesAnywhere() ? g.faceMarginCm : 0)) * 10 + tracker_.along(d);
+  const int32_t fromCentre = rangeMm + (g.mountCm - (g.facesAnywhere() ? g.echoMarginCm : 0)) * 10 + tracker_.along(d);
   const int32_t k = (2 * fromCentre + cellMm_) / (2 * cellMm_);
   const Cell at = explorer_.pose().cell;
   const int32_t base = isVertical(d) ? at.y : at.x;

@@ -19,13 +19,16 @@ struct RangeGeometry {
   // reads too near (the published model).
   int16_t blindCm = 0;
   // Where walls' faces may lie. 0: on cell edges (the published raster worlds): an echo is rounded to the
-  // nearest edge, robust to any error under half a cell. m > 0: anywhere (a real room): an echo marks the
-  // cell holding the face brought m cm nearer (the reading's error), so a wall reaching a sliver into a cell
-  // marks that cell occupied (a face read more than m cm long may still leave a sliver unmarked; one less
-  // than m past an edge marks the cell before it). The pilot then learns where each wall's face lies in its
-  // cell (FaceLines), and the start's snap lays the nearest faces 2m past a cell edge. 0..cellCm / 4. (The
-  // RAM-run firmware image has no room for it, nor for FaceLines: it keeps faces on edges.)
-  int16_t faceMarginCm = 0;
+  // nearest edge, robust to any error under half a cell. m > 0: anywhere (a real room): an echo marks the cell
+  // holding its face (brought echoMarginCm nearer), the pilot learns where each wall's face lies in its cell
+  // (FaceLines), and the start's snap lays the nearest faces 2m past a cell edge, a face not yet learnt taken
+  // to lie there too. 0..cellCm / 4. (The RAM-run firmware image has no room for it, nor for FaceLines: it keeps
+  // faces on edges.)
+  int8_t faceMarginCm = 0;
+  // With faces anywhere: an echo marks the cell holding the face brought this many cm nearer (the reading's
+  // error), so a wall reaching a sliver into a cell still marks that cell occupied; a face less than this past
+  // an edge marks the cell before it, a wall on open floor. 0..faceMarginCm.
+  int8_t echoMarginCm = 0;
   // The sensor's linear error, as measured for its kind: raw = true * scalePer10k / 10000 + biasMm (the LEGO
   // 9846 sensor: 0.9757 x + 1.88 cm, docs/nxt-sonar-and-odometry.md). RangeFilter takes it off every echo it
   // reports, so a reading is the true distance; 10000 and 0 (the default): none. scalePer10k 5000..20000,
@@ -62,7 +65,7 @@ struct RangeGeometry {
   // published, the near face of cell k is (k - 1/2) cells from the centre.
   constexpr int16_t hitCell(int16_t cm) const {
     if (!facesAnywhere()) return static_cast<int16_t>((cm + mountCm + cellCm) / cellCm);
-    const int32_t k = (2 * (cm + mountCm - faceMarginCm) + cellCm) / (2 * cellCm);
+    const int32_t k = (2 * (cm + mountCm - echoMarginCm) + cellCm) / (2 * cellCm);
     return static_cast<int16_t>(k < 1 ? 1 : k);
   }
   // Where a wall cell k cells out is taken to have its face, mm from the cell centre, until learnt otherwise:

@@ -53,7 +53,8 @@ ExplorerConfig explorerConfigFor(const sim::World& world, const sim::RobotDescri
   e.geometry = sonarGeometryFor(world, minRangeM, rangeM,
                                 beamHalfAngleDeg >= 0.0 ? beamHalfAngleDeg : sonar.coneHalfAngleDeg, robot.mountCm);
   e.geometry.blindCm = blindCm >= 0 ? static_cast<int16_t>(blindCm) : sonarBlindCm(sonar);
-  e.geometry.faceMarginCm = static_cast<int16_t>(robot.faceMarginCm);
+  e.geometry.faceMarginCm = static_cast<int8_t>(robot.faceMarginCm);
+  e.geometry.echoMarginCm = static_cast<int8_t>(robot.echoMarginCm);
   if (robot.correctsSonar) {
     e.geometry.scalePer10k = static_cast<int16_t>(std::lround(sonar.rangeScale * 10000.0));
     e.geometry.biasMm = static_cast<int16_t>(std::lround(sonar.biasCm * 10.0));

@@ -36,7 +36,8 @@ RobotDescription brick() {
   r.mountCm = 6;
   r.minRangeM = 0.07;
   r.rangeM = 1.2;
-  r.faceMarginCm = 4;  // walls anywhere: as the brick (BrickConfig::faceMarginCm, measured there)
+  r.faceMarginCm = 4;  // walls anywhere: as the brick (BrickConfig::faceMarginCm, echoMarginCm, measured there)
+  r.echoMarginCm = 1;
   r.correctsSonar = true;
   return r;
 }

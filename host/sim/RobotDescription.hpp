@@ -27,6 +27,7 @@ struct RobotDescription {
   double minRangeM = 0.05;               // readings the robot trusts, metres (RangeGeometry::minCm)
   double rangeM = 1.0;                   // (RangeGeometry::maxCm)
   int faceMarginCm = 0;                  // where its map puts walls' faces (RangeGeometry::faceMarginCm)
+  int echoMarginCm = 0;                  // how much nearer an echo marks its face (RangeGeometry::echoMarginCm)
   // Whether it takes its sonar's linear error (the noise profile's rangeScale and biasCm, as measured for the
   // sensor's kind) off every reading (RangeGeometry::scalePer10k, biasMm), as the brick's firmware does.
   bool correctsSonar = false;

@@ -1,4 +1,4 @@
-// Walls anywhere (RangeGeometry::faceMarginCm): which cell an echo marks, how the pilot learns where the faces lie
+// Walls anywhere (RangeGeometry::faceMarginCm, echoMarginCm): which cell an echo marks, how the pilot learns where the faces lie
 // (FaceLines), and what that is worth in a room whose walls are not on the cells' edges.
 #include <gtest/gtest.h>
 
@@ -10,28 +10,38 @@
 namespace nxtmap {
 namespace {
 
-TEST(RangeGeometry, FacesAnywhereMarkTheCellHoldingTheFaceBroughtTheMarginNearer) {
+TEST(RangeGeometry, FacesAnywhereMarkTheCellHoldingTheFaceBroughtTheEchoMarginNearer) {
   RangeGeometry g{20, 7, 120, 6};  // the brick: 20 cm cells, sensors 6 cm ahead of the centre
   g.faceMarginCm = 3;
-  // The face is cm + 6 from the centre; cell k holds (k - 1/2) .. (k + 1/2) cells, less the 3 cm margin.
+  g.echoMarginCm = 3;
+  // The face is cm + 6 from the centre; cell k holds (k - 1/2) .. (k + 1/2) cells, less the echo margin (3 cm; the
+  // brick's 1 cm; none).
   const struct {
-    int16_t cm, published, anywhere;
+    int16_t cm, published, anywhere, nearer1, exact;
   } table[] = {
-      {4, 1, 1},     // 10 cm from the centre: the adjacent cell's near edge
-      {7, 1, 1},     // 13 cm
-      {23, 2, 1},    // 29 cm: in the adjacent cell (10..30 cm), which the published rule rounds to its far edge
-      {26, 2, 1},    // 32 cm, 2 cm into cell 2: within the margin, so the cell before it (a read too long is safe)
-      {27, 2, 2},    // 33 cm, less 3: the next cell's near edge
-      {40, 3, 2},    // 46 cm: the far half of cell 2 (30..50 cm), rounded on to cell 3 by the published rule
-      {110, 6, 6},   // 116 cm: cell 6 (110..130 cm) both ways
+      {4, 1, 1, 1, 1},    // 10 cm from the centre: the adjacent cell's near edge
+      {7, 1, 1, 1, 1},    // 13 cm
+      {23, 2, 1, 1, 1},   // 29 cm: in the adjacent cell (10..30 cm), which the published rule rounds to its far edge
+      {24, 2, 1, 1, 2},   // 30 cm: on the edge of cell 2, which holds it, unless brought nearer
+      {25, 2, 1, 2, 2},   // 31 cm, 1 cm into cell 2: within 3 cm, so the cell before it (a read too long is safe)
+      {26, 2, 1, 2, 2},   // 32 cm, 2 cm into cell 2
+      {27, 2, 2, 2, 2},   // 33 cm, less 3: the next cell's near edge
+      {40, 3, 2, 2, 2},   // 46 cm: the far half of cell 2 (30..50 cm), rounded on to cell 3 by the published rule
+      {110, 6, 6, 6, 6},  // 116 cm: cell 6 (110..130 cm) every way
   };
   for (const auto& t : table) {
-    RangeGeometry published = g;
+    RangeGeometry published = g, nearer1 = g, exact = g;
     published.faceMarginCm = 0;
+    nearer1.echoMarginCm = 1;
+    exact.echoMarginCm = 0;
     EXPECT_EQ(published.hitCell(t.cm), t.published) << t.cm << " cm";
     EXPECT_EQ(g.hitCell(t.cm), t.anywhere) << t.cm << " cm";
+    EXPECT_EQ(nearer1.hitCell(t.cm), t.nearer1) << t.cm << " cm";
+    EXPECT_EQ(exact.hitCell(t.cm), t.exact) << t.cm << " cm";
+    // Where the start's snap lays faces does not follow the echo margin: the adjacent cell's near edge plus twice
+    // the face margin.
+    EXPECT_EQ(exact.faceMm(1), 100 + 60);
   }
-  EXPECT_EQ(g.faceMm(1), 100 + 60);  // the adjacent cell's near edge plus twice the margin
 }
 
 TEST(FaceLines, LearnsEachLinesFaceWeighingEveryReadingByHowWellItIsKnown) {
@@ -78,6 +88,7 @@ TEST(Pilot, LearntFacesMapARoomWhoseWallsAreOffTheCellEdgesBetter) {
   ExplorerConfig published;
   ExplorerConfig anywhere;
   anywhere.geometry.faceMarginCm = 2;
+  anywhere.geometry.echoMarginCm = 1;
   int wrong[2] = {0, 0};
   double positionMm[2] = {0, 0};
   for (uint32_t run = 1; run <= 10; ++run) {
