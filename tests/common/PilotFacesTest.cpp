@@ -107,5 +107,26 @@ TEST(Pilot, LearntFacesMapARoomWhoseWallsAreOffTheCellEdgesBetter) {
   EXPECT_LT(positionMm[1], positionMm[0]);
 }
 
+// A room whose four walls stand 15 mm past a cell edge (cells 100 mm): between the brick's echo margin (1 cm) and
+// its face margin (here 2 cm). Brought the face margin nearer, every echo of a wall marks the cell before it, a
+// wall on open floor all round; brought 1 cm nearer, the cell that holds it.
+TEST(Pilot, AnEchoBroughtOnlyItsOwnMarginNearerMapsAFaceJustPastAnEdgeInItsCell) {
+  ExplorerConfig echo1, echo2;
+  echo1.geometry.faceMarginCm = echo2.geometry.faceMarginCm = 2;
+  echo1.geometry.echoMarginCm = 1;
+  echo2.geometry.echoMarginCm = 2;
+  int wrong[2] = {0, 0};
+  for (uint32_t run = 1; run <= 5; ++run) {
+    const pilotrig::Wheels w = pilotrig::noisyWheels(20, 15, run);
+    for (int k = 0; k < 2; ++k) {
+      const pilotrig::RoomRun r = pilotrig::runInRoom(PilotConfig{}, -765, 865, -665, 965, w, k == 0 ? echo1 : echo2);
+      ASSERT_GT(r.readings, 20);
+      wrong[k] += r.wrongCells;
+    }
+  }
+  std::printf("wrong cells %d with the echo 1 cm nearer, %d with it 2 cm nearer\n", wrong[0], wrong[1]);
+  EXPECT_LT(wrong[0] * 2, wrong[1]);
+}
+
 }  // namespace
 }  // namespace nxtmap
