@@ -39,9 +39,7 @@ report::RgbImage housePicture(const house::HouseMapper& mapper) {
   const sim::Vec2 at = robot.frame().toGrid(sim::Vec2(robot.xCm(), robot.yCm()));
   p.robotCol = static_cast<int>(std::lround(at.x()));
   p.robotRow = static_cast<int>(std::lround(at.y()));
-  report::MapImageOptions options;
-  options.cellPx = report::pictureCellPx(std::max(h.world->width(), h.world->height()), 8);
-  return report::renderBeliefImage(p, options);
+  return report::renderBeliefImage(p);  // 8 px a cell, fewer for a large house (report::pictureCellPx)
 }
 
 // Where the trace went and what it shows of the belief leaving the robot's cell.
